@@ -1,0 +1,1 @@
+/* Placeholder until cli/usb_*.c exists: built with USB=0. */

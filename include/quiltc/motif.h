@@ -1,0 +1,35 @@
+/*
+ * Motifs: the decorative elements of Branching, Wanderer and Shape Packing.
+ * A motif is a path in a unit frame with its collision geometry.
+ * (Owned by the pattern-families work; see README "Motif SVG format".)
+ */
+#ifndef QUILTC_MOTIF_H
+#define QUILTC_MOTIF_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct qc_motif {
+    char name[32];
+    qc_path path;      /* unit frame: minimum bounding circle centred at the
+                          origin with radius 1; starts at `entry`, ends at `exit` */
+    qc_vec2 *hull;     /* convex hull of the flattened path, CCW, unit frame */
+    size_t nhull;
+    qc_vec2 entry, exit; /* where the motif joins the skeleton */
+    int legs;          /* 2 for Wanderer primitives (legs at entry and exit), else 0 */
+} qc_motif;
+
+typedef struct qc_motif_set {
+    qc_motif *m;
+    size_t n, cap;
+} qc_motif_set;
+
+void qc_motif_set_free(qc_ctx *ctx, qc_motif_set *set);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

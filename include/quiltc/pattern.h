@@ -1,0 +1,162 @@
+/*
+ * Patterns: the parameters of every family, described by one table (names,
+ * units, ranges, defaults) that the CLI and the web page build their options
+ * from, and qc_generate, the convenience tier that runs the stages
+ * (sample -> graph -> tour -> curve -> decorate) for one region.
+ */
+#ifndef QUILTC_PATTERN_H
+#define QUILTC_PATTERN_H
+
+#include "core.h"
+#include "region.h"
+#include "motif.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum qc_family {
+    QC_FAMILY_DEFAULT = 0,
+    QC_FAMILY_VINE,      /* the smoothed tree walk alone (paper §4.3) */
+    QC_FAMILY_BRANCHING, /* §5.1 */
+    QC_FAMILY_WANDERER,  /* §5.2 */
+    QC_FAMILY_PEBBLING,  /* §5.3.1 */
+    QC_FAMILY_PACKING,   /* §5.3.2 */
+    QC_FAMILY_FILL,      /* §7.1 fixed-width fill */
+    QC_FAMILY_STIPPLE,   /* §7.1 stippling / meander */
+    QC_FAMILY_ECHO,
+    QC_FAMILY_SPIRAL,
+    QC_FAMILY_COUNT
+} qc_family;
+
+typedef enum qc_points_kind {
+    QC_POINTS_DEFAULT = 0,
+    QC_POINTS_TRIANGLE,
+    QC_POINTS_SQUARE,
+    QC_POINTS_HEX,
+    QC_POINTS_SNUB, /* 3.3.4.3.4 */
+    QC_POINTS_POISSON,
+    QC_POINTS_GIVEN /* the caller's points (qc_generate's given argument) */
+} qc_points_kind;
+
+typedef enum qc_skeleton_kind { QC_SKELETON_DEFAULT = 0, QC_SKELETON_MST, QC_SKELETON_TSP } qc_skeleton_kind;
+typedef enum qc_mst_kind { QC_MST_DEFAULT = 0, QC_MST_DELAUNAY, QC_MST_COMPLETE } qc_mst_kind;
+typedef enum qc_tsp_kind { QC_TSP_DEFAULT = 0, QC_TSP_GREEDY, QC_TSP_2OPT, QC_TSP_OROPT } qc_tsp_kind;
+typedef enum qc_edge_mode { QC_EDGE_DEFAULT = 0, QC_EDGE_STRICT, QC_EDGE_OVERGROW } qc_edge_mode;
+typedef enum qc_tile_mode { QC_TILE_DEFAULT = 0, QC_TILE_NONE, QC_TILE_EDGE_TO_EDGE, QC_TILE_ALL_OVER } qc_tile_mode;
+typedef enum qc_tip_mode { QC_TIP_DEFAULT = 0, QC_TIP_NONE, QC_TIP_CIRCLE } qc_tip_mode;
+typedef enum qc_spiral_kind { QC_SPIRAL_DEFAULT = 0, QC_SPIRAL_ARCHIMEDEAN, QC_SPIRAL_FERMAT } qc_spiral_kind;
+typedef enum qc_echo_join { QC_ECHO_DEFAULT = 0, QC_ECHO_SPIRAL, QC_ECHO_RINGS } qc_echo_join;
+
+/*
+ * Every parameter of every family. A zero field means "default" unless its
+ * bit is set in `given` (see qc_params_set), so a zeroed struct is valid.
+ * Lengths are millimetres, angles degrees.
+ */
+typedef struct qc_params {
+    uint64_t seed;
+    uint64_t given;     /* bit k: field k of the table was set explicitly */
+    int family;         /* qc_family */
+    int points;         /* qc_points_kind */
+    int skeleton;       /* qc_skeleton_kind */
+    int mst;            /* qc_mst_kind */
+    int tsp;            /* qc_tsp_kind */
+    int edge;           /* qc_edge_mode (pebbling, packing) */
+    int tile;           /* qc_tile_mode */
+    int tip;            /* qc_tip_mode (fill, stipple) */
+    int spiral;         /* qc_spiral_kind */
+    int echo_join;      /* qc_echo_join */
+    double spacing;     /* d: point distance */
+    double margin;      /* gap kept between points and the boundary */
+    double size;        /* s: motif size */
+    double gap;         /* l: gap between motifs along the vine (branching) */
+    double angle;       /* alpha: motif angle to the vine (branching) */
+    double tangent;     /* l: tangent length ratio (wanderer) */
+    double r_seed;      /* root pebble radius / d (pebbling, packing) */
+    double width;       /* w: fill width (fill, stipple) */
+    double tsp_time_ms; /* time-bounded Or-opt perturbation; 0 = none */
+    double repeat_cols; /* tiles across (tiles) */
+    double repeat_rows; /* tiles down (tiles) */
+    double start_x, start_y; /* where to start: nearest point becomes the root */
+} qc_params;
+
+typedef enum qc_param_type { QC_PARAM_INT, QC_PARAM_ENUM, QC_PARAM_REAL, QC_PARAM_LENGTH, QC_PARAM_SEED } qc_param_type;
+
+/* One row of the parameter table. */
+typedef struct qc_param_info {
+    const char *name;   /* option name, e.g. "spacing" */
+    const char *help;   /* one line */
+    const char *unit;   /* "mm", "deg", "ratio", "count", "" */
+    qc_param_type type;
+    const char *choices; /* enums: names for 1, 2, ... separated by '|' */
+    double min, max;     /* valid range (enums: 1..count) */
+    double def;          /* default; for lengths 0 with def_per_spacing set */
+    double def_per_spacing; /* lengths: default = this * resolved spacing */
+    uint32_t families;   /* bit (1 << qc_family) for each family it applies to */
+    size_t offset;       /* offsetof(qc_params, field) */
+} qc_param_info;
+
+/* The table; *count receives its length. Static, never freed. */
+const qc_param_info *qc_param_table(size_t *count);
+/* The row named name, or NULL. */
+const qc_param_info *qc_param_find(const char *name);
+/* Family name <-> id ("branching" <-> QC_FAMILY_BRANCHING); unknown: -1 / NULL. */
+int qc_family_from_name(const char *name);
+const char *qc_family_name(int family);
+/* Enum choice name -> value (1-based) for row info, or -1. */
+int qc_param_choice(const qc_param_info *info, const char *choice);
+/* Sets a field by name and marks it given. QC_EINVAL for an unknown name. */
+int qc_params_set(qc_ctx *ctx, qc_params *p, const char *name, double value);
+/* Reads a field by its table row. */
+double qc_params_get(const qc_params *p, const qc_param_info *info);
+
+/*
+ * Fills every default into *out (in may equal out) and checks ranges:
+ * QC_ERANGE with "spacing 0.01 mm out of range [0.5, 500] mm" style messages,
+ * QC_EINVAL for an unknown family or choice.
+ */
+int qc_params_resolve(qc_ctx *ctx, const qc_params *in, qc_params *out);
+
+/* Figures about one generated pattern. */
+typedef struct qc_stats {
+    size_t points, edges, order;
+    double length_mm;   /* path length, curves flattened at 0.01 mm */
+    qc_bbox bbox;
+    size_t pieces;      /* separate pieces in the path (1 for a good pattern) */
+    /* motif families */
+    size_t motifs_placed, motifs_shrunk, motifs_rotated, motifs_flipped, motifs_skipped;
+    size_t joins_unfixed; /* wanderer connections that still cross */
+    /* pebbling / packing */
+    size_t pebbles, pebbles_under3;
+    double radius_min, radius_mean, radius_max, coverage;
+    double largest_gap_mm; /* largest empty circle the path misses; 0 if not computed */
+} qc_stats;
+
+typedef struct qc_result {
+    qc_params params;  /* the resolved parameters */
+    qc_points points;  /* the sampled (or given) points */
+    qc_edges edges;    /* the tree (MST skeletons) */
+    qc_order order;    /* the walk or tour */
+    qc_path path;      /* the pattern: one continuous path */
+    qc_stats stats;
+} qc_result;
+
+/*
+ * Generates one pattern inside region (normalized). given: points for
+ * QC_POINTS_GIVEN (else ignored, may be NULL). motifs: NULL for the built-in
+ * library. On success *out owns everything (free with qc_result_free); on
+ * failure *out is left zeroed. Errors: those of qc_params_resolve, QC_EEMPTY
+ * (no point fits in the region), QC_ELIMIT (too many points), QC_ENOMEM.
+ */
+int qc_generate(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                const qc_points *given, const qc_motif_set *motifs,
+                qc_result *out);
+void qc_result_free(qc_ctx *ctx, qc_result *res);
+
+/* Caps that keep every request linear-memory and bounded (see README). */
+#define QC_MAX_POINTS 4000000u
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,59 @@
+/*
+ * Visiting orders (paper §4.2): the depth-first walk of a tree with children
+ * taken counter-clockwise from the parent, and a TSP tour.
+ */
+#ifndef QUILTC_TOUR_H
+#define QUILTC_TOUR_H
+
+#include "core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * Depth-first walk of the tree (p, edges; n points, n-1 edges, connected)
+ * from root. At each node the children are visited counter-clockwise,
+ * starting from the direction of the parent (for the root: from the +x
+ * axis). Every tree edge is traversed twice, down and back, so the walk has
+ * 2(n-1)+1 entries and starts and ends at root. Appended to *out.
+ * Errors: QC_EINVAL (root out of range, or the edges are not a spanning
+ * tree: the message says why), QC_ENOMEM.
+ */
+int qc_tree_walk(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges,
+                 size_t nedges, uint32_t root, qc_order *out);
+
+/* Index of the point nearest q (lowest index on ties); 0 for n == 0. */
+uint32_t qc_nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);
+
+typedef enum qc_tsp_method {
+    QC_TSP_METHOD_GREEDY = 0, /* greedy-edge construction only */
+    QC_TSP_METHOD_2OPT,       /* + 2-opt with neighbour lists, don't-look bits */
+    QC_TSP_METHOD_OROPT       /* + Or-opt (the default) */
+} qc_tsp_method;
+
+typedef struct qc_tsp_params {
+    int method;          /* qc_tsp_method */
+    int neighbours;      /* candidate list size; 0 = 10 */
+    uint64_t seed;       /* for the perturbation phase */
+    uint64_t perturb_iterations; /* Or-opt perturbation rounds after local
+                                    search; the core has no clock, so the CLI
+                                    turns --tsp-time into rounds */
+} qc_tsp_params;
+
+/*
+ * A closed tour through all n points: out receives n indices (appended),
+ * starting at index 0; the closing edge back to the start is implicit.
+ * With method >= 2OPT the tour has no crossing edges. n <= 3 is returned in
+ * index order. Errors: QC_ERANGE (NaN/inf), QC_ENOMEM.
+ */
+int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
+           qc_order *out);
+
+/* Length of the closed tour order[0..m) over p, mm. */
+double qc_tour_length(const qc_vec2 *p, const uint32_t *order, size_t m, int closed);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

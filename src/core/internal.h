@@ -1,0 +1,50 @@
+/*
+ * Internals shared across the core's files: error reporting into the
+ * context and allocation through the caller's hook. Not installed.
+ */
+#ifndef QC_INTERNAL_H
+#define QC_INTERNAL_H
+
+#include <stddef.h>
+
+#include "quiltc.h"
+
+#if defined(__GNUC__) && !defined(__EMSCRIPTEN__) && !defined(_WIN32)
+#define QC__HIDDEN __attribute__((visibility("hidden")))
+#define QC__PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define QC__HIDDEN
+#define QC__PRINTF(f, a)
+#endif
+
+/* Records status and a printf-style one-line message in ctx; returns status. */
+QC__HIDDEN int qc__fail(qc_ctx *ctx, int status, const char *fmt, ...)
+    QC__PRINTF(3, 4);
+
+/* Allocation through ctx->alloc. qc__alloc(ctx, 0) returns NULL. */
+QC__HIDDEN void *qc__alloc(qc_ctx *ctx, size_t size);
+QC__HIDDEN void *qc__realloc(qc_ctx *ctx, void *ptr, size_t old_size,
+                             size_t new_size);
+QC__HIDDEN void qc__free(qc_ctx *ctx, void *ptr, size_t size);
+/* count * elem bytes, or NULL (and QC_ENOMEM in ctx) on overflow or failure. */
+QC__HIDDEN void *qc__alloc_array(qc_ctx *ctx, size_t count, size_t elem);
+
+/*
+ * Makes room for at least need elements of elem bytes in *ptr (capacity *cap,
+ * in elements), growing geometrically. QC_OK, or QC_ENOMEM with *ptr intact.
+ */
+QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
+                           size_t elem);
+
+#define QC__RESERVE(ctx, arr, capv, need) \
+    qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+
+/* Returns the status if it is an error. */
+#define QC__TRY(expr)            \
+    do {                         \
+        int qc__rc_ = (expr);    \
+        if (qc__rc_ < 0)         \
+            return qc__rc_;      \
+    } while (0)
+
+#endif
