@@ -29,6 +29,16 @@ typedef struct qc_motif_set {
 
 void qc_motif_set_free(qc_ctx *ctx, qc_motif_set *set);
 
+/* The built-in library: count and names ("leaf", "heart", ...). */
+size_t qc_motif_builtin_count(void);
+const char *qc_motif_builtin_name(size_t i);
+/* Appends the built-in motifs named in a comma-separated list to *out.
+ * QC_EINVAL names an unknown motif. */
+int qc_motif_builtin(qc_ctx *ctx, const char *names, qc_motif_set *out);
+/* Appends a motif read from an SVG document (see README) named name. */
+int qc_motif_from_svg(qc_ctx *ctx, const char *buf, size_t len,
+                      const char *name, qc_motif_set *out);
+
 #ifdef __cplusplus
 }
 #endif

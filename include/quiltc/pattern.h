@@ -142,6 +142,30 @@ typedef struct qc_result {
 } qc_result;
 
 /*
+ * The skeleton handed to a family (paper §4): points, the tree (MST families)
+ * and the visiting order (the tree walk from root, or the TSP tour).
+ */
+typedef struct qc_skeleton {
+    const qc_vec2 *p;
+    size_t n;
+    const qc_edge *edges; /* n-1 tree edges, or NULL for tour skeletons */
+    size_t nedges;
+    const uint32_t *order; /* walk (2(n-1)+1 entries, root first and last) or tour (n) */
+    size_t norder;
+    uint32_t root;
+} qc_skeleton;
+
+/*
+ * A family: decorates the skeleton into one continuous path appended to
+ * *out, adding its figures to *stats. params is resolved. Families that need
+ * no points (echo, spiral) get an empty skeleton.
+ */
+typedef int (*qc_family_fn)(qc_ctx *ctx, const qc_region *region,
+                            const qc_params *params, const qc_skeleton *skel,
+                            const qc_motif_set *motifs, qc_path *out,
+                            qc_stats *stats);
+
+/*
  * Generates one pattern inside region (normalized). given: points for
  * QC_POINTS_GIVEN (else ignored, may be NULL). motifs: NULL for the built-in
  * library. On success *out owns everything (free with qc_result_free); on
