@@ -39,6 +39,9 @@ QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
 #define QC__RESERVE(ctx, arr, capv, need) \
     qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
 
+/* Whether the qc_params field at offset was set explicitly (qc_params_set). */
+QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
+
 /* Returns the status if it is an error. */
 #define QC__TRY(expr)            \
     do {                         \

@@ -1,0 +1,198 @@
+/*
+ * qc_generate: the convenience tier over the stages, the one composition
+ * the CLI and the web page share (so both give the same bytes):
+ * sample -> graph -> tour -> family (decorate).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "internal.h"
+
+static qc_family_fn family_fn(int family)
+{
+    switch (family) {
+    case QC_FAMILY_VINE: return qc_deco_vine;
+    case QC_FAMILY_BRANCHING: return qc_deco_branching;
+    case QC_FAMILY_WANDERER: return qc_deco_wanderer;
+    case QC_FAMILY_PEBBLING: return qc_deco_pebbling;
+    case QC_FAMILY_PACKING: return qc_deco_packing;
+    case QC_FAMILY_FILL: return qc_deco_fill;
+    case QC_FAMILY_STIPPLE: return qc_deco_stipple;
+    case QC_FAMILY_ECHO: return qc_deco_echo;
+    case QC_FAMILY_SPIRAL: return qc_deco_spiral;
+    default: return NULL;
+    }
+}
+
+static int needs_points(int family)
+{
+    return family != QC_FAMILY_ECHO && family != QC_FAMILY_SPIRAL;
+}
+
+static void trace(qc_ctx *ctx, const char *stage)
+{
+    if (ctx->trace != NULL)
+        ctx->trace(ctx->trace_ud, stage);
+}
+
+static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *p,
+                         const qc_points *given, qc_points *out)
+{
+    static const int kinds[] = {0, QC_SAMPLE_TRIANGLE, QC_SAMPLE_SQUARE, QC_SAMPLE_HEX,
+                                QC_SAMPLE_SNUB, QC_SAMPLE_POISSON};
+    qc_sample_params sp;
+    size_t i;
+
+    if (p->points == QC_POINTS_GIVEN) {
+        if (given == NULL || given->n == 0)
+            return qc__fail(ctx, QC_EEMPTY, "points 'given' but no points were supplied");
+        if (given->n > QC_MAX_POINTS)
+            return qc__fail(ctx, QC_ELIMIT, "%lu points exceed the limit of %lu",
+                            (unsigned long)given->n, (unsigned long)QC_MAX_POINTS);
+        for (i = 0; i < given->n; i++)
+            QC__TRY(qc_points_push(ctx, out, given->v[i]));
+        return QC_OK;
+    }
+    memset(&sp, 0, sizeof sp);
+    sp.kind = kinds[p->points];
+    sp.spacing = p->spacing;
+    sp.margin = p->margin;
+    sp.seed = p->seed;
+    QC__TRY(qc_sample(ctx, region, &sp, out));
+    if (out->n == 0)
+        return qc__fail(ctx, QC_EEMPTY,
+                        "no point fits in the region at spacing %g mm with margin %g mm",
+                        p->spacing, p->margin);
+    return QC_OK;
+}
+
+/* The root: the point nearest the requested start, else nearest the lower-left corner. */
+static uint32_t pick_root(const qc_region *region, const qc_params *p, const qc_points *pts)
+{
+    qc_vec2 start;
+
+    if (qc__params_given(p, offsetof(qc_params, start_x)) ||
+        qc__params_given(p, offsetof(qc_params, start_y))) {
+        start.x = p->start_x;
+        start.y = p->start_y;
+    } else {
+        start = qc_region_bbox(region).min;
+    }
+    return qc_nearest_point(pts->v, pts->n, start);
+}
+
+static int build_tour(qc_ctx *ctx, const qc_params *p, const qc_points *pts,
+                      uint32_t root, qc_order *order)
+{
+    static const int methods[] = {0, QC_TSP_METHOD_GREEDY, QC_TSP_METHOD_2OPT,
+                                  QC_TSP_METHOD_OROPT};
+    qc_tsp_params tp;
+    qc_order raw = {0};
+    size_t i, at = 0;
+    int rc;
+
+    memset(&tp, 0, sizeof tp);
+    tp.method = methods[p->tsp];
+    tp.seed = p->seed;
+    /* the core has no clock: the budget becomes a round count (about 200 per ms) */
+    tp.perturb_iterations = (uint64_t)(p->tsp_time_ms * 200.0);
+    rc = qc_tsp(ctx, pts->v, pts->n, &tp, &raw);
+    if (rc < 0)
+        goto out;
+    for (i = 0; i < raw.n; i++)
+        if (raw.i[i] == root)
+            at = i;
+    for (i = 0; i < raw.n && rc == QC_OK; i++) /* rotate so the tour starts at root */
+        rc = qc_order_push(ctx, order, raw.i[(at + i) % raw.n]);
+out:
+    qc_order_free(ctx, &raw);
+    return rc;
+}
+
+static int build_skeleton(qc_ctx *ctx, const qc_region *region, const qc_params *p,
+                          qc_result *res, qc_skeleton *skel)
+{
+    uint32_t root;
+
+    memset(skel, 0, sizeof *skel);
+    if (res->points.n == 0)
+        return QC_OK;
+    root = pick_root(region, p, &res->points);
+    if (p->skeleton == QC_SKELETON_TSP) {
+        trace(ctx, "tour");
+        QC__TRY(build_tour(ctx, p, &res->points, root, &res->order));
+    } else {
+        trace(ctx, "graph");
+        QC__TRY(qc_mst(ctx, res->points.v, res->points.n,
+                       p->mst == QC_MST_COMPLETE ? QC_MST_MODE_COMPLETE
+                                                 : QC_MST_MODE_DELAUNAY,
+                       &res->edges));
+        trace(ctx, "tour");
+        QC__TRY(qc_tree_walk(ctx, res->points.v, res->points.n, res->edges.e,
+                             res->edges.n, root, &res->order));
+        skel->edges = res->edges.e;
+        skel->nedges = res->edges.n;
+    }
+    skel->p = res->points.v;
+    skel->n = res->points.n;
+    skel->order = res->order.i;
+    skel->norder = res->order.n;
+    skel->root = root;
+    return QC_OK;
+}
+
+static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
+               const qc_motif_set *motifs, qc_result *res)
+{
+    const qc_params *p = &res->params;
+    qc_skeleton skel;
+    qc_family_fn fn = family_fn(p->family);
+
+    if (fn == NULL)
+        return qc__fail(ctx, QC_EINVAL, "unknown family %d", p->family);
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EEMPTY, "the region has no outline");
+    if (needs_points(p->family)) {
+        trace(ctx, "sample");
+        QC__TRY(sample_points(ctx, region, p, given, &res->points));
+    }
+    QC__TRY(build_skeleton(ctx, region, p, res, &skel));
+    trace(ctx, "decorate");
+    QC__TRY(fn(ctx, region, p, &skel, motifs, &res->path, &res->stats));
+    if (res->path.ncmd == 0)
+        return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
+                        qc_family_name(p->family));
+    res->stats.points = res->points.n;
+    res->stats.edges = res->edges.n;
+    res->stats.order = res->order.n;
+    res->stats.length_mm = qc_curve_length(&res->path, 0.01);
+    res->stats.bbox = qc_curve_bbox(&res->path, 0.01);
+    res->stats.pieces = qc_path_pieces(&res->path);
+    trace(ctx, "done");
+    return QC_OK;
+}
+
+int qc_generate(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                const qc_points *given, const qc_motif_set *motifs, qc_result *out)
+{
+    int rc;
+
+    memset(out, 0, sizeof *out);
+    rc = qc_params_resolve(ctx, params, &out->params);
+    if (rc == QC_OK)
+        rc = run(ctx, region, given, motifs, out);
+    if (rc < 0)
+        qc_result_free(ctx, out);
+    return rc;
+}
+
+void qc_result_free(qc_ctx *ctx, qc_result *res)
+{
+    if (res == NULL)
+        return;
+    qc_points_free(ctx, &res->points);
+    qc_edges_free(ctx, &res->edges);
+    qc_order_free(ctx, &res->order);
+    qc_path_free(ctx, &res->path);
+    memset(res, 0, sizeof *res);
+}
