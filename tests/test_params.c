@@ -1,0 +1,128 @@
+/* The parameter table and qc_params_resolve. */
+#include <string.h>
+
+#include "quiltc.h"
+#include "unity.h"
+
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    qc_ctx_init(&ctx, NULL, NULL);
+}
+
+void tearDown(void)
+{
+}
+
+static void table_should_name_every_row_once_with_sane_ranges(void)
+{
+    size_t n, i, j;
+    const qc_param_info *t = qc_param_table(&n);
+
+    TEST_ASSERT_GREATER_THAN(15, n);
+    TEST_ASSERT_LESS_OR_EQUAL(64, n); /* one bit each in qc_params.given */
+    for (i = 0; i < n; i++) {
+        TEST_ASSERT_NOT_NULL(t[i].name);
+        TEST_ASSERT_NOT_NULL(t[i].help);
+        TEST_ASSERT_TRUE(t[i].min <= t[i].max);
+        TEST_ASSERT_TRUE(t[i].offset < sizeof(qc_params));
+        TEST_ASSERT_TRUE(qc_param_find(t[i].name) == &t[i]);
+        for (j = i + 1; j < n; j++)
+            TEST_ASSERT_TRUE(strcmp(t[i].name, t[j].name) != 0);
+    }
+    TEST_ASSERT_NULL(qc_param_find("no-such"));
+}
+
+static void resolve_should_fill_defaults_from_a_zeroed_struct(void)
+{
+    qc_params p, r;
+
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_INT(QC_FAMILY_STIPPLE, r.family);
+    TEST_ASSERT_EQUAL_INT(QC_POINTS_POISSON, r.points);
+    TEST_ASSERT_EQUAL_INT(QC_SKELETON_MST, r.skeleton);
+    TEST_ASSERT_EQUAL_DOUBLE(12.7, r.spacing);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 12.7 / 3.0, r.width); /* stipple: w = d/3 */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.3 * 12.7, r.margin);
+    TEST_ASSERT_EQUAL_UINT64(1, r.seed);
+}
+
+static void resolve_should_derive_family_defaults(void)
+{
+    qc_params p, r;
+
+    memset(&p, 0, sizeof p);
+    p.family = QC_FAMILY_PEBBLING;
+    p.spacing = 10.0;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_INT(QC_POINTS_SNUB, r.points);
+    TEST_ASSERT_EQUAL_DOUBLE(0.7, r.r_seed);
+    p.family = QC_FAMILY_WANDERER;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_INT(QC_SKELETON_TSP, r.skeleton);
+    p.family = QC_FAMILY_FILL;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, r.width); /* fill: w = d/5 */
+}
+
+static void set_should_keep_an_explicit_zero(void)
+{
+    qc_params p, r;
+
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "angle", 0.0));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "seed", 0.0));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, r.angle);
+    TEST_ASSERT_EQUAL_UINT64(0, r.seed);
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_DOUBLE(45.0, r.angle);
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_params_set(&ctx, &p, "bogus", 1.0));
+    TEST_ASSERT_EQUAL_STRING("unknown parameter 'bogus'", qc_errmsg(&ctx));
+}
+
+static void resolve_should_refuse_out_of_range_values_by_name(void)
+{
+    qc_params p, r;
+
+    memset(&p, 0, sizeof p);
+    p.spacing = 0.01;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_STRING("spacing 0.01 mm out of range [0.5, 1000] mm", qc_errmsg(&ctx));
+    memset(&p, 0, sizeof p);
+    p.r_seed = 2.0;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_TRUE(strstr(qc_errmsg(&ctx), "r-seed 2") != NULL);
+    memset(&p, 0, sizeof p);
+    p.family = 42;
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_params_resolve(&ctx, &p, &r));
+    memset(&p, 0, sizeof p);
+    p.repeat_cols = 2.5;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_params_resolve(&ctx, &p, &r));
+}
+
+static void names_should_map_both_ways(void)
+{
+    int f;
+
+    for (f = 1; f < QC_FAMILY_COUNT; f++)
+        TEST_ASSERT_EQUAL_INT(f, qc_family_from_name(qc_family_name(f)));
+    TEST_ASSERT_EQUAL_INT(-1, qc_family_from_name("plaid"));
+    TEST_ASSERT_EQUAL_INT(QC_POINTS_SNUB, qc_param_choice(qc_param_find("points"), "snub"));
+    TEST_ASSERT_EQUAL_INT(-1, qc_param_choice(qc_param_find("points"), "sn"));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(table_should_name_every_row_once_with_sane_ranges);
+    RUN_TEST(resolve_should_fill_defaults_from_a_zeroed_struct);
+    RUN_TEST(resolve_should_derive_family_defaults);
+    RUN_TEST(set_should_keep_an_explicit_zero);
+    RUN_TEST(resolve_should_refuse_out_of_range_values_by_name);
+    RUN_TEST(names_should_map_both_ways);
+    return UNITY_END();
+}
