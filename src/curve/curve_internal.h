@@ -1,0 +1,18 @@
+/* Internals of curve/: the allocation-free flattening walk shared by
+ * qc_curve_flatten, qc_curve_length and qc_curve_bbox. */
+#ifndef QC_CURVE_INTERNAL_H
+#define QC_CURVE_INTERNAL_H
+
+#include "internal.h"
+
+/* Receives each flattened point; start != 0 marks the first point of a piece.
+ * A negative return stops the walk and is returned by qc__curve_walk. */
+typedef int (*qc__curve_point_fn)(void *ud, qc_vec2 p, int start);
+
+/* Walks path's points in order, cubics subdivided until their control points
+ * lie within tol of the chord. A path not starting with MOVE starts at its
+ * first command's start, (0, 0). Returns QC_OK or the callback's status. */
+QC__HIDDEN int qc__curve_walk(const qc_path *path, double tol,
+                              qc__curve_point_fn fn, void *ud);
+
+#endif

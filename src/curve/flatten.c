@@ -1,0 +1,206 @@
+/* Flattening cubic Béziers by adaptive subdivision; length and bbox. */
+#include <math.h>
+
+#include "curve_internal.h"
+
+/* Depth bound: 2^20 chords per cubic at most, whatever the input. */
+#define FLAT_MAX_DEPTH 20
+
+static double seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
+{
+    double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+    double len2 = dx * dx + dy * dy, t;
+
+    if (len2 > 0) {
+        t = (px * dx + py * dy) / len2;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        px -= t * dx;
+        py -= t * dy;
+    }
+    return px * px + py * py;
+}
+
+static qc_vec2 mid(qc_vec2 a, qc_vec2 b)
+{
+    qc_vec2 m;
+
+    m.x = 0.5 * (a.x + b.x);
+    m.y = 0.5 * (a.y + b.y);
+    return m;
+}
+
+/* Emits the points after c[0] of one cubic. The curve lies in the hull of
+ * its control points, so control points within tol of the chord bound the
+ * curve's distance from each emitted chord by tol. Iterative, depth-first,
+ * left half first: the output order is the curve's order. */
+static int flatten_cubic(const qc_vec2 c[4], double tol2,
+                         qc__curve_point_fn fn, void *ud)
+{
+    qc_vec2 stack[FLAT_MAX_DEPTH + 2][4];
+    int depth[FLAT_MAX_DEPTH + 2];
+    int sp = 0, k, rc;
+
+    for (k = 0; k < 4; k++)
+        stack[0][k] = c[k];
+    depth[0] = 0;
+    sp = 1;
+    while (sp > 0) {
+        qc_vec2 *q = stack[sp - 1];
+        int d = depth[sp - 1];
+
+        if (d >= FLAT_MAX_DEPTH || (seg_dist2(q[1], q[0], q[3]) <= tol2 &&
+                                    seg_dist2(q[2], q[0], q[3]) <= tol2)) {
+            rc = fn(ud, q[3], 0);
+            if (rc < 0)
+                return rc;
+            sp--;
+            continue;
+        }
+        {
+            /* de Casteljau at t = 1/2: the left half goes on top, q
+             * becomes the right half (popped after the left one). */
+            qc_vec2 p01 = mid(q[0], q[1]), p12 = mid(q[1], q[2]);
+            qc_vec2 p23 = mid(q[2], q[3]);
+            qc_vec2 p012 = mid(p01, p12), p123 = mid(p12, p23);
+            qc_vec2 m = mid(p012, p123);
+            qc_vec2 *r = stack[sp];
+
+            r[0] = q[0];
+            r[1] = p01;
+            r[2] = p012;
+            r[3] = m;
+            q[0] = m;
+            q[1] = p123;
+            q[2] = p23;
+            depth[sp - 1] = d + 1;
+            depth[sp] = d + 1;
+            sp++;
+        }
+    }
+    return QC_OK;
+}
+
+int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
+                   void *ud)
+{
+    size_t c, k = 0;
+    qc_vec2 cur = {0, 0};
+    double tol2 = tol * tol;
+    int rc;
+
+    for (c = 0; c < path->ncmd; c++) {
+        unsigned char cmd = path->cmd[c];
+
+        if (c == 0 && cmd != QC_PATH_MOVE) {
+            rc = fn(ud, cur, 1);
+            if (rc < 0)
+                return rc;
+        }
+        if (cmd == QC_PATH_CUBIC) {
+            qc_vec2 q[4];
+
+            q[0] = cur;
+            q[1] = path->pt[k];
+            q[2] = path->pt[k + 1];
+            q[3] = path->pt[k + 2];
+            rc = flatten_cubic(q, tol2, fn, ud);
+            cur = q[3];
+            k += 3;
+        } else {
+            cur = path->pt[k++];
+            rc = fn(ud, cur, cmd == QC_PATH_MOVE);
+        }
+        if (rc < 0)
+            return rc;
+    }
+    return QC_OK;
+}
+
+typedef struct flat_out {
+    qc_ctx *ctx;
+    qc_points *pts;
+    qc_order *ends;
+    int any;
+} flat_out;
+
+static int collect(void *ud, qc_vec2 p, int start)
+{
+    flat_out *o = (flat_out *)ud;
+
+    if (o->pts->n >= UINT32_MAX)
+        return qc__fail(o->ctx, QC_ELIMIT, "flattened path exceeds 2^32 points");
+    if (start && o->any && o->ends != NULL)
+        QC__TRY(qc_order_push(o->ctx, o->ends, (uint32_t)o->pts->n));
+    o->any = 1;
+    return qc_points_push(o->ctx, o->pts, p);
+}
+
+int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
+                     qc_points *out, qc_order *piece_end)
+{
+    flat_out o;
+
+    if (!(tol > 0) || tol > 1e6)
+        return qc__fail(ctx, QC_ERANGE,
+                        "flattening tolerance %g mm must be > 0", tol);
+    o.ctx = ctx;
+    o.pts = out;
+    o.ends = piece_end;
+    o.any = 0;
+    QC__TRY(qc__curve_walk(path, tol, collect, &o));
+    if (o.any && piece_end != NULL)
+        QC__TRY(qc_order_push(ctx, piece_end, (uint32_t)out->n));
+    return QC_OK;
+}
+
+typedef struct measure {
+    qc_vec2 last;
+    double len;
+    qc_bbox box;
+    int any;
+} measure;
+
+static int measure_point(void *ud, qc_vec2 p, int start)
+{
+    measure *m = (measure *)ud;
+
+    if (!start && m->any)
+        m->len += qc_hypot(p.x - m->last.x, p.y - m->last.y);
+    if (!m->any) {
+        m->box.min = p;
+        m->box.max = p;
+    } else {
+        m->box.min.x = fmin(m->box.min.x, p.x);
+        m->box.min.y = fmin(m->box.min.y, p.y);
+        m->box.max.x = fmax(m->box.max.x, p.x);
+        m->box.max.y = fmax(m->box.max.y, p.y);
+    }
+    m->last = p;
+    m->any = 1;
+    return QC_OK;
+}
+
+static measure measure_path(const qc_path *path, double tol)
+{
+    measure m;
+
+    m.last.x = m.last.y = 0;
+    m.len = 0;
+    m.box.min = m.last;
+    m.box.max = m.last;
+    m.any = 0;
+    if (!(tol > 0))
+        tol = 0.01;
+    (void)qc__curve_walk(path, tol, measure_point, &m);
+    return m;
+}
+
+double qc_curve_length(const qc_path *path, double tol)
+{
+    return measure_path(path, tol).len;
+}
+
+qc_bbox qc_curve_bbox(const qc_path *path, double tol)
+{
+    return measure_path(path, tol).box;
+}
