@@ -25,32 +25,50 @@ typedef struct qc_plan {
 } qc_plan;
 
 typedef struct qc_stitch_params {
-    double tolerance;   /* chord tolerance, mm; 0 = 0.127 (0.005 in) */
+    double tolerance;   /* chord tolerance, mm, (0, 1000]; 0 = 0.127 (0.005 in) */
     double min_segment; /* merge shorter segments, mm; 0 = 0.508 (0.02 in); < 0 = keep all */
-    double max_segment; /* split longer segments, mm; 0 = no limit */
-    int tie_stitches;   /* tie-off stitches at each piece's start and end; 0 = none */
-    double tie_length;  /* length of one tie-off stitch, mm; 0 = 0.5 */
+    double max_segment; /* split longer segments, mm, >= 0.01; 0 = no limit */
+    int tie_stitches;   /* tie-off stitches at each piece's start and end, 0..100; 0 = none */
+    double tie_length;  /* length of one tie-off stitch, mm, (0, 100]; 0 = 0.5 */
     int clip;           /* non-zero: drop what lies outside clip region (pieces split, jumps added) */
 } qc_stitch_params;
 
-/* Builds *out (zeroed first) from path. clip_region may be NULL. Errors:
- * QC_EEMPTY (nothing to sew), QC_ERANGE (bad tolerance/lengths), QC_ENOMEM. */
+/*
+ * Builds *out (zeroed first) from path, piece by piece (a piece starts at
+ * each MOVE): curves flattened to tolerance; if clip and clip_region, only
+ * what lies inside the region is kept (cut exactly at ring edges; a piece
+ * that leaves and re-enters becomes two); points closer than min_segment to
+ * the previous kept point dropped (each piece's first and last points stay);
+ * segments longer than max_segment split into equal parts; pieces reduced to
+ * one point dropped. Each piece's first point has QC_ST_JUMP; after it and
+ * after its last point come tie_stitches points flagged QC_ST_TIE going back
+ * and forth over tie_length (at most the adjacent segment's length) along
+ * the piece. params may be NULL (all defaults). clip_region may be NULL.
+ * Errors: QC_EEMPTY (nothing to sew), QC_ERANGE (bad tolerance/lengths, a
+ * path coordinate NaN or beyond 1e6 mm), QC_ELIMIT, QC_ENOMEM; *out is then
+ * empty.
+ */
 int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
                    const qc_stitch_params *params, qc_plan *out);
 void qc_plan_free(qc_ctx *ctx, qc_plan *plan);
+/* Appends one point with its QC_ST_* flags. QC_OK, or QC_ENOMEM with the
+ * plan unchanged. */
 int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags);
 
 typedef struct qc_plan_estimate {
-    size_t points, jumps, ties;
-    double sewn_mm;      /* length sewn (needle down) */
+    size_t points, jumps, ties; /* jumps: travel moves between pieces (p[0] excluded) */
+    double sewn_mm;      /* length sewn (needle down), ties included */
     double travel_mm;    /* length of jumps */
-    size_t stitches;     /* sewn_mm at spi stitches per inch */
-    double thread_mm;    /* top thread: sewn_mm * 1.1 + 150 mm per piece (README) */
-    double seconds;      /* at speed_mm_s for sewing, 4x for travel */
-    qc_bbox bbox;
+    size_t stitches;     /* sewn_mm at spi stitches per inch, rounded */
+    /* Top thread: sewn_mm * 1.1 (take-up in the quilt sandwich) + 150 mm per
+     * piece (the tails pulled up, tied and buried at its start and end). */
+    double thread_mm;
+    double seconds;      /* sewing at speed_mm_s, travel at 4x that */
+    qc_bbox bbox;        /* of all points; zero for an empty plan */
 } qc_plan_estimate;
 
-/* spi: stitches per inch (0 = 12); speed_mm_s: sewing speed (0 = 25.4 mm/s). */
+/* spi: stitches per inch (<= 0 means 12); speed_mm_s: sewing speed (<= 0
+ * means 25.4 mm/s). Fills *out; allocates nothing. */
 void qc_plan_estimate_get(const qc_plan *plan, double spi, double speed_mm_s,
                           qc_plan_estimate *out);
 

@@ -1,0 +1,241 @@
+/* The stitch plan: flatten, clip, merge short and split long segments, tie off. */
+#include <math.h>
+#include <string.h>
+
+#include "quiltc/curve.h"
+#include "stitch_internal.h"
+
+#define DEF_TOLERANCE 0.127
+#define DEF_MIN_SEGMENT 0.508
+#define DEF_TIE_LENGTH 0.5
+#define MAX_TIE_STITCHES 100
+
+void qc_plan_free(qc_ctx *ctx, qc_plan *plan)
+{
+    if (plan == NULL)
+        return;
+    qc__free(ctx, plan->p, plan->cap * sizeof *plan->p);
+    qc__free(ctx, plan->flags, plan->cap);
+    memset(plan, 0, sizeof *plan);
+}
+
+/* Grows both arrays to a new capacity at once, so a failure leaves the plan
+ * exactly as it was (both blocks keep the old capacity). */
+static int plan_grow(qc_ctx *ctx, qc_plan *plan, size_t need)
+{
+    size_t cap = plan->cap ? plan->cap : 16;
+    qc_vec2 *p;
+    unsigned char *f;
+
+    while (cap < need) {
+        if (cap > ((size_t)-1) / 2 / sizeof *p)
+            return qc__fail(ctx, QC_ENOMEM, "out of memory: plan of %lu points",
+                            (unsigned long)need);
+        cap *= 2;
+    }
+    p = (qc_vec2 *)qc__alloc_array(ctx, cap, sizeof *p);
+    if (p == NULL)
+        return QC_ENOMEM;
+    f = (unsigned char *)qc__alloc(ctx, cap);
+    if (f == NULL) {
+        qc__free(ctx, p, cap * sizeof *p);
+        return qc__fail(ctx, QC_ENOMEM, "out of memory: plan of %lu points",
+                        (unsigned long)need);
+    }
+    if (plan->n > 0) {
+        memcpy(p, plan->p, plan->n * sizeof *p);
+        memcpy(f, plan->flags, plan->n);
+    }
+    qc__free(ctx, plan->p, plan->cap * sizeof *plan->p);
+    qc__free(ctx, plan->flags, plan->cap);
+    plan->p = p;
+    plan->flags = f;
+    plan->cap = cap;
+    return QC_OK;
+}
+
+int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
+{
+    if (plan->n >= plan->cap)
+        QC__TRY(plan_grow(ctx, plan, plan->n + 1));
+    plan->p[plan->n] = p;
+    plan->flags[plan->n] = (unsigned char)flags;
+    plan->n++;
+    return QC_OK;
+}
+
+typedef struct resolved {
+    double tol, min_seg, max_seg, tie_len;
+    int ties;
+} resolved;
+
+static int resolve(qc_ctx *ctx, const qc_stitch_params *in, resolved *r)
+{
+    qc_stitch_params z;
+
+    if (in == NULL) {
+        memset(&z, 0, sizeof z);
+        in = &z;
+    }
+    r->tol = in->tolerance == 0 ? DEF_TOLERANCE : in->tolerance;
+    r->min_seg = in->min_segment == 0 ? DEF_MIN_SEGMENT
+                 : in->min_segment < 0 ? 0 : in->min_segment;
+    r->max_seg = in->max_segment;
+    r->tie_len = in->tie_length == 0 ? DEF_TIE_LENGTH : in->tie_length;
+    r->ties = in->tie_stitches;
+    if (!(r->tol > 0 && r->tol <= 1000))
+        return qc__fail(ctx, QC_ERANGE,
+                        "stitch tolerance %g mm must be in (0, 1000]", in->tolerance);
+    if (!(r->min_seg >= 0 && r->min_seg <= 1000))
+        return qc__fail(ctx, QC_ERANGE,
+                        "minimum segment %g mm must be <= 1000", in->min_segment);
+    if (!(r->max_seg >= 0 && r->max_seg <= 1e6) ||
+        (r->max_seg > 0 && r->max_seg < 0.01))
+        return qc__fail(ctx, QC_ERANGE,
+                        "maximum segment %g mm must be 0 (no limit) or in [0.01, 1e6]",
+                        in->max_segment);
+    if (r->max_seg > 0 && r->max_seg < r->min_seg)
+        return qc__fail(ctx, QC_ERANGE,
+                        "maximum segment %g mm is below the minimum segment %g mm",
+                        r->max_seg, r->min_seg);
+    if (r->ties < 0 || r->ties > MAX_TIE_STITCHES)
+        return qc__fail(ctx, QC_ERANGE, "tie stitches %d must be in [0, %d]",
+                        r->ties, MAX_TIE_STITCHES);
+    if (!(r->tie_len > 0 && r->tie_len <= 100))
+        return qc__fail(ctx, QC_ERANGE, "tie length %g mm must be in (0, 100]",
+                        in->tie_length);
+    return QC_OK;
+}
+
+static double dist(qc_vec2 a, qc_vec2 b)
+{
+    return qc_hypot(b.x - a.x, b.y - a.y);
+}
+
+/* Drops points closer than min_seg to the last kept one; the first and last
+ * points always stay (the last replaces a too-close predecessor). Returns the
+ * number of points kept in m. */
+static size_t merge(const qc_vec2 *v, size_t n, double min_seg, qc_vec2 *m)
+{
+    size_t i, k = 0;
+
+    m[k++] = v[0];
+    for (i = 1; i + 1 < n; i++)
+        if (dist(m[k - 1], v[i]) >= min_seg && dist(m[k - 1], v[i]) > 0)
+            m[k++] = v[i];
+    if (n > 1) {
+        if (k > 1 && dist(m[k - 1], v[n - 1]) < min_seg)
+            k--;
+        if (dist(m[k - 1], v[n - 1]) > 0)
+            m[k++] = v[n - 1];
+    }
+    return k;
+}
+
+/* N stitches back and forth between at and at + L along towards. */
+static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards,
+                   const resolved *r)
+{
+    double d = dist(at, towards), l = fmin(r->tie_len, d);
+    qc_vec2 far;
+    int k;
+
+    far.x = at.x + (towards.x - at.x) / d * l;
+    far.y = at.y + (towards.y - at.y) / d * l;
+    for (k = 1; k <= r->ties; k++)
+        QC__TRY(qc_plan_push(ctx, out, (k & 1) ? far : at, QC_ST_TIE));
+    return QC_OK;
+}
+
+static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
+                      const resolved *r)
+{
+    size_t i;
+
+    QC__TRY(qc_plan_push(ctx, out, m[0], QC_ST_JUMP));
+    QC__TRY(tie_off(ctx, out, m[0], m[1], r));
+    for (i = 1; i < n; i++) {
+        double d = dist(m[i - 1], m[i]);
+
+        if (r->max_seg > 0 && d > r->max_seg) {
+            double parts = ceil(d / r->max_seg);
+            size_t j, np = (size_t)parts;
+
+            for (j = 1; j < np; j++) {
+                double t = (double)j / parts;
+                qc_vec2 q;
+
+                q.x = m[i - 1].x + (m[i].x - m[i - 1].x) * t;
+                q.y = m[i - 1].y + (m[i].y - m[i - 1].y) * t;
+                QC__TRY(qc_plan_push(ctx, out, q, 0));
+            }
+        }
+        QC__TRY(qc_plan_push(ctx, out, m[i], 0));
+    }
+    return tie_off(ctx, out, m[n - 1], m[n - 2], r);
+}
+
+static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
+                 const resolved *r, qc_plan *out)
+{
+    qc_vec2 *m = NULL;
+    size_t longest = 0, k, start = 0, cnt;
+    int rc = QC_OK;
+
+    for (k = 0; k < ends->n; k++) {
+        if (ends->i[k] - start > longest)
+            longest = ends->i[k] - start;
+        start = ends->i[k];
+    }
+    if (longest > 0) {
+        m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *m);
+        if (m == NULL)
+            return QC_ENOMEM;
+    }
+    start = 0;
+    for (k = 0; k < ends->n && rc == QC_OK; k++) {
+        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        if (cnt >= 2)
+            rc = emit_piece(ctx, out, m, cnt, r);
+        start = ends->i[k];
+    }
+    qc__free(ctx, m, longest * sizeof *m);
+    return rc;
+}
+
+int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
+                   const qc_stitch_params *params, qc_plan *out)
+{
+    qc_points pts = {0}, cpts = {0};
+    qc_order ends = {0}, cends = {0};
+    resolved r;
+    size_t i;
+    int rc;
+
+    memset(out, 0, sizeof *out);
+    QC__TRY(resolve(ctx, params, &r));
+    for (i = 0; i < path->npt; i++)
+        if (!(fabs(path->pt[i].x) <= 1e6 && fabs(path->pt[i].y) <= 1e6))
+            return qc__fail(ctx, QC_ERANGE,
+                            "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
+                            (unsigned long)i, path->pt[i].x, path->pt[i].y);
+    rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
+    if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
+        rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);
+        if (rc == QC_OK)
+            rc = build(ctx, &cpts, &cends, &r, out);
+    } else if (rc == QC_OK) {
+        rc = build(ctx, &pts, &ends, &r, out);
+    }
+    qc_points_free(ctx, &pts);
+    qc_order_free(ctx, &ends);
+    qc_points_free(ctx, &cpts);
+    qc_order_free(ctx, &cends);
+    if (rc == QC_OK && out->n == 0)
+        rc = qc__fail(ctx, QC_EEMPTY, "nothing to sew: the path has no segment%s",
+                      params != NULL && params->clip && clip_region != NULL
+                          ? " inside the clip region" : "");
+    if (rc != QC_OK)
+        qc_plan_free(ctx, out);
+    return rc;
+}

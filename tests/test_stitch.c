@@ -1,0 +1,223 @@
+/* The stitch plan: merging, splitting, tie-offs, jumps, clipping, estimates. */
+#include <math.h>
+#include <string.h>
+
+#include "quiltc.h"
+#include "testalloc.h"
+#include "unity.h"
+
+static testalloc ta;
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    memset(&ta, 0, sizeof ta);
+    qc_ctx_init(&ctx, testalloc_fn, &ta);
+}
+
+void tearDown(void)
+{
+}
+
+static qc_vec2 v2(double x, double y)
+{
+    qc_vec2 v;
+
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
+static double seg(const qc_plan *p, size_t i)
+{
+    return hypot(p->p[i].x - p->p[i - 1].x, p->p[i].y - p->p[i - 1].y);
+}
+
+static void plan_should_merge_short_and_split_long_segments(void)
+{
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan;
+    size_t i;
+    int x;
+
+    memset(&sp, 0, sizeof sp);
+    sp.min_segment = 1.0;
+    sp.max_segment = 3.0;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+    for (x = 1; x <= 10; x++) /* 0.25 mm steps: merged to 1 mm ones */
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(x * 0.25, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(2.5, 10))); /* split into 4 */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    TEST_ASSERT_EQUAL_INT(QC_ST_JUMP, plan.flags[0]);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, plan.p[0].x);
+    TEST_ASSERT_EQUAL_DOUBLE(2.5, plan.p[plan.n - 1].x); /* the last point stays */
+    TEST_ASSERT_EQUAL_DOUBLE(10.0, plan.p[plan.n - 1].y);
+    for (i = 1; i < plan.n; i++) {
+        TEST_ASSERT_EQUAL_INT(0, plan.flags[i]);
+        TEST_ASSERT_LESS_OR_EQUAL(3.0 + 1e-12, seg(&plan, i));
+        TEST_ASSERT_GREATER_OR_EQUAL(1.0 - 1e-12, seg(&plan, i));
+    }
+    /* 0, 1, 2, then 2.5 replaces 2 ... or stays: then 4 parts of 2.5 mm */
+    TEST_ASSERT_EQUAL_size_t(3 + 4, plan.n);
+    qc_plan_free(&ctx, &plan);
+    qc_path_free(&ctx, &path);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void plan_should_add_jumps_and_tie_offs_per_piece(void)
+{
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan;
+    qc_plan_estimate est;
+    size_t i, jumps = 0, ties = 0;
+
+    memset(&sp, 0, sizeof sp);
+    sp.tie_stitches = 3;
+    sp.tie_length = 0.4;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(10, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(20, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(20, 10)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(50, 50))); /* lone point: dropped */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    /* per piece: start, 3 ties, end, 3 ties */
+    TEST_ASSERT_EQUAL_size_t(16, plan.n);
+    for (i = 0; i < plan.n; i++) {
+        jumps += (plan.flags[i] & QC_ST_JUMP) != 0;
+        ties += (plan.flags[i] & QC_ST_TIE) != 0;
+    }
+    TEST_ASSERT_EQUAL_size_t(2, jumps);
+    TEST_ASSERT_EQUAL_size_t(12, ties);
+    TEST_ASSERT_EQUAL_INT(QC_ST_JUMP, plan.flags[8]);
+    TEST_ASSERT_EQUAL_DOUBLE(20.0, plan.p[8].x);
+    /* start ties go forward along the path and back */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.4, plan.p[1].x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, plan.p[2].x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.4, plan.p[3].x);
+    /* end ties go back along the path */
+    TEST_ASSERT_EQUAL_DOUBLE(10.0, plan.p[4].x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 9.6, plan.p[5].x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 9.6, plan.p[13].y);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 10.0, plan.p[14].y);
+    qc_plan_estimate_get(&plan, 10, 10, &est);
+    TEST_ASSERT_EQUAL_size_t(16, est.points);
+    TEST_ASSERT_EQUAL_size_t(1, est.jumps);
+    TEST_ASSERT_EQUAL_size_t(12, est.ties);
+    /* per piece: 3 + 3 ties of 0.4 mm, the 3rd start tie ends 0.4 mm along
+     * the 10 mm line; travel from the end tie (9.6, 0) to (20, 0) */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 2 * (1.2 + 9.6 + 1.2), est.sewn_mm);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 10.4, est.travel_mm);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 24 * 1.1 + 300, est.thread_mm);
+    TEST_ASSERT_EQUAL_size_t(9, est.stitches); /* 24 mm at 10 spi = 9.45 */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 2.4 + 10.4 / 40, est.seconds);
+    TEST_ASSERT_EQUAL_DOUBLE(20.0, est.bbox.max.x);
+    qc_plan_free(&ctx, &plan);
+    qc_path_free(&ctx, &path);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void plan_should_flatten_curves_within_tolerance(void)
+{
+    qc_path path = {0};
+    qc_plan plan;
+    size_t i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &path, v2(0, 50), v2(50, 50), v2(50, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, NULL, &plan));
+    TEST_ASSERT_GREATER_THAN(10, plan.n);
+    for (i = 1; i < plan.n; i++) {
+        /* every point on the curve's arch: between the chord and the top */
+        TEST_ASSERT_TRUE(plan.p[i].y >= -1e-9 && plan.p[i].y <= 37.5 + 1e-9);
+        TEST_ASSERT_GREATER_OR_EQUAL(0.508 - 1e-9, seg(&plan, i));
+    }
+    qc_plan_free(&ctx, &plan);
+    qc_path_free(&ctx, &path);
+}
+
+static void plan_should_clip_to_region(void)
+{
+    qc_region reg = {0};
+    qc_vec2 sq[4] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan;
+    size_t i, jumps = 0;
+
+    memset(&sp, 0, sizeof sp);
+    sp.clip = 1;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &reg, sq, 4));
+    /* a zigzag leaving the square twice through the right edge */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(5, 1)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(15, 3)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(5, 5)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(15, 7)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(5, 9)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, &reg, &sp, &plan));
+    for (i = 0; i < plan.n; i++) {
+        TEST_ASSERT_TRUE(qc_region_contains(&reg, plan.p[i]));
+        jumps += (plan.flags[i] & QC_ST_JUMP) != 0;
+    }
+    TEST_ASSERT_EQUAL_size_t(3, jumps);
+    TEST_ASSERT_EQUAL_size_t(7, plan.n);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 10.0, plan.p[1].x); /* cut on the edge */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, plan.p[1].y);
+    qc_plan_free(&ctx, &plan);
+    /* all outside: nothing to sew */
+    qc_region_translate(&reg, 100, 100);
+    TEST_ASSERT_EQUAL_INT(QC_EEMPTY, qc_stitch_plan(&ctx, &path, &reg, &sp, &plan));
+    TEST_ASSERT_EQUAL_size_t(0, plan.n);
+    qc_region_free(&ctx, &reg);
+    qc_path_free(&ctx, &path);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void plan_should_reject_bad_params_and_survive_oom(void)
+{
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan;
+    size_t k, base;
+    int rc = QC_ENOMEM;
+
+    TEST_ASSERT_EQUAL_INT(QC_EEMPTY, qc_stitch_plan(&ctx, &path, NULL, NULL, &plan));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &path, v2(0, 50), v2(50, 50), v2(50, 0)));
+    memset(&sp, 0, sizeof sp);
+    sp.tolerance = -1;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    TEST_ASSERT_TRUE(strstr(qc_errmsg(&ctx), "-1") != NULL);
+    sp.tolerance = 0;
+    sp.max_segment = 0.2; /* below the default minimum */
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    sp.max_segment = 2;
+    sp.tie_stitches = -2;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    sp.tie_stitches = 2;
+    base = ta.live_blocks; /* the path */
+    for (k = 1; rc == QC_ENOMEM && k < 200; k++) {
+        ta.fail_at = ta.allocs + k;
+        rc = qc_stitch_plan(&ctx, &path, NULL, &sp, &plan);
+        if (rc == QC_ENOMEM)
+            TEST_ASSERT_EQUAL_size_t(0, plan.n);
+        qc_plan_free(&ctx, &plan);
+        TEST_ASSERT_EQUAL_size_t(base, ta.live_blocks);
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    TEST_ASSERT_FALSE(ta.size_mismatch);
+    qc_path_free(&ctx, &path);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(plan_should_merge_short_and_split_long_segments);
+    RUN_TEST(plan_should_add_jumps_and_tie_offs_per_piece);
+    RUN_TEST(plan_should_flatten_curves_within_tolerance);
+    RUN_TEST(plan_should_clip_to_region);
+    RUN_TEST(plan_should_reject_bad_params_and_survive_oom);
+    return UNITY_END();
+}
