@@ -16,23 +16,29 @@ extern "C" {
 /* Receives encoded bytes; returns 0 on success, non-zero to abort (QC_EIO). */
 typedef int (*qc_write_fn)(void *ud, const void *data, size_t len);
 
+/*
+ * Every format is y up, absolute coordinates, each rounded on its own from
+ * the plan's mm (round half away from zero; no drift). Piece starts
+ * (QC_ST_JUMP) are travel moves where the format has them.
+ */
 typedef enum qc_format {
-    QC_FORMAT_PAT = 1, /* Innova AutoPilot */
-    QC_FORMAT_QLI,     /* Gammill Statler Stitcher */
-    QC_FORMAT_DXF,     /* R12 ASCII polylines */
-    QC_FORMAT_HPGL,    /* .plt */
-    QC_FORMAT_QCC,     /* QuiltEZ */
-    QC_FORMAT_IQP,     /* IntelliQuilter */
-    QC_FORMAT_BQM,     /* Bernina Q-matic */
-    QC_FORMAT_GCODE,   /* .gcode / .nc */
-    QC_FORMAT_SVG,
+    QC_FORMAT_PAT = 1, /* Innova AutoPilot: N1G00X1.000Y9.008 CRLF, in, 3 decimals, N<k>M02 */
+    QC_FORMAT_QLI,     /* Gammill Statler Stitcher: Galil VP x,y in 0.001 in, NO NEEDLE OFF/ON */
+    QC_FORMAT_DXF,     /* R12 ASCII, one POLYLINE per piece, mm ($INSUNITS 4) */
+    QC_FORMAT_HPGL,    /* .plt: IN; SP1; PU x,y; PD x,y; in 0.025 mm units */
+    QC_FORMAT_QCC,     /* QuiltEZ: "c s", "p X%.4f Y%.4f" in inches (no jumps) */
+    QC_FORMAT_IQP,     /* IntelliQuilter StitchV2: float32 inches, a record per piece */
+    QC_FORMAT_BQM,     /* Bernina Q-matic: N10G00X...Y... in, 4 decimals, M02 */
+    QC_FORMAT_GCODE,   /* .gcode / .nc: G21 G90, G0 jumps, G1 F<feed>, mm, 3 decimals */
+    QC_FORMAT_SVG,     /* preview: mm or in, layers "region" and "path", jumps dashed */
     QC_FORMAT_COUNT
 } qc_format;
 
-/* "pat", ".pat", "PAT", "plt", "hpgl", "gcode", "nc", ... -> format; -1 if unknown. */
+/* "pat", ".pat", "PAT", "x.pat", "plt", "hpgl", "gcode", "nc", ... -> format
+ * (case-insensitive, the text after the last '.'); -1 if unknown or NULL. */
 int qc_format_from_name(const char *name);
-const char *qc_format_name(int format); /* "pat" */
-const char *qc_format_ext(int format);  /* ".pat" */
+const char *qc_format_name(int format); /* "pat"; NULL if unknown */
+const char *qc_format_ext(int format);  /* ".pat"; NULL if unknown */
 
 typedef struct qc_io_opts {
     const qc_region *region; /* SVG: drawn under the path; may be NULL */
@@ -40,13 +46,21 @@ typedef struct qc_io_opts {
     double feed_mm_min;      /* G-code feed rate; 0 = 1500 */
 } qc_io_opts;
 
-/* Encodes plan as format through write(ud, ...). opts may be NULL.
- * Errors: QC_EINVAL (unknown format), QC_EEMPTY (empty plan), QC_ERANGE (a
- * coordinate the format cannot hold), QC_EIO (write returned non-zero). */
+/* Encodes plan as format through write(ud, ...), buffered (8 KiB chunks).
+ * opts may be NULL. Nothing is written when the plan is refused. PAT drops
+ * points that round onto the previous line's position and refuses negative
+ * coordinates (move the pattern so its bounding box starts at (0, 0)).
+ * Errors: QC_EINVAL (unknown format, NULL plan or write), QC_EEMPTY (empty
+ * plan), QC_ERANGE (NaN/inf, beyond 1e6 mm, negative for PAT, bad feed),
+ * QC_ELIMIT, QC_EIO (write returned non-zero; output is then truncated). */
 int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
                 const qc_io_opts *opts, qc_write_fn write, void *ud);
 
-/* Reads a .pat into *out (zeroed first); QC_EFORMAT names the line. */
+/* Reads a .pat into *out (zeroed first), strictly: lines numbered from N1,
+ * G00/G01 with X and Y of exactly 3 decimals (inches -> mm), CRLF or LF,
+ * N<k>M02 last with nothing after it. G00 points get QC_ST_JUMP (p[0]
+ * always). Errors: QC_EFORMAT (the message names the line), QC_EEMPTY (no
+ * point), QC_EINVAL, QC_ENOMEM; *out is then empty. */
 int qc_io_read_pat(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out);
 
 typedef struct qc_svg_opts {

@@ -1,0 +1,60 @@
+/*
+ * Internals of io/: a buffered writer over qc_write_fn with hand-written
+ * integer and fixed-point formatting (no printf: fast and the same bytes on
+ * every platform), rounding to machine units, and the per-format encoders.
+ */
+#ifndef QC_IO_INTERNAL_H
+#define QC_IO_INTERNAL_H
+
+#include "internal.h"
+
+#define QC__OUT_BUF 8192
+
+typedef struct qc__out {
+    qc_ctx *ctx;
+    qc_write_fn write;
+    void *ud;
+    int status;       /* first failure; later calls do nothing */
+    size_t n;         /* bytes pending in buf */
+    uint64_t total;   /* bytes accepted so far */
+    char buf[QC__OUT_BUF];
+} qc__out;
+
+QC__HIDDEN void qc__out_init(qc__out *o, qc_ctx *ctx, qc_write_fn write, void *ud);
+QC__HIDDEN void qc__out_bytes(qc__out *o, const void *data, size_t len);
+QC__HIDDEN void qc__out_str(qc__out *o, const char *s);
+QC__HIDDEN void qc__out_char(qc__out *o, char c);
+/* Decimal integer, '-' when negative. */
+QC__HIDDEN void qc__out_int(qc__out *o, int64_t v);
+/* v / 10^decimals with exactly decimals digits after the point ("-1.250",
+ * "0.005"); decimals 0..9. trim != 0 drops trailing zeros and a bare point
+ * ("-1.25", "3"), and "-0" becomes "0". */
+QC__HIDDEN void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim);
+/* Flushes; returns QC_OK or the first failure (QC_EIO from the callback). */
+QC__HIDDEN int qc__out_finish(qc__out *o);
+
+/* Rounds half away from zero: floor(x + 0.5) for x >= 0, mirrored below. */
+QC__HIDDEN int64_t qc__round(double x);
+
+/* The unit conversions every encoder shares, rounding each absolute
+ * coordinate on its own (no accumulated error). */
+#define QC__MM_PER_IN 25.4
+QC__HIDDEN int64_t qc__mm_to_units(double mm, double units_per_mm);
+QC__HIDDEN int64_t qc__mm_to_inch_units(double mm, double units_per_inch);
+
+/* Encoders, one per file: plan already checked (n > 0, coordinates finite,
+ * within 1e6 mm). Each returns QC_OK or a format-specific error; the bytes
+ * go to o, whose failure qc_io_write reports. */
+typedef int (*qc__writer_fn)(qc_ctx *ctx, const qc_plan *plan,
+                             const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_pat(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_qli(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_dxf(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_hpgl(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_qcc(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_iqp(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_bqm(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_gcode(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+QC__HIDDEN int qc__write_svg(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
+
+#endif

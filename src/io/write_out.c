@@ -1,0 +1,132 @@
+/* The buffered writer and number formatting shared by every encoder. */
+#include <math.h>
+#include <string.h>
+
+#include "io_internal.h"
+
+void qc__out_init(qc__out *o, qc_ctx *ctx, qc_write_fn write, void *ud)
+{
+    o->ctx = ctx;
+    o->write = write;
+    o->ud = ud;
+    o->status = QC_OK;
+    o->n = 0;
+    o->total = 0;
+}
+
+static void flush(qc__out *o)
+{
+    if (o->status == QC_OK && o->n > 0 && o->write(o->ud, o->buf, o->n) != 0)
+        o->status = qc__fail(o->ctx, QC_EIO,
+                             "write callback failed after %llu bytes",
+                             (unsigned long long)o->total);
+    if (o->status == QC_OK)
+        o->total += o->n;
+    o->n = 0;
+}
+
+void qc__out_bytes(qc__out *o, const void *data, size_t len)
+{
+    const char *p = (const char *)data;
+
+    while (len > 0 && o->status == QC_OK) {
+        size_t k = QC__OUT_BUF - o->n;
+
+        if (k == 0) {
+            flush(o);
+            continue;
+        }
+        if (k > len)
+            k = len;
+        memcpy(o->buf + o->n, p, k);
+        o->n += k;
+        p += k;
+        len -= k;
+    }
+}
+
+void qc__out_str(qc__out *o, const char *s)
+{
+    qc__out_bytes(o, s, strlen(s));
+}
+
+void qc__out_char(qc__out *o, char c)
+{
+    if (o->n == QC__OUT_BUF)
+        flush(o);
+    if (o->status == QC_OK)
+        o->buf[o->n++] = c;
+}
+
+/* Digits of v (>= 0) right-aligned in end[-k..0); at least min_digits. */
+static char *digits(char *end, uint64_t v, int min_digits)
+{
+    int k = 0;
+
+    do {
+        *--end = (char)('0' + v % 10);
+        v /= 10;
+        k++;
+    } while (v != 0 || k < min_digits);
+    return end;
+}
+
+void qc__out_int(qc__out *o, int64_t v)
+{
+    char tmp[24], *end = tmp + sizeof tmp, *s;
+    uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+
+    s = digits(end, u, 1);
+    if (v < 0)
+        *--s = '-';
+    qc__out_bytes(o, s, (size_t)(end - s));
+}
+
+void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim)
+{
+    static const uint64_t pow10[10] = {1, 10, 100, 1000, 10000, 100000,
+                                       1000000, 10000000, 100000000,
+                                       1000000000};
+    char tmp[40], *end = tmp + sizeof tmp, *s;
+    uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+    uint64_t ip = u / pow10[decimals], fp = u % pow10[decimals];
+    int neg = v < 0;
+
+    s = end;
+    if (decimals > 0) {
+        s = digits(end, fp, decimals);
+        if (trim) {
+            while (end > s && end[-1] == '0')
+                end--;
+        }
+        if (end > s)
+            *--s = '.';
+        else
+            s = end;
+    }
+    s = digits(s, ip, 1);
+    if (neg && !(trim && u == 0))
+        *--s = '-';
+    qc__out_bytes(o, s, (size_t)(end - s));
+}
+
+int qc__out_finish(qc__out *o)
+{
+    flush(o);
+    return o->status;
+}
+
+int64_t qc__round(double x)
+{
+    return x >= 0 ? (int64_t)floor(x + 0.5) : -(int64_t)floor(-x + 0.5);
+}
+
+int64_t qc__mm_to_units(double mm, double units_per_mm)
+{
+    return qc__round(mm * units_per_mm);
+}
+
+int64_t qc__mm_to_inch_units(double mm, double units_per_inch)
+{
+    return qc__round(mm / QC__MM_PER_IN * units_per_inch);
+}
