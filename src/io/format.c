@@ -4,29 +4,38 @@
 
 #include "io_internal.h"
 
-typedef struct format_info {
-    const char *name, *ext;
-    const char *aliases; /* space-separated, lower case */
-    qc__writer_fn write;
-} format_info;
+/* Plain char arrays, not pointers: the tables need no relocation and stay
+ * in read-only memory (make lint). */
+static const char names[QC_FORMAT_COUNT][8] = {
+    "", "pat", "qli", "dxf", "hpgl", "qcc", "iqp", "bqm", "gcode", "svg"};
+static const char exts[QC_FORMAT_COUNT][8] = {
+    "", ".pat", ".qli", ".dxf", ".plt", ".qcc", ".iqp", ".bqm", ".gcode", ".svg"};
+/* space-separated, lower case */
+static const char aliases[QC_FORMAT_COUNT][20] = {
+    "", "pat", "qli", "dxf", "hpgl plt hpg hgl", "qcc", "iqp", "bqm",
+    "gcode nc ngc g", "svg"};
 
-static const format_info formats[QC_FORMAT_COUNT] = {
-    {NULL, NULL, "", NULL},
-    {"pat", ".pat", "pat", qc__write_pat},
-    {"qli", ".qli", "qli", qc__write_qli},
-    {"dxf", ".dxf", "dxf", qc__write_dxf},
-    {"hpgl", ".plt", "hpgl plt hpg hgl", qc__write_hpgl},
-    {"qcc", ".qcc", "qcc", qc__write_qcc},
-    {"iqp", ".iqp", "iqp", qc__write_iqp},
-    {"bqm", ".bqm", "bqm", qc__write_bqm},
-    {"gcode", ".gcode", "gcode nc ngc g", qc__write_gcode},
-    {"svg", ".svg", "svg", qc__write_svg},
-};
+static int dispatch(qc_ctx *ctx, int format, const qc_plan *plan,
+                    const qc_io_opts *opts, qc__out *o)
+{
+    switch (format) {
+    case QC_FORMAT_PAT: return qc__write_pat(ctx, plan, opts, o);
+    case QC_FORMAT_QLI: return qc__write_qli(ctx, plan, opts, o);
+    case QC_FORMAT_DXF: return qc__write_dxf(ctx, plan, opts, o);
+    case QC_FORMAT_HPGL: return qc__write_hpgl(ctx, plan, opts, o);
+    case QC_FORMAT_QCC: return qc__write_qcc(ctx, plan, opts, o);
+    case QC_FORMAT_IQP: return qc__write_iqp(ctx, plan, opts, o);
+    case QC_FORMAT_BQM: return qc__write_bqm(ctx, plan, opts, o);
+    case QC_FORMAT_GCODE: return qc__write_gcode(ctx, plan, opts, o);
+    case QC_FORMAT_SVG: return qc__write_svg(ctx, plan, opts, o);
+    default: return qc__fail(ctx, QC_EINVAL, "unknown output format %d", format);
+    }
+}
 
 /* Whether word (len bytes, any case) is one of the space-separated aliases. */
-static int alias_match(const char *aliases, const char *word, size_t len)
+static int alias_match(const char *list, const char *word, size_t len)
 {
-    const char *a = aliases;
+    const char *a = list;
 
     while (*a != '\0') {
         size_t k = strcspn(a, " "), i;
@@ -60,19 +69,19 @@ int qc_format_from_name(const char *name)
     if (dot != NULL)
         name = dot + 1;
     for (f = 1; f < QC_FORMAT_COUNT; f++)
-        if (alias_match(formats[f].aliases, name, strlen(name)))
+        if (alias_match(aliases[f], name, strlen(name)))
             return f;
     return -1;
 }
 
 const char *qc_format_name(int format)
 {
-    return format > 0 && format < QC_FORMAT_COUNT ? formats[format].name : NULL;
+    return format > 0 && format < QC_FORMAT_COUNT ? names[format] : NULL;
 }
 
 const char *qc_format_ext(int format)
 {
-    return format > 0 && format < QC_FORMAT_COUNT ? formats[format].ext : NULL;
+    return format > 0 && format < QC_FORMAT_COUNT ? exts[format] : NULL;
 }
 
 int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
@@ -90,19 +99,19 @@ int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
                         write == NULL ? "write callback" : "plan");
     if (plan->n == 0)
         return qc__fail(ctx, QC_EEMPTY, "%s: the plan has no point",
-                        formats[format].name);
+                        names[format]);
     for (i = 0; i < plan->n; i++)
         if (!(fabs(plan->p[i].x) <= 1e6 && fabs(plan->p[i].y) <= 1e6))
             return qc__fail(ctx, QC_ERANGE,
                             "%s: point %lu (%g, %g) mm is not finite or beyond 1e6 mm",
-                            formats[format].name, (unsigned long)i,
+                            names[format], (unsigned long)i,
                             plan->p[i].x, plan->p[i].y);
     if (opts == NULL) {
         memset(&zero, 0, sizeof zero);
         opts = &zero;
     }
     qc__out_init(&o, ctx, write, ud);
-    rc = formats[format].write(ctx, plan, opts, &o);
+    rc = dispatch(ctx, format, plan, opts, &o);
     if (rc < 0)
         return rc;
     return qc__out_finish(&o);

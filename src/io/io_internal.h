@@ -45,8 +45,6 @@ QC__HIDDEN int64_t qc__mm_to_inch_units(double mm, double units_per_inch);
 /* Encoders, one per file: plan already checked (n > 0, coordinates finite,
  * within 1e6 mm). Each returns QC_OK or a format-specific error; the bytes
  * go to o, whose failure qc_io_write reports. */
-typedef int (*qc__writer_fn)(qc_ctx *ctx, const qc_plan *plan,
-                             const qc_io_opts *opts, qc__out *o);
 QC__HIDDEN int qc__write_pat(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
 QC__HIDDEN int qc__write_qli(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
 QC__HIDDEN int qc__write_dxf(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts, qc__out *o);
