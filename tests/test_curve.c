@@ -264,6 +264,9 @@ static void flatten_should_split_pieces_and_measure(void)
     TEST_ASSERT_EQUAL_DOUBLE(12.0, box.max.y);
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, 0, &out, &ends));
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, NAN, &out, &ends));
+    p.pt[1].y = NAN;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, 0.1, &out, &ends));
+    TEST_ASSERT_EQUAL_size_t(4, out.n); /* nothing appended */
     qc_path_free(&ctx, &p);
     qc_points_free(&ctx, &out);
     qc_order_free(&ctx, &ends);

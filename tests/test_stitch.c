@@ -206,6 +206,34 @@ static void plan_should_reject_bad_params_and_survive_oom(void)
         TEST_ASSERT_EQUAL_size_t(base, ta.live_blocks);
     }
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    ta.fail_at = 0;
+    qc_plan_free(&ctx, &plan);
+    /* the clipping path too: a region cutting the arch in two */
+    {
+        qc_region reg = {0};
+        qc_vec2 band[4] = {{-1, -1}, {51, -1}, {51, 20}, {-1, 20}};
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &reg, band, 4));
+        sp.clip = 1;
+        base = ta.live_blocks;
+        rc = QC_ENOMEM;
+        for (k = 1; rc == QC_ENOMEM && k < 200; k++) {
+            ta.fail_at = ta.allocs + k;
+            rc = qc_stitch_plan(&ctx, &path, &reg, &sp, &plan);
+            if (rc == QC_ENOMEM)
+                TEST_ASSERT_EQUAL_size_t(0, plan.n);
+            qc_plan_free(&ctx, &plan);
+            TEST_ASSERT_EQUAL_size_t(base, ta.live_blocks);
+        }
+        TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+        ta.fail_at = 0;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, &reg, &sp, &plan));
+        for (k = 0, rc = 0; k < plan.n; k++)
+            rc += (plan.flags[k] & QC_ST_JUMP) != 0;
+        TEST_ASSERT_EQUAL_INT(2, rc); /* two legs of the arch */
+        qc_plan_free(&ctx, &plan);
+        qc_region_free(&ctx, &reg);
+    }
     TEST_ASSERT_FALSE(ta.size_mismatch);
     qc_path_free(&ctx, &path);
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);

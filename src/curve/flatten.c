@@ -6,6 +6,11 @@
 /* Depth bound: 2^20 chords per cubic at most, whatever the input. */
 #define FLAT_MAX_DEPTH 20
 
+static int finite(qc_vec2 p)
+{
+    return fabs(p.x) <= 1e300 && fabs(p.y) <= 1e300;
+}
+
 static double seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
 {
     double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
@@ -103,7 +108,10 @@ int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
             q[1] = path->pt[k];
             q[2] = path->pt[k + 1];
             q[3] = path->pt[k + 2];
-            rc = flatten_cubic(q, tol2, fn, ud);
+            if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3]))
+                rc = flatten_cubic(q, tol2, fn, ud);
+            else /* NaN would subdivide to the depth bound for nothing */
+                rc = fn(ud, q[3], 0);
             cur = q[3];
             k += 3;
         } else {
@@ -139,10 +147,15 @@ int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
                      qc_points *out, qc_order *piece_end)
 {
     flat_out o;
+    size_t i;
 
     if (!(tol > 0) || tol > 1e6)
         return qc__fail(ctx, QC_ERANGE,
                         "flattening tolerance %g mm must be > 0", tol);
+    for (i = 0; i < path->npt; i++)
+        if (!finite(path->pt[i]))
+            return qc__fail(ctx, QC_ERANGE, "path point %lu (%g, %g) is not finite",
+                            (unsigned long)i, path->pt[i].x, path->pt[i].y);
     o.ctx = ctx;
     o.pts = out;
     o.ends = piece_end;
