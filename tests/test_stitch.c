@@ -174,6 +174,51 @@ static void plan_should_clip_to_region(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+static void clip_should_keep_exactly_the_inside_length(void)
+{
+    qc_region reg = {0};
+    qc_vec2 outer[5] = {{0, 0}, {100, 0}, {100, 60}, {50, 100}, {0, 60}};
+    qc_vec2 hole[4] = {{30, 30}, {30, 50}, {70, 50}, {70, 30}}; /* clockwise */
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan;
+    qc_rng rng;
+    double inside_len = 0, sewn = 0;
+    size_t i;
+    int k, s;
+
+    memset(&sp, 0, sizeof sp);
+    sp.clip = 1;
+    sp.min_segment = -1;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &reg, outer, 5));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &reg, hole, 4));
+    qc_rng_seed(&rng, 3);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(-10, -10)));
+    for (k = 0; k < 60; k++) {
+        qc_vec2 a = qc_path_last(&path), b = v2(qc_rng_unit(&rng) * 130 - 15, qc_rng_unit(&rng) * 130 - 15);
+        /* brute force: the inside share of the segment by dense sampling */
+        for (s = 0; s < 4000; s++) {
+            double t = (s + 0.5) / 4000;
+            if (qc_region_contains(&reg, v2(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t)))
+                inside_len += hypot(b.x - a.x, b.y - a.y) / 4000;
+        }
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, b));
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, &reg, &sp, &plan));
+    for (i = 1; i < plan.n; i++) {
+        qc_vec2 m = v2(0.5 * (plan.p[i].x + plan.p[i - 1].x), 0.5 * (plan.p[i].y + plan.p[i - 1].y));
+        if (plan.flags[i] & QC_ST_JUMP)
+            continue;
+        TEST_ASSERT_TRUE(qc_region_contains(&reg, m));
+        sewn += seg(&plan, i);
+    }
+    TEST_ASSERT_DOUBLE_WITHIN(0.002 * inside_len, inside_len, sewn);
+    qc_plan_free(&ctx, &plan);
+    qc_path_free(&ctx, &path);
+    qc_region_free(&ctx, &reg);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 static void plan_should_reject_bad_params_and_survive_oom(void)
 {
     qc_path path = {0};
@@ -246,6 +291,7 @@ int main(void)
     RUN_TEST(plan_should_add_jumps_and_tie_offs_per_piece);
     RUN_TEST(plan_should_flatten_curves_within_tolerance);
     RUN_TEST(plan_should_clip_to_region);
+    RUN_TEST(clip_should_keep_exactly_the_inside_length);
     RUN_TEST(plan_should_reject_bad_params_and_survive_oom);
     return UNITY_END();
 }
