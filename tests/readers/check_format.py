@@ -143,10 +143,16 @@ def check_plt_pystitch(d, plan):
 def check_plt_hp2xx(d, plan):
     import ezdxf
     out = os.path.join(d, "hp2xx-sample.dxf")
-    r = subprocess.run(["hp2xx", "-q", "-t", "-m", "dxf", "-f", out,
-                        os.path.join(d, "sample.plt")], capture_output=True, text=True)
+    r = subprocess.run(["hp2xx", "-t", "-m", "dxf", "-f", out,
+                        os.path.join(d, "sample.plt")], capture_output=True, text=True,
+                       stdin=subprocess.DEVNULL)
     if r.returncode != 0 or not os.path.exists(out):
         raise Mismatch("plt: hp2xx failed (%d): %s" % (r.returncode, r.stderr.strip()[:200]))
+    log = r.stdout + r.stderr
+    for what in (r"command\(s\) ignored:\s*(\d+)", r"Unexpected event\(s\):\s*(\d+)", r"(\S+): ignored"):
+        m = re.search(what, log)
+        if m and m.group(1) != "0":
+            raise Mismatch("plt: hp2xx reports %r" % m.group(0))
     lines = list(ezdxf.readfile(out).modelspace().query("LINE"))
     segs = []
     for p in pieces(plan):
