@@ -345,6 +345,52 @@ static void read_pat_should_fail_cleanly_out_of_memory(void)
     free(m.p);
 }
 
+static void read_pat_should_survive_mutated_input(void)
+{
+    qc_plan plan, back;
+    qc_rng rng;
+    membuf m;
+    char *buf;
+    int iter, ok = 0;
+
+    golden_plan(&plan);
+    encode(QC_FORMAT_PAT, &plan, NULL, &m);
+    buf = (char *)malloc(m.n);
+    TEST_ASSERT_NOT_NULL(buf);
+    qc_rng_seed(&rng, 99);
+    for (iter = 0; iter < 3000; iter++) {
+        size_t len = m.n, k, nmut = 1 + (size_t)qc_rng_below(&rng, 3);
+        int rc;
+
+        memcpy(buf, m.p, m.n);
+        for (k = 0; k < nmut; k++) {
+            size_t at = (size_t)qc_rng_below(&rng, len);
+            static const char alphabet[] = "0123456789.-NGXYM\r\n ";
+            switch (qc_rng_below(&rng, 3)) {
+            case 0: buf[at] = alphabet[qc_rng_below(&rng, sizeof alphabet - 1)]; break;
+            case 1: len = at; break; /* truncate */
+            default: buf[at] = (char)qc_rng_below(&rng, 256); break;
+            }
+            if (len == 0)
+                break;
+        }
+        rc = qc_io_read_pat(&ctx, buf, len, &back);
+        TEST_ASSERT_TRUE(rc == QC_OK || rc == QC_EFORMAT || rc == QC_EEMPTY);
+        if (rc == QC_OK) {
+            ok++;
+            TEST_ASSERT_TRUE(back.n > 0 && (back.flags[0] & QC_ST_JUMP));
+        } else {
+            TEST_ASSERT_EQUAL_size_t(0, back.n);
+        }
+        qc_plan_free(&ctx, &back);
+    }
+    TEST_ASSERT_GREATER_THAN(0, ok); /* some mutations stay valid (digit swaps) */
+    TEST_ASSERT_EQUAL_size_t(2, ta.live_blocks); /* only the plan's */
+    free(buf);
+    free(m.p);
+    qc_plan_free(&ctx, &plan);
+}
+
 static void svg_should_match_golden_bytes_in_mm_and_inches(void)
 {
     qc_region reg = {0};
@@ -473,6 +519,7 @@ int main(void)
     RUN_TEST(pat_should_round_trip_within_half_a_thousandth);
     RUN_TEST(read_pat_should_accept_lf_and_reject_malformed_lines);
     RUN_TEST(read_pat_should_fail_cleanly_out_of_memory);
+    RUN_TEST(read_pat_should_survive_mutated_input);
     RUN_TEST(svg_should_match_golden_bytes_in_mm_and_inches);
     RUN_TEST(other_formats_should_match_golden_bytes);
     RUN_TEST(format_names_should_round_trip);
