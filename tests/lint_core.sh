@@ -4,7 +4,9 @@
 # transcendental (their results differ across platforms; see src/core/qmath.c).
 lib=${1:-build/libquiltc.a}
 status=0
-globals=$(nm -A "$lib" 2>/dev/null | awk '$(NF-1) ~ /^[bBdDcC]$/ {print}')
+# objdump names each symbol's section: writable data is .data*, .bss*, COMMON;
+# .data.rel.ro holds const tables of pointers (read-only after relocation).
+globals=$(objdump -t "$lib" 2>/dev/null | grep -E ' O (\.data|\.bss|\*COM\*)' | grep -v -E ' O \.data\.rel\.ro')
 if [ -n "$globals" ]; then
     echo "lint: mutable globals in the core:"
     echo "$globals"

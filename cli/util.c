@@ -1,0 +1,226 @@
+/* CLI helpers: errors, whole-file reads, atomic writes, strict numbers, regions. */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+
+    fputs("quiltc: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+int cli_fail(const qc_ctx *ctx, const char *what, int status)
+{
+    const char *msg = qc_errmsg(ctx);
+
+    cli_error("%s: %s", what, msg[0] != '\0' ? msg : qc_strerror(status));
+    return status == QC_ERANGE || status == QC_EINVAL ? CLI_USAGE : CLI_RUNTIME;
+}
+
+int cli_read_file(const char *path, size_t max, char **buf, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *b = NULL;
+    size_t n = 0, cap = 0;
+
+    if (f == NULL) {
+        cli_error("cannot open '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    for (;;) {
+        size_t got;
+
+        if (n + 1 >= cap) {
+            char *nb;
+
+            cap = cap ? cap * 2 : 65536;
+            nb = realloc(b, cap);
+            if (nb == NULL) {
+                cli_error("out of memory reading '%s'", path);
+                goto fail;
+            }
+            b = nb;
+        }
+        got = fread(b + n, 1, cap - n - 1, f);
+        n += got;
+        if (n > max) {
+            cli_error("'%s' is larger than %lu bytes", path, (unsigned long)max);
+            goto fail;
+        }
+        if (got == 0)
+            break;
+    }
+    if (ferror(f)) {
+        cli_error("cannot read '%s': %s", path, strerror(errno));
+        goto fail;
+    }
+    fclose(f);
+    b[n] = '\0';
+    *buf = b;
+    *len = n;
+    return 0;
+fail:
+    free(b);
+    fclose(f);
+    return -1;
+}
+
+int cli_output_open(cli_output *out, const char *path)
+{
+    memset(out, 0, sizeof *out);
+    if (strcmp(path, "-") == 0) {
+        out->f = stdout;
+        return 0;
+    }
+    out->path = malloc(strlen(path) + 1);
+    out->tmp = malloc(strlen(path) + 16);
+    if (out->path == NULL || out->tmp == NULL) {
+        cli_error("out of memory");
+        cli_output_abort(out);
+        return -1;
+    }
+    strcpy(out->path, path);
+    sprintf(out->tmp, "%s.tmp.%ld", path, (long)getpid());
+    out->f = fopen(out->tmp, "wb");
+    if (out->f == NULL) {
+        cli_error("cannot write '%s': %s", path, strerror(errno));
+        cli_output_abort(out);
+        return -1;
+    }
+    return 0;
+}
+
+int cli_output_write(void *ud, const void *data, size_t len)
+{
+    cli_output *out = ud;
+
+    if (out->failed || fwrite(data, 1, len, out->f) != len) {
+        out->failed = 1;
+        return -1;
+    }
+    return 0;
+}
+
+void cli_output_abort(cli_output *out)
+{
+    if (out->f != NULL && out->f != stdout)
+        fclose(out->f);
+    if (out->tmp != NULL)
+        remove(out->tmp);
+    free(out->path);
+    free(out->tmp);
+    memset(out, 0, sizeof *out);
+}
+
+int cli_output_commit(cli_output *out)
+{
+    const char *name = out->path != NULL ? out->path : "stdout";
+    int err = out->failed || fflush(out->f) != 0;
+
+    if (out->f == stdout) {
+        if (err)
+            cli_error("cannot write to stdout: %s", strerror(errno));
+        memset(out, 0, sizeof *out);
+        return err ? -1 : 0;
+    }
+    if (!err && fsync(fileno(out->f)) != 0 && errno != EINVAL)
+        err = 1;
+    if (fclose(out->f) != 0)
+        err = 1;
+    out->f = NULL;
+    if (!err && rename(out->tmp, out->path) != 0)
+        err = 1;
+    if (err) {
+        cli_error("cannot write '%s': %s", name, strerror(errno ? errno : EIO));
+        cli_output_abort(out);
+        return -1;
+    }
+    free(out->path);
+    free(out->tmp);
+    memset(out, 0, sizeof *out);
+    return 0;
+}
+
+int cli_parse_double(const char *s, double *out)
+{
+    char *end;
+    double v;
+
+    if (s == NULL || *s == '\0')
+        return -1;
+    errno = 0;
+    v = strtod(s, &end);
+    if (*end != '\0' || errno == ERANGE || !isfinite(v))
+        return -1;
+    /* strtod also takes "nan", "inf" and hex floats: only plain decimals here */
+    if (strpbrk(s, "nNiIxXpP") != NULL)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int cli_parse_u64(const char *s, unsigned long long *out)
+{
+    char *end;
+    unsigned long long v;
+
+    if (s == NULL || *s < '0' || *s > '9')
+        return -1;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (*end != '\0' || errno == ERANGE)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+double cli_units_mm(const char *units)
+{
+    if (strcmp(units, "in") == 0)
+        return 25.4;
+    if (strcmp(units, "mm") == 0)
+        return 1.0;
+    if (strcmp(units, "cm") == 0)
+        return 10.0;
+    return 0.0;
+}
+
+double cli_now_ms(void)
+{
+    struct timespec ts;
+
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec / 1e6;
+}
+
+int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
+                   const qc_io_opts *opts)
+{
+    cli_output out;
+    int rc;
+
+    if (cli_output_open(&out, path) != 0)
+        return CLI_RUNTIME;
+    rc = qc_io_write(ctx, format, plan, opts, cli_output_write, &out);
+    if (rc < 0) {
+        cli_output_abort(&out);
+        if (rc == QC_EIO)
+            cli_error("cannot write '%s': %s", path, strerror(errno ? errno : EIO));
+        else
+            cli_error("%s: %s", path, qc_errmsg(ctx));
+        return CLI_RUNTIME;
+    }
+    return cli_output_commit(&out) == 0 ? CLI_OK : CLI_RUNTIME;
+}
