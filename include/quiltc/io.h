@@ -63,6 +63,20 @@ int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
  * point), QC_EINVAL, QC_ENOMEM; *out is then empty. */
 int qc_io_read_pat(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out);
 
+/* One finding of a linter: line (1-based; 0 = whole file), a kind
+ * ("dialect", "numbering", "decimals", "line-ending") and one line of text. */
+typedef void (*qc_finding_fn)(void *ud, size_t line, const char *kind, const char *text);
+
+/*
+ * Lints a .pat against the AutoPilot dialect without stopping at the first
+ * fault: every deviation goes to report(ud, ...) (may be NULL) and is
+ * counted in *findings; the coordinates that could be read go into *out
+ * (mm; G00 points flagged QC_ST_JUMP) for geometric checks. Errors: only
+ * QC_ENOMEM; a malformed file is findings, not an error.
+ */
+int qc_io_check_pat(qc_ctx *ctx, const char *buf, size_t len, qc_finding_fn report,
+                    void *ud, qc_plan *out, size_t *findings);
+
 typedef struct qc_svg_opts {
     double tolerance;   /* curve flattening, mm; 0 = 0.05 */
     size_t max_bytes;   /* refuse larger input; 0 = 16 MiB */
