@@ -19,6 +19,8 @@ typedef struct qc_motif {
     qc_vec2 *hull;     /* convex hull of the flattened path, CCW, unit frame */
     size_t nhull;
     qc_vec2 entry, exit; /* where the motif joins the skeleton */
+    qc_vec2 entry_dir, exit_dir; /* Wanderer: unit directions of the legs,
+                          pointing outward from entry and exit; else (0, 0) */
     int legs;          /* 2 for Wanderer primitives (legs at entry and exit), else 0 */
 } qc_motif;
 
@@ -35,7 +37,13 @@ const char *qc_motif_builtin_name(size_t i);
 /* Appends the built-in motifs named in a comma-separated list to *out.
  * QC_EINVAL names an unknown motif. */
 int qc_motif_builtin(qc_ctx *ctx, const char *names, qc_motif_set *out);
-/* Appends a motif read from an SVG document (see README) named name. */
+/* Appends a motif read from an SVG document (docs/motifs.md) named name:
+ * every shape as one path (qc_io_read_svg_path); its start point is the
+ * attachment; a path that does not return to its start is a Wanderer
+ * primitive whose first and last segments are the legs (not sewn).
+ * Families scale a motif so its bounding circle's diameter is the size s.
+ * Errors: those of the SVG reader, QC_EDEGENERATE (empty or a single point),
+ * QC_ENOMEM. */
 int qc_motif_from_svg(qc_ctx *ctx, const char *buf, size_t len,
                       const char *name, qc_motif_set *out);
 

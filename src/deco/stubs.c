@@ -15,8 +15,6 @@
                         family);                                              \
     }
 
-QC__STUB(qc_deco_branching, "branching")
-QC__STUB(qc_deco_wanderer, "wanderer")
 QC__STUB(qc_deco_pebbling, "pebbling")
 QC__STUB(qc_deco_packing, "packing")
 QC__STUB(qc_deco_fill, "fill")

@@ -1,0 +1,199 @@
+/*
+ * Collision grid: convex polygons binned into uniform cells by their box,
+ * so a query touches only its neighbourhood (linear total cost); exact
+ * answers by the separating-axis theorem.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "deco_internal.h"
+
+static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
+{
+    size_t i;
+
+    b->min = b->max = p[0];
+    for (i = 1; i < n; i++) {
+        b->min.x = fmin(b->min.x, p[i].x);
+        b->min.y = fmin(b->min.y, p[i].y);
+        b->max.x = fmax(b->max.x, p[i].x);
+        b->max.y = fmax(b->max.y, p[i].y);
+    }
+}
+
+int qc__cgrid_init(qc_ctx *ctx, qc__cgrid *g, qc_bbox box, double cell, size_t max_cells)
+{
+    double w = box.max.x - box.min.x, h = box.max.y - box.min.y;
+    double cells;
+    size_t i, n;
+
+    memset(g, 0, sizeof *g);
+    if (!(cell > 0))
+        cell = 1;
+    if (max_cells < 16)
+        max_cells = 16;
+    cells = (w / cell + 1) * (h / cell + 1);
+    if (cells > (double)max_cells)
+        cell *= sqrt(cells / (double)max_cells) * 1.01;
+    g->x0 = box.min.x;
+    g->y0 = box.min.y;
+    g->cell = cell;
+    g->nx = (uint32_t)(w / cell) + 1;
+    g->ny = (uint32_t)(h / cell) + 1;
+    n = (size_t)g->nx * g->ny;
+    g->head = qc__alloc_array(ctx, n, sizeof *g->head);
+    if (g->head == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "collision grid of %zu cells", n);
+    for (i = 0; i < n; i++)
+        g->head[i] = UINT32_MAX;
+    return QC_OK;
+}
+
+void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g)
+{
+    qc__free(ctx, g->head, (size_t)g->nx * g->ny * sizeof *g->head);
+    qc__free(ctx, g->ent, g->ent_cap * sizeof *g->ent);
+    qc__free(ctx, g->item, g->item_cap * sizeof *g->item);
+    qc__free(ctx, g->stamp, g->stamp_cap * sizeof *g->stamp);
+    qc__free(ctx, g->v, g->v_cap * sizeof *g->v);
+    memset(g, 0, sizeof *g);
+}
+
+static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
+{
+    double c[4];
+    int k;
+
+    c[0] = (b->min.x - g->x0) / g->cell;
+    c[1] = (b->min.y - g->y0) / g->cell;
+    c[2] = (b->max.x - g->x0) / g->cell;
+    c[3] = (b->max.y - g->y0) / g->cell;
+    for (k = 0; k < 4; k++) {
+        double lim = (k & 1) ? g->ny - 1 : g->nx - 1;
+        c[k] = floor(c[k]);
+        r[k] = c[k] < 0 ? 0 : c[k] > lim ? (uint32_t)lim : (uint32_t)c[k];
+    }
+}
+
+int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                  unsigned kind, uint32_t id)
+{
+    qc_bbox b;
+    uint32_t r[4], x, y;
+    if (n == 0 || n > 65535 || g->nitem >= UINT32_MAX - 1 || g->nv + n >= UINT32_MAX)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
+    if (QC__RESERVE(ctx, g->v, g->v_cap, g->nv + n) < 0)
+        return QC_ENOMEM;
+    if (QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + 1) < 0)
+        return QC_ENOMEM;
+    if (QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
+        return QC_ENOMEM;
+    poly_box(poly, n, &b);
+    cell_range(g, &b, r);
+    for (y = r[1]; y <= r[3]; y++) {
+        for (x = r[0]; x <= r[2]; x++) {
+            size_t c = (size_t)y * g->nx + x;
+            if (g->nent >= UINT32_MAX - 1)
+                return qc__fail(ctx, QC_ELIMIT, "collision grid full");
+            if (QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
+                return QC_ENOMEM;
+            g->ent[g->nent].item = (uint32_t)g->nitem;
+            g->ent[g->nent].next = g->head[c];
+            g->head[c] = (uint32_t)g->nent++;
+        }
+    }
+    memcpy(g->v + g->nv, poly, n * sizeof *poly);
+    g->item[g->nitem].off = (uint32_t)g->nv;
+    g->item[g->nitem].n = (uint16_t)n;
+    g->item[g->nitem].kind = (uint8_t)kind;
+    g->item[g->nitem].id = id;
+    g->stamp[g->nitem] = 0;
+    g->nitem++;
+    g->nv += n;
+    return QC_OK;
+}
+
+/* Projects p onto axis (ax, ay): [lo, hi]. */
+static void project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo, double *hi)
+{
+    size_t i;
+
+    *lo = *hi = p[0].x * ax + p[0].y * ay;
+    for (i = 1; i < n; i++) {
+        double d = p[i].x * ax + p[i].y * ay;
+        *lo = fmin(*lo, d);
+        *hi = fmax(*hi, d);
+    }
+}
+
+/* Whether an edge normal of a separates a from b. */
+static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    size_t i, ne = na == 2 ? 1 : na;
+
+    for (i = 0; i < ne; i++) {
+        qc_vec2 p = a[i], q = a[(i + 1) % na];
+        double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
+        double alo, ahi, blo, bhi;
+        if (len < 1e-15)
+            continue;
+        ax /= len;
+        ay /= len;
+        project(a, na, ax, ay, &alo, &ahi);
+        project(b, nb, ax, ay, &blo, &bhi);
+        if (ahi + eps < blo || bhi + eps < alo)
+            return 1;
+    }
+    return 0;
+}
+
+int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    qc_bbox ba, bb;
+
+    poly_box(a, na, &ba);
+    poly_box(b, nb, &bb);
+    if (ba.max.x + eps < bb.min.x || bb.max.x + eps < ba.min.x ||
+        ba.max.y + eps < bb.min.y || bb.max.y + eps < ba.min.y)
+        return 0;
+    if (na >= 2 && separated_by(a, na, b, nb, eps))
+        return 0;
+    if (nb >= 2 && separated_by(b, nb, a, na, eps))
+        return 0;
+    return 1;
+}
+
+int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
+                  qc__cgrid_skip skip, void *ud)
+{
+    qc_bbox b;
+    uint32_t r[4], x, y;
+
+    if (n == 0 || g->nitem == 0)
+        return 0;
+    if (++g->cur == 0) { /* the stamps wrapped: forget them */
+        memset(g->stamp, 0, g->nitem * sizeof *g->stamp);
+        g->cur = 1;
+    }
+    poly_box(poly, n, &b);
+    cell_range(g, &b, r);
+    for (y = r[1]; y <= r[3]; y++) {
+        for (x = r[0]; x <= r[2]; x++) {
+            uint32_t e = g->head[(size_t)y * g->nx + x];
+            for (; e != UINT32_MAX; e = g->ent[e].next) {
+                uint32_t it = g->ent[e].item;
+                const qc__cgrid_item *m = &g->item[it];
+                if (g->stamp[it] == g->cur)
+                    continue;
+                g->stamp[it] = g->cur;
+                if (!(kinds & (1u << m->kind)))
+                    continue;
+                if (skip != NULL && skip(ud, m->kind, m->id))
+                    continue;
+                if (qc__convex_touch(poly, n, g->v + m->off, m->n, 1e-9))
+                    return 1;
+            }
+        }
+    }
+    return 0;
+}

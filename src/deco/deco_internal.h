@@ -1,0 +1,105 @@
+/*
+ * Internals shared by the decoration families (src/deco/): motif geometry,
+ * the collision grid, affine placement. Family engineers: only ADD
+ * declarations here.
+ */
+#ifndef QC_DECO_INTERNAL_H
+#define QC_DECO_INTERNAL_H
+
+#include "internal.h"
+
+/* ---- motif geometry (motif_geom.c) ---- */
+
+/* Convex hull of pts[0..n) (Andrew's monotone chain), CCW, no collinear
+ * points, written to out (room for 2n); scratch holds 2n. Returns the count. */
+QC__HIDDEN size_t qc__convex_hull(const qc_vec2 *pts, size_t n, qc_vec2 *out,
+                                  qc_vec2 *scratch);
+/* Minimum bounding circle of pts[0..n) (Welzl, iterative, the points visited
+ * in a fixed pseudo-random order). scratch holds n points. n == 0: r = 0. */
+QC__HIDDEN void qc__min_circle(const qc_vec2 *pts, size_t n, qc_vec2 *scratch,
+                               qc_vec2 *c, double *r);
+
+/* An affine map: (x, y) -> (a x + b y + tx, c x + d y + ty). */
+typedef struct qc__xf {
+    double a, b, c, d, tx, ty;
+} qc__xf;
+
+static inline qc_vec2 qc__xf_apply(const qc__xf *f, qc_vec2 p)
+{
+    qc_vec2 q;
+    q.x = f->a * p.x + f->b * p.y + f->tx;
+    q.y = f->c * p.x + f->d * p.y + f->ty;
+    return q;
+}
+
+/* Appends path's commands mapped by f, its leading MOVE turned into a LINE
+ * (or dropped when it lands on the current point): a detour from *out. */
+QC__HIDDEN int qc__path_append_xf(qc_ctx *ctx, qc_path *out, const qc_path *path,
+                                  const qc__xf *f);
+
+/* ---- collision grid (collide.c) ---- */
+
+/* Convex polygons (2 vertices: a segment) binned in a uniform grid. */
+typedef struct qc__cgrid_item {
+    uint32_t off;   /* first vertex in v */
+    uint16_t n;     /* vertex count */
+    uint8_t kind;   /* caller's class: boundary, vine, motif, join ... */
+    uint32_t id;    /* caller's id */
+} qc__cgrid_item;
+
+typedef struct qc__cgrid_ent {
+    uint32_t item, next;
+} qc__cgrid_ent;
+
+typedef struct qc__cgrid {
+    double x0, y0, cell;
+    uint32_t nx, ny;
+    uint32_t *head;           /* nx * ny, first entry or UINT32_MAX */
+    qc__cgrid_ent *ent;
+    size_t nent, ent_cap;
+    qc__cgrid_item *item;
+    uint32_t *stamp;
+    size_t nitem, item_cap, stamp_cap;
+    qc_vec2 *v;
+    size_t nv, v_cap;
+    uint32_t cur;
+} qc__cgrid;
+
+/* Skips item (kind, id) when it returns non-zero. */
+typedef int (*qc__cgrid_skip)(void *ud, unsigned kind, uint32_t id);
+
+/* A grid over box with cells of about cell mm, at most max_cells cells. */
+QC__HIDDEN int qc__cgrid_init(qc_ctx *ctx, qc__cgrid *g, qc_bbox box, double cell,
+                              size_t max_cells);
+QC__HIDDEN void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g);
+/* Adds a convex polygon (n >= 1, CCW when n >= 3). */
+QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                             unsigned kind, uint32_t id);
+/* 1 if poly touches an item whose kind bit is in kinds and that skip does
+ * not exclude (skip may be NULL), else 0. */
+QC__HIDDEN int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                             unsigned kinds, qc__cgrid_skip skip, void *ud);
+/* Separating-axis test of two convex polygons (1 or 2 vertices allowed);
+ * 1 if they touch or overlap (within eps mm). */
+QC__HIDDEN int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b,
+                                size_t nb, double eps);
+
+/* ---- inspection (tests) ---- */
+
+/* What branching placed: per motif its attachment point and its collision
+ * hulls in mm (full: against motifs and boundary; body: against the vine). */
+typedef struct qc__placement {
+    qc_points full, body;  /* hull vertices, ring after ring */
+    qc_order full_end, body_end; /* one past each hull's last vertex */
+    qc_points attach;
+    qc_points vine;        /* the vine, flattened as tested */
+} qc__placement;
+
+QC__HIDDEN void qc__placement_free(qc_ctx *ctx, qc__placement *pl);
+/* qc_deco_branching that also records its placements into *pl (may be NULL). */
+QC__HIDDEN int qc__branching_run(qc_ctx *ctx, const qc_region *region,
+                                 const qc_params *params, const qc_skeleton *skel,
+                                 const qc_motif_set *motifs, qc_path *out,
+                                 qc_stats *stats, qc__placement *pl);
+
+#endif

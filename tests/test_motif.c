@@ -1,0 +1,172 @@
+/* Motifs: the built-in library in its unit frame, hulls, names, allocation failures. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "quiltc.h"
+#include "testalloc.h"
+#include "unity.h"
+#include "../src/deco/deco_internal.h"
+
+static testalloc ta;
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    memset(&ta, 0, sizeof ta);
+    qc_ctx_init(&ctx, testalloc_fn, &ta);
+}
+
+void tearDown(void)
+{
+}
+
+static void all_names(char *buf, size_t cap)
+{
+    size_t i;
+    buf[0] = '\0';
+    for (i = 0; i < qc_motif_builtin_count(); i++) {
+        if (i)
+            strncat(buf, ",", cap - strlen(buf) - 1);
+        strncat(buf, qc_motif_builtin_name(i), cap - strlen(buf) - 1);
+    }
+}
+
+static void library_should_hold_at_least_eight_motifs_and_wanderer_variants(void)
+{
+    size_t i, legs = 0;
+    qc_motif_set set = {0};
+    char names[512];
+
+    TEST_ASSERT_GREATER_OR_EQUAL_UINT(8, qc_motif_builtin_count());
+    TEST_ASSERT_NULL(qc_motif_builtin_name(qc_motif_builtin_count()));
+    all_names(names, sizeof names);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_builtin(&ctx, names, &set));
+    TEST_ASSERT_EQUAL_UINT(qc_motif_builtin_count(), set.n);
+    for (i = 0; i < set.n; i++) {
+        const qc_motif *m = &set.m[i];
+        TEST_ASSERT_EQUAL_STRING(qc_motif_builtin_name(i), m->name);
+        TEST_ASSERT_EQUAL_INT(QC_PATH_MOVE, m->path.cmd[0]);
+        TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&m->path));
+        if (m->legs == 0) { /* a closed detour: back at the attachment */
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, m->entry.x, m->exit.x);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, m->entry.y, m->exit.y);
+        } else {
+            legs++;
+            TEST_ASSERT_EQUAL_INT(2, m->legs);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1, qc_hypot(m->entry_dir.x, m->entry_dir.y));
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1, qc_hypot(m->exit_dir.x, m->exit_dir.y));
+        }
+    }
+    TEST_ASSERT_GREATER_OR_EQUAL_UINT(6, legs);
+    qc_motif_set_free(&ctx, &set);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
+static void motifs_should_have_unit_bounding_circle_and_hull_containing_points(void)
+{
+    size_t i, j, k;
+    qc_motif_set set = {0};
+    char names[512];
+
+    all_names(names, sizeof names);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_builtin(&ctx, names, &set));
+    for (i = 0; i < set.n; i++) {
+        const qc_motif *m = &set.m[i];
+        qc_points pts = {0};
+        qc_vec2 c, *scr;
+        double r;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &m->path, 1e-4, &pts, NULL));
+        scr = malloc(pts.n * sizeof *scr);
+        qc__min_circle(pts.v, pts.n, scr, &c, &r);
+        free(scr);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 1, r);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0, c.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0, c.y);
+        TEST_ASSERT_GREATER_OR_EQUAL_UINT(3, m->nhull);
+        for (k = 0; k < m->nhull; k++) { /* CCW and convex */
+            qc_vec2 a = m->hull[k], b = m->hull[(k + 1) % m->nhull], d = m->hull[(k + 2) % m->nhull];
+            TEST_ASSERT_TRUE((b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x) > 0);
+        }
+        for (j = 0; j < pts.n; j++) {
+            TEST_ASSERT_TRUE(qc_hypot(pts.v[j].x, pts.v[j].y) <= 1 + 1e-9);
+            for (k = 0; k < m->nhull; k++) {
+                qc_vec2 a = m->hull[k], b = m->hull[(k + 1) % m->nhull];
+                double cr = (b.x - a.x) * (pts.v[j].y - a.y) - (b.y - a.y) * (pts.v[j].x - a.x);
+                TEST_ASSERT_TRUE(cr >= -1e-9);
+            }
+        }
+        qc_points_free(&ctx, &pts);
+    }
+    qc_motif_set_free(&ctx, &set);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
+static void builtin_should_refuse_unknown_names(void)
+{
+    qc_motif_set set = {0};
+
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_motif_builtin(&ctx, "leaf,rose", &set));
+    TEST_ASSERT_TRUE(strstr(qc_errmsg(&ctx), "rose") != NULL);
+    TEST_ASSERT_EQUAL_UINT(1, set.n); /* leaf came first */
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_motif_builtin(&ctx, NULL, &set));
+    qc_motif_set_free(&ctx, &set);
+    qc_motif_set_free(&ctx, &set); /* twice: a no-op */
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
+static void hull_and_circle_should_handle_known_sets(void)
+{
+    qc_vec2 sq[9] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}, {1, 0}, {0.5, 1.5}, {2, 1}, {1, 2}};
+    qc_vec2 out[18], scr[18], c;
+    double r;
+    size_t n = qc__convex_hull(sq, 9, out, scr);
+
+    TEST_ASSERT_EQUAL_UINT(4, n); /* collinear points dropped */
+    qc__min_circle(sq, 9, scr, &c, &r);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1, c.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1, c.y);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, sqrt(2), r);
+}
+
+static void convex_touch_should_separate_and_detect(void)
+{
+    qc_vec2 a[3] = {{0, 0}, {1, 0}, {0, 1}};
+    qc_vec2 b[3] = {{0.6, 0.6}, {2, 0.6}, {0.6, 2}};  /* beyond the hypotenuse */
+    qc_vec2 c[3] = {{0.4, 0.4}, {2, 0.4}, {0.4, 2}};  /* overlapping */
+    qc_vec2 seg[2] = {{-1, 0.5}, {2, 0.5}};
+
+    TEST_ASSERT_FALSE(qc__convex_touch(a, 3, b, 3, 0));
+    TEST_ASSERT_TRUE(qc__convex_touch(a, 3, c, 3, 0));
+    TEST_ASSERT_TRUE(qc__convex_touch(a, 3, seg, 2, 0));
+    TEST_ASSERT_FALSE(qc__convex_touch(b, 3, seg, 2, 0));
+}
+
+static void builtin_should_free_everything_when_allocation_fails(void)
+{
+    size_t k;
+    int rc = QC_ENOMEM;
+
+    for (k = 1; rc == QC_ENOMEM && k < 5000; k++) {
+        qc_motif_set set = {0};
+        memset(&ta, 0, sizeof ta);
+        ta.fail_at = k;
+        rc = qc_motif_builtin(&ctx, "leaf,flower,spiral,loop60", &set);
+        qc_motif_set_free(&ctx, &set);
+        TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+        TEST_ASSERT_FALSE(ta.size_mismatch);
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(library_should_hold_at_least_eight_motifs_and_wanderer_variants);
+    RUN_TEST(motifs_should_have_unit_bounding_circle_and_hull_containing_points);
+    RUN_TEST(builtin_should_refuse_unknown_names);
+    RUN_TEST(hull_and_circle_should_handle_known_sets);
+    RUN_TEST(convex_touch_should_separate_and_detect);
+    RUN_TEST(builtin_should_free_everything_when_allocation_fails);
+    return UNITY_END();
+}
