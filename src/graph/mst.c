@@ -1,0 +1,229 @@
+/*
+ * Euclidean MST. Edges are totally ordered by (squared length as a double,
+ * a, b) with a < b, so the tree is unique and both modes agree edge for
+ * edge: Kruskal over the Delaunay edges (which contain the EMST) plus
+ * zero-length edges joining duplicates to their first copy, or a dense
+ * O(n^2) Prim over the complete graph (the paper's complete graph without
+ * its n^2/2 edge list: 20000 points would need 3 GB for Kruskal).
+ */
+#include <string.h>
+
+#include "graph_delaunay.h"
+
+#define COMPLETE_MAX 20000
+
+static double len2(const qc_vec2 *p, uint32_t a, uint32_t b)
+{
+    double dx = p[a].x - p[b].x, dy = p[a].y - p[b].y;
+
+    return dx * dx + dy * dy;
+}
+
+static uint64_t len_key(double l)
+{
+    uint64_t u;
+
+    memcpy(&u, &l, sizeof u); /* l >= +0: the bits order like the values */
+    return u;
+}
+
+/* Sorts e[0..m) (a < b each) by (length, a, b): radix by (a, b), then a
+ * stable radix by length. */
+static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
+{
+    uint64_t *key = qc__alloc_array(ctx, m, sizeof *key);
+    uint32_t *val = qc__alloc_array(ctx, m, sizeof *val);
+    size_t i;
+    int rc = QC_ENOMEM;
+
+    if (key == NULL || val == NULL)
+        goto out_free;
+    for (i = 0; i < m; i++)
+        key[i] = (uint64_t)e[i].a << 32 | e[i].b;
+    if (qc__radix_sort(ctx, key, NULL, m, 0) < 0)
+        goto out_free;
+    for (i = 0; i < m; i++) {
+        e[i].a = (uint32_t)(key[i] >> 32);
+        e[i].b = (uint32_t)key[i];
+        key[i] = len_key(len2(p, e[i].a, e[i].b));
+        val[i] = (uint32_t)i;
+    }
+    if (qc__radix_sort(ctx, key, val, m, 0) < 0)
+        goto out_free;
+    /* Permute through key[] as scratch: e[val[i]] -> position i. */
+    for (i = 0; i < m; i++)
+        key[i] = (uint64_t)e[val[i]].a << 32 | e[val[i]].b;
+    for (i = 0; i < m; i++) {
+        e[i].a = (uint32_t)(key[i] >> 32);
+        e[i].b = (uint32_t)key[i];
+    }
+    rc = QC_OK;
+out_free:
+    qc__free(ctx, key, m * sizeof *key);
+    qc__free(ctx, val, m * sizeof *val);
+    return rc < 0 ? qc__fail(ctx, rc, "mst: out of memory sorting %lu edges",
+                             (unsigned long)m)
+                  : rc;
+}
+
+static uint32_t find(uint32_t *parent, uint32_t x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+/* Kruskal over the sorted e[0..m): tree edges to out (n - 1 of them). */
+static int kruskal(qc_ctx *ctx, const qc_edge *e, size_t m, size_t n,
+                   qc_edges *out)
+{
+    uint32_t *parent = qc__alloc_array(ctx, n, sizeof *parent);
+    uint32_t *size = qc__alloc_array(ctx, n, sizeof *size);
+    size_t i, got = 0;
+    int rc = QC_ENOMEM;
+
+    if (parent == NULL || size == NULL)
+        goto out_free;
+    for (i = 0; i < n; i++)
+        parent[i] = (uint32_t)i, size[i] = 1;
+    for (i = 0; i < m && got + 1 < n; i++) {
+        uint32_t ra = find(parent, e[i].a), rb = find(parent, e[i].b);
+
+        if (ra == rb)
+            continue;
+        if (size[ra] < size[rb]) {
+            uint32_t t = ra;
+            ra = rb;
+            rb = t;
+        }
+        parent[rb] = ra;
+        size[ra] += size[rb];
+        out->e[out->n++] = e[i];
+        got++;
+    }
+    rc = QC_OK;
+out_free:
+    qc__free(ctx, parent, n * sizeof *parent);
+    qc__free(ctx, size, n * sizeof *size);
+    return rc < 0 ? qc__fail(ctx, rc, "mst: out of memory for %lu points",
+                             (unsigned long)n)
+                  : rc;
+}
+
+static int mst_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
+{
+    qc_mesh mesh;
+    qc_edge *e;
+    size_t m, i;
+    int rc;
+
+    QC__TRY(qc_delaunay(ctx, p, n, &mesh));
+    /* The triangles are not needed: free them before the edge sort. */
+    qc__free(ctx, mesh.tri, 3 * mesh.tri_cap * sizeof *mesh.tri);
+    mesh.tri = NULL;
+    mesh.tri_cap = mesh.ntri = 0;
+    m = mesh.edges.n;
+    rc = QC__RESERVE(ctx, mesh.edges.e, mesh.edges.cap, m + mesh.ndup);
+    if (rc < 0)
+        goto out_free;
+    e = mesh.edges.e;
+    for (i = 0; i < n; i++)
+        if (mesh.dup_of[i] != i) {
+            e[m].a = mesh.dup_of[i];
+            e[m++].b = (uint32_t)i;
+        }
+    if ((rc = sort_edges(ctx, p, e, m)) < 0)
+        goto out_free;
+    rc = kruskal(ctx, e, m, n, out);
+out_free:
+    qc_mesh_free(ctx, &mesh);
+    return rc;
+}
+
+/* (l1, a1, b1) < (l2, a2, b2) with a < b in each. */
+static int before(double l1, uint32_t a1, uint32_t b1, double l2, uint32_t a2,
+                  uint32_t b2)
+{
+    if (l1 != l2)
+        return l1 < l2;
+    return a1 != a2 ? a1 < a2 : b1 < b2;
+}
+
+static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
+{
+    double *best = qc__alloc_array(ctx, n, sizeof *best);
+    uint32_t *from = qc__alloc_array(ctx, n, sizeof *from);
+    size_t i, k, start = out->n;
+    uint32_t v = 0;
+    int rc = QC_ENOMEM;
+
+    if (best == NULL || from == NULL)
+        goto out_free;
+    for (i = 0; i < n; i++)
+        from[i] = UINT32_MAX; /* UINT32_MAX: no edge yet; v itself: in the tree */
+    from[0] = 0;
+    for (k = 1; k < n; k++) {
+        uint32_t w, bw = UINT32_MAX;
+
+        for (w = 0; w < n; w++) {
+            double l;
+            uint32_t a, b;
+
+            if (from[w] == w)
+                continue;
+            l = len2(p, v, w);
+            a = v < w ? v : w;
+            b = v < w ? w : v;
+            if (from[w] == UINT32_MAX ||
+                before(l, a, b, best[w], from[w] < w ? from[w] : w,
+                       from[w] < w ? w : from[w])) {
+                best[w] = l;
+                from[w] = v;
+            }
+            if (bw == UINT32_MAX ||
+                before(best[w], from[w] < w ? from[w] : w, from[w] < w ? w : from[w],
+                       best[bw], from[bw] < bw ? from[bw] : bw,
+                       from[bw] < bw ? bw : from[bw]))
+                bw = w;
+        }
+        out->e[out->n].a = from[bw] < bw ? from[bw] : bw;
+        out->e[out->n++].b = from[bw] < bw ? bw : from[bw];
+        from[bw] = bw;
+        v = bw;
+    }
+    rc = sort_edges(ctx, p, out->e + start, n - 1);
+out_free:
+    qc__free(ctx, best, n * sizeof *best);
+    qc__free(ctx, from, n * sizeof *from);
+    if (rc < 0)
+        out->n = start;
+    return rc < 0 && ctx->status != rc
+               ? qc__fail(ctx, rc, "mst: out of memory for %lu points",
+                          (unsigned long)n)
+               : rc;
+}
+
+int qc_mst(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mst_mode mode,
+           qc_edges *out)
+{
+    size_t start = out->n;
+    int rc;
+
+    if (mode != QC_MST_MODE_DELAUNAY && mode != QC_MST_MODE_COMPLETE)
+        return qc__fail(ctx, QC_EINVAL, "mst: unknown mode %d", (int)mode);
+    if (mode == QC_MST_MODE_COMPLETE && n > COMPLETE_MAX)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "mst: complete graph of %lu points, at most %d",
+                        (unsigned long)n, COMPLETE_MAX);
+    QC__TRY(qc__check_points(ctx, p, n, "mst"));
+    if (n < 2)
+        return QC_OK;
+    QC__TRY(QC__RESERVE(ctx, out->e, out->cap, out->n + n - 1));
+    rc = mode == QC_MST_MODE_COMPLETE ? mst_complete(ctx, p, n, out)
+                                      : mst_delaunay(ctx, p, n, out);
+    if (rc < 0)
+        out->n = start;
+    return rc;
+}

@@ -1,0 +1,84 @@
+/* Stable LSD radix sort on 64-bit keys (11-bit digits): the graph stage
+ * sorts up to ~3n edges and n Hilbert keys, where qsort is several times
+ * slower (notes/performance.md). */
+#include <math.h>
+#include <string.h>
+
+#include "graph_internal.h"
+
+#define DIGIT_BITS 11u
+#define DIGITS (1u << DIGIT_BITS)
+
+int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n,
+                   unsigned shift)
+{
+    uint64_t *k2;
+    uint32_t *v2 = NULL;
+    size_t *count;
+    unsigned s;
+    int in_tmp = 0;
+
+    if (n < 2)
+        return QC_OK;
+    k2 = qc__alloc_array(ctx, n, sizeof *k2);
+    count = qc__alloc_array(ctx, DIGITS, sizeof *count);
+    if (val != NULL && k2 != NULL && count != NULL)
+        v2 = qc__alloc_array(ctx, n, sizeof *v2);
+    if (k2 == NULL || count == NULL || (val != NULL && v2 == NULL)) {
+        qc__free(ctx, k2, n * sizeof *k2);
+        qc__free(ctx, count, DIGITS * sizeof *count);
+        return qc__fail(ctx, QC_ENOMEM, "radix sort of %lu keys: out of memory",
+                        (unsigned long)n);
+    }
+    for (s = shift; s < 64; s += DIGIT_BITS) {
+        uint64_t *ks = in_tmp ? k2 : key, *kd = in_tmp ? key : k2;
+        uint32_t *vs = in_tmp ? v2 : val, *vd = in_tmp ? val : v2;
+        size_t i, sum = 0;
+
+        memset(count, 0, DIGITS * sizeof *count);
+        for (i = 0; i < n; i++)
+            count[(ks[i] >> s) & (DIGITS - 1)]++;
+        if (count[(ks[0] >> s) & (DIGITS - 1)] == n)
+            continue; /* this digit is the same everywhere */
+        for (i = 0; i < DIGITS; i++) {
+            size_t c = count[i];
+            count[i] = sum;
+            sum += c;
+        }
+        if (val != NULL) {
+            for (i = 0; i < n; i++) {
+                size_t d = count[(ks[i] >> s) & (DIGITS - 1)]++;
+                kd[d] = ks[i];
+                vd[d] = vs[i];
+            }
+        } else {
+            for (i = 0; i < n; i++)
+                kd[count[(ks[i] >> s) & (DIGITS - 1)]++] = ks[i];
+        }
+        in_tmp = !in_tmp;
+    }
+    if (in_tmp) {
+        memcpy(key, k2, n * sizeof *key);
+        if (val != NULL)
+            memcpy(val, v2, n * sizeof *val);
+    }
+    qc__free(ctx, k2, n * sizeof *k2);
+    qc__free(ctx, v2, val != NULL ? n * sizeof *v2 : 0);
+    qc__free(ctx, count, DIGITS * sizeof *count);
+    return QC_OK;
+}
+
+int qc__check_points(qc_ctx *ctx, const qc_vec2 *p, size_t n, const char *who)
+{
+    size_t i;
+
+    if (n >= ((size_t)1 << 31))
+        return qc__fail(ctx, QC_ELIMIT, "%s: %lu points, at most 2^31 - 1",
+                        who, (unsigned long)n);
+    for (i = 0; i < n; i++)
+        if (!isfinite(p[i].x) || !isfinite(p[i].y))
+            return qc__fail(ctx, QC_ERANGE,
+                            "%s: point %lu is not finite (%g, %g)", who,
+                            (unsigned long)i, p[i].x, p[i].y);
+    return QC_OK;
+}
