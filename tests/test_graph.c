@@ -403,11 +403,11 @@ static void delaunay_should_refuse_nan(void)
     qc_mesh m;
     qc_edges e = {0};
 
-    p[2].y = NAN;
+    p[2].y = (double)NAN;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_delaunay(&ctx, p, 4, &m));
     TEST_ASSERT_TRUE(strstr(qc_errmsg(&ctx), "point 2") != NULL);
     p[2].y = 1;
-    p[3].x = INFINITY;
+    p[3].x = (double)INFINITY;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_mst(&ctx, p, 4, QC_MST_MODE_DELAUNAY, &e));
     TEST_ASSERT_TRUE(strstr(qc_errmsg(&ctx), "point 3") != NULL);
     TEST_ASSERT_EQUAL_size_t(0, e.n);
@@ -423,7 +423,7 @@ static double prim_weight(const qc_vec2 *p, size_t n)
     size_t i, k, v = 0;
 
     for (i = 0; i < n; i++)
-        d[i] = INFINITY;
+        d[i] = (double)INFINITY;
     in[0] = 1;
     for (k = 1; k < n; k++) {
         size_t b = n;

@@ -1,0 +1,22 @@
+/* Shared helpers of quiltc-bench (bench/main.c calls each stage's bench). */
+#ifndef QC_BENCH_H
+#define QC_BENCH_H
+
+#include <stddef.h>
+
+#include "quiltc.h"
+
+void bench_graph(void);
+void bench_tour(void);
+
+/* Monotonic seconds. */
+double bench_now(void);
+/* Peak resident set of the process so far, bytes. */
+size_t bench_peak_rss(void);
+/* n uniform points in [0, side)^2 from seed (malloc'ed; NULL on failure). */
+qc_vec2 *bench_uniform(size_t n, double side, uint64_t seed);
+/* About n points of a hexagonal (honeycomb) lattice of unit spacing
+ * (malloc'ed); *got receives the count. */
+qc_vec2 *bench_hex(size_t n, size_t *got);
+
+#endif
