@@ -246,6 +246,27 @@ static int flat(qc_ctx *ctx, const qc_path *path, qc_points *pts)
     return qc_curve_flatten(ctx, path, 1e-4, pts, NULL);
 }
 
+#define HULL_TOL 0.01
+
+/* Moves every edge of the CCW convex polygon h outward by d (tmp: n points). */
+static void outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d)
+{
+    size_t i;
+
+    if (n < 3)
+        return;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = h[(i + n - 1) % n], b = h[i], c = h[(i + 1) % n];
+        double l1 = qc_hypot(b.x - a.x, b.y - a.y), l2 = qc_hypot(c.x - b.x, c.y - b.y);
+        double n1x = (b.y - a.y) / l1, n1y = -(b.x - a.x) / l1;
+        double n2x = (c.y - b.y) / l2, n2y = -(c.x - b.x) / l2;
+        double k = d / (1 + n1x * n2x + n1y * n2y);
+        tmp[i].x = b.x + k * (n1x + n2x);
+        tmp[i].y = b.y + k * (n1y + n2y);
+    }
+    memcpy(h, tmp, n * sizeof *h);
+}
+
 static void map_path(qc_path *p, double k, qc_vec2 c)
 {
     size_t i;
@@ -307,10 +328,15 @@ int qc__motif_add(qc_ctx *ctx, qc_path *path, const char *name, int legs,
         else
             hull_cap = 2 * pts.n;
     }
+    if (rc == QC_OK) { /* few vertices: the coarse polyline's hull, pushed out by its tolerance */
+        pts.n = 0;
+        rc = qc_curve_flatten(ctx, path, HULL_TOL, &pts, NULL);
+    }
     if (rc == QC_OK) {
         qc_vec2 *h2;
         nh = qc__convex_hull(pts.v, pts.n, hull, scratch);
-        h2 = qc__realloc(ctx, hull, 2 * pts.n * sizeof *hull, nh * sizeof *hull);
+        outset(hull, nh, scratch, HULL_TOL * (1 + 1e-6));
+        h2 = qc__realloc(ctx, hull, hull_cap * sizeof *hull, nh * sizeof *hull);
         if (h2 == NULL) { /* keep the larger block */
             rc = qc__fail(ctx, QC_ENOMEM, "motif %s hull", name);
         } else {
