@@ -7,6 +7,7 @@
  * that edge's interior. With exact predicates every step is decided exactly,
  * so cocircular sets and lattices give a valid (not unique) triangulation.
  */
+#include <math.h>
 #include <string.h>
 
 #include "graph_delaunay.h"
@@ -18,7 +19,8 @@ typedef struct bedge {
 typedef struct dt {
     const qc_vec2 *q; /* points in insertion order */
     uint32_t inf;     /* == number of points: the ghost vertex */
-    uint32_t *v, *nb; /* 3 per triangle: vertices CCW, neighbour across v[i]v[i+1] */
+    uint32_t *tr;     /* 6 per triangle: vertices CCW, then the neighbour
+                         across v[i]v[i+1] (one cache line for both) */
     uint32_t *stamp;  /* cavity mark per triangle */
     uint32_t *start;  /* per vertex (+ INF): new triangle whose boundary edge starts there */
     uint32_t ntri, last, it;
@@ -29,6 +31,34 @@ typedef struct dt {
     uint64_t rng;
 } dt;
 
+#define TV(d, t) ((d)->tr + 6 * (size_t)(t))
+#define TN(d, t) (TV(d, t) + 3)
+
+/* The predicates' floating-point filters, inlined here for speed; the exact
+ * functions decide whenever the filter cannot. */
+static double orient(qc_vec2 a, qc_vec2 b, qc_vec2 c)
+{
+    double l = (a.x - c.x) * (b.y - c.y), r = (a.y - c.y) * (b.x - c.x);
+    double det = l - r, bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (fabs(l) + fabs(r));
+
+    return det > bound || -det > bound ? det : qc_orient2d(a, b, c);
+}
+
+static double incircle(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+    double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+    double bc1 = bdx * cdy, bc2 = cdx * bdy, al = adx * adx + ady * ady;
+    double ca1 = cdx * ady, ca2 = adx * cdy, bl = bdx * bdx + bdy * bdy;
+    double ab1 = adx * bdy, ab2 = bdx * ady, cl = cdx * cdx + cdy * cdy;
+    double det = al * (bc1 - bc2) + bl * (ca1 - ca2) + cl * (ab1 - ab2);
+    double bound = (10.0 + 96.0 * 0x1p-53) * 0x1p-53 *
+                   ((fabs(bc1) + fabs(bc2)) * al + (fabs(ca1) + fabs(ca2)) * bl +
+                    (fabs(ab1) + fabs(ab2)) * cl);
+
+    return det > bound || -det > bound ? det : qc_incircle(a, b, c, d);
+}
+
 static int strictly_between(qc_vec2 a, qc_vec2 b, qc_vec2 p)
 {
     if (a.x != b.x)
@@ -38,14 +68,14 @@ static int strictly_between(qc_vec2 a, qc_vec2 b, qc_vec2 p)
 
 static int conflict(const dt *d, uint32_t t, qc_vec2 p)
 {
-    const uint32_t *v = d->v + 3 * (size_t)t;
+    const uint32_t *v = TV(d, t);
 
     if (v[2] == d->inf) {
-        double o = qc_orient2d(d->q[v[0]], d->q[v[1]], p);
+        double o = orient(d->q[v[0]], d->q[v[1]], p);
 
         return o > 0.0 || (o == 0.0 && strictly_between(d->q[v[0]], d->q[v[1]], p));
     }
-    return qc_incircle(d->q[v[0]], d->q[v[1]], d->q[v[2]], p) > 0.0;
+    return incircle(d->q[v[0]], d->q[v[1]], d->q[v[2]], p) > 0.0;
 }
 
 /* A triangle in conflict with p: walk from the last finite triangle. */
@@ -54,18 +84,19 @@ static uint32_t locate(dt *d, qc_vec2 p)
     uint32_t t = d->last;
 
     for (;;) {
-        const uint32_t *v = d->v + 3 * (size_t)t;
+        const uint32_t *v = TV(d, t);
         uint32_t r, j, moved = 0;
 
         if (v[2] == d->inf)
             return t; /* entered across a hull edge p is strictly outside of */
         d->rng = d->rng * 6364136223846793005u + 1442695040888963407u;
-        r = (uint32_t)(d->rng >> 33) % 3;
+        r = (uint32_t)(d->rng >> 62); /* a random first edge: the walk ends */
+        r = r == 3 ? 0 : r;
         for (j = 0; j < 3; j++) {
-            uint32_t i = (r + j) % 3;
+            uint32_t i = r + j < 3 ? r + j : r + j - 3;
 
-            if (qc_orient2d(d->q[v[i]], d->q[v[(i + 1) % 3]], p) < 0.0) {
-                t = d->nb[3 * (size_t)t + i];
+            if (orient(d->q[v[i]], d->q[v[(i + 1) % 3]], p) < 0.0) {
+                t = TN(d, t)[i];
                 moved = 1;
                 break;
             }
@@ -77,7 +108,7 @@ static uint32_t locate(dt *d, qc_vec2 p)
 
 static uint32_t edge_index(const dt *d, uint32_t t, uint32_t a, uint32_t b)
 {
-    const uint32_t *v = d->v + 3 * (size_t)t;
+    const uint32_t *v = TV(d, t);
 
     return v[0] == a && v[1] == b ? 0 : v[1] == a && v[2] == b ? 1 : 2;
 }
@@ -89,25 +120,28 @@ static int insert(qc_ctx *ctx, dt *d, uint32_t pi)
     uint32_t t0 = locate(d, p);
 
     d->it++;
-    QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, 1));
+    if (d->cav_cap == 0)
+        QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, 1));
     d->cav[ncav++] = t0;
     d->stamp[t0] = d->it;
     for (k = 0; k < ncav; k++) {
         uint32_t t = d->cav[k], i;
 
         for (i = 0; i < 3; i++) {
-            uint32_t o = d->nb[3 * (size_t)t + i];
+            uint32_t o = TN(d, t)[i];
 
             if (d->stamp[o] == d->it)
                 continue;
             if (conflict(d, o, p)) {
-                QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, ncav + 1));
+                if (ncav == d->cav_cap)
+                    QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, ncav + 1));
                 d->stamp[o] = d->it;
                 d->cav[ncav++] = o;
             } else {
-                QC__TRY(QC__RESERVE(ctx, d->b, d->b_cap, nb + 1));
-                d->b[nb].u = d->v[3 * (size_t)t + i];
-                d->b[nb].v = d->v[3 * (size_t)t + (i + 1) % 3];
+                if (nb == d->b_cap)
+                    QC__TRY(QC__RESERVE(ctx, d->b, d->b_cap, nb + 1));
+                d->b[nb].u = TV(d, t)[i];
+                d->b[nb].v = TV(d, t)[(i + 1) % 3];
                 d->b[nb].out = o;
                 nb++;
             }
@@ -116,8 +150,8 @@ static int insert(qc_ctx *ctx, dt *d, uint32_t pi)
     /* nb == ncav + 2 new triangles: reuse the cavity's slots, then append. */
     for (k = 0; k < nb; k++) {
         uint32_t t = k < ncav ? d->cav[k] : d->ntri++;
-        uint32_t u = d->b[k].u, w = d->b[k].v, *v = d->v + 3 * (size_t)t;
-        uint32_t *n = d->nb + 3 * (size_t)t;
+        uint32_t u = d->b[k].u, w = d->b[k].v, *v = TV(d, t);
+        uint32_t *n = TN(d, t);
 
         if (u == d->inf) { /* (INF, w, p) -> (w, p, INF) */
             v[0] = w, v[1] = pi, v[2] = u;
@@ -131,14 +165,14 @@ static int insert(qc_ctx *ctx, dt *d, uint32_t pi)
             d->last = t;
         }
         d->start[u] = t;
-        d->nb[3 * (size_t)d->b[k].out + edge_index(d, d->b[k].out, w, u)] = t;
+        TN(d, d->b[k].out)[edge_index(d, d->b[k].out, w, u)] = t;
         d->b[k].out = t; /* from here on: the new triangle */
     }
     for (k = 0; k < nb; k++) {
         uint32_t t = d->b[k].out, w = d->b[k].v, s = d->start[w];
 
-        d->nb[3 * (size_t)t + edge_index(d, t, w, pi)] = s;
-        d->nb[3 * (size_t)s + edge_index(d, s, pi, w)] = t;
+        TN(d, t)[edge_index(d, t, w, pi)] = s;
+        TN(d, s)[edge_index(d, s, pi, w)] = t;
     }
     return QC_OK;
 }
@@ -148,14 +182,14 @@ static void init_triangle(dt *d)
 {
     uint32_t i;
 
-    d->v[0] = 0, d->v[1] = 1, d->v[2] = 2;
+    TV(d, 0)[0] = 0, TV(d, 0)[1] = 1, TV(d, 0)[2] = 2;
     if (qc_orient2d(d->q[0], d->q[1], d->q[2]) < 0.0)
-        d->v[1] = 2, d->v[2] = 1;
+        TV(d, 0)[1] = 2, TV(d, 0)[2] = 1;
     for (i = 0; i < 3; i++) {
-        uint32_t g = 1 + i, *v = d->v + 3 * (size_t)g, *n = d->nb + 3 * (size_t)g;
+        uint32_t g = 1 + i, *v = TV(d, g), *n = TN(d, g);
 
-        d->nb[i] = g;
-        v[0] = d->v[(i + 1) % 3], v[1] = d->v[i], v[2] = d->inf;
+        TN(d, 0)[i] = g;
+        v[0] = TV(d, 0)[(i + 1) % 3], v[1] = TV(d, 0)[i], v[2] = d->inf;
         n[0] = 0, n[1] = 1 + (i + 2) % 3, n[2] = 1 + (i + 1) % 3;
     }
     d->ntri = 4;
@@ -166,8 +200,7 @@ static void dt_free(qc_ctx *ctx, dt *d, size_t m)
 {
     size_t cap = 2 * m + 2;
 
-    qc__free(ctx, d->v, 3 * cap * sizeof *d->v);
-    qc__free(ctx, d->nb, 3 * cap * sizeof *d->nb);
+    qc__free(ctx, d->tr, 6 * cap * sizeof *d->tr);
     qc__free(ctx, d->stamp, cap * sizeof *d->stamp);
     qc__free(ctx, d->start, (m + 1) * sizeof *d->start);
     qc__free(ctx, d->cav, d->cav_cap * sizeof *d->cav);
@@ -186,11 +219,10 @@ int qc__triangulate(qc_ctx *ctx, const qc_vec2 *q, const uint32_t *orig,
     d.q = q;
     d.inf = m;
     d.rng = 0x853c49e6748fea9bu;
-    d.v = qc__alloc_array(ctx, 3 * cap, sizeof *d.v);
-    d.nb = qc__alloc_array(ctx, 3 * cap, sizeof *d.nb);
+    d.tr = qc__alloc_array(ctx, 6 * cap, sizeof *d.tr);
     d.stamp = qc__alloc_array(ctx, cap, sizeof *d.stamp);
     d.start = qc__alloc_array(ctx, (size_t)m + 1, sizeof *d.start);
-    if (d.v == NULL || d.nb == NULL || d.stamp == NULL || d.start == NULL)
+    if (d.tr == NULL || d.stamp == NULL || d.start == NULL)
         goto out_free;
     memset(d.stamp, 0, cap * sizeof *d.stamp);
     init_triangle(&d);
@@ -198,12 +230,12 @@ int qc__triangulate(qc_ctx *ctx, const qc_vec2 *q, const uint32_t *orig,
         if ((rc = insert(ctx, &d, i)) < 0)
             goto out_free;
     for (t = 0; t < d.ntri; t++) {
-        if (d.v[3 * t + 2] == d.inf)
+        if (TV(&d, t)[2] == d.inf)
             continue;
         nt++;
         for (i = 0; i < 3; i++) {
-            uint32_t o = d.nb[3 * t + i];
-            ne += d.v[3 * (size_t)o + 2] == d.inf || t < o;
+            uint32_t o = TN(&d, t)[i];
+            ne += TV(&d, o)[2] == d.inf || t < o;
         }
     }
     rc = QC_ENOMEM;
@@ -216,15 +248,15 @@ int qc__triangulate(qc_ctx *ctx, const qc_vec2 *q, const uint32_t *orig,
         goto out_free;
     out->edges.cap = ne;
     for (t = 0; t < d.ntri; t++) {
-        const uint32_t *v = d.v + 3 * t;
+        const uint32_t *v = TV(&d, t);
 
         if (v[2] == d.inf)
             continue;
         for (i = 0; i < 3; i++) {
-            uint32_t o = d.nb[3 * t + i];
+            uint32_t o = TN(&d, t)[i];
 
             out->tri[3 * out->ntri + i] = orig[v[i]];
-            if (d.v[3 * (size_t)o + 2] == d.inf || t < o) {
+            if (TV(&d, o)[2] == d.inf || t < o) {
                 uint32_t a = orig[v[i]], b = orig[v[(i + 1) % 3]];
                 qc_edge e;
 

@@ -6,24 +6,24 @@
 
 #define HBITS 16u
 
+/* Index of cell (x, y) along the curve; branch-free rotations (the
+ * quadrant bits are random for scattered input). */
 static uint64_t hilbert_d(uint32_t x, uint32_t y)
 {
-    uint32_t s, t, n = 1u << HBITS;
+    uint32_t s;
     uint64_t d = 0;
 
-    for (s = n / 2; s > 0; s /= 2) {
+    for (s = 1u << (HBITS - 1); s > 0; s >>= 1) {
         uint32_t rx = (x & s) != 0, ry = (y & s) != 0;
+        uint32_t swap = (uint32_t)0 - (ry ^ 1u), flip = swap & ((uint32_t)0 - rx);
+        uint32_t t;
 
         d += (uint64_t)s * s * ((3u * rx) ^ ry);
-        if (ry == 0) {
-            if (rx == 1) {
-                x = n - 1 - x;
-                y = n - 1 - y;
-            }
-            t = x;
-            x = y;
-            y = t;
-        }
+        x ^= flip; /* only the bits below s matter from here on */
+        y ^= flip;
+        t = (x ^ y) & swap;
+        x ^= t;
+        y ^= t;
     }
     return d;
 }

@@ -27,43 +27,98 @@ static uint64_t len_key(double l)
     return u;
 }
 
-/* Sorts e[0..m) (a < b each) by (length, a, b): radix by (a, b), then a
- * stable radix by length. */
+/* (l1, a1, b1) < (l2, a2, b2) with a < b in each. */
+static int before(double l1, uint32_t a1, uint32_t b1, double l2, uint32_t a2,
+                  uint32_t b2)
+{
+    if (l1 != l2)
+        return l1 < l2;
+    return a1 != a2 ? a1 < a2 : b1 < b2;
+}
+
+static int edge_before(const qc_vec2 *p, qc_edge x, qc_edge y)
+{
+    return before(len2(p, x.a, x.b), x.a, x.b, len2(p, y.a, y.b), y.a, y.b);
+}
+
+static void sift(const qc_vec2 *p, qc_edge *e, size_t i, size_t m)
+{
+    for (;;) {
+        size_t c = 2 * i + 1;
+        qc_edge t;
+
+        if (c >= m)
+            return;
+        if (c + 1 < m && edge_before(p, e[c], e[c + 1]))
+            c++;
+        if (!edge_before(p, e[i], e[c]))
+            return;
+        t = e[i], e[i] = e[c], e[c] = t;
+        i = c;
+    }
+}
+
+/* Sorts a run of edges in place by the total order (no allocation). */
+static void sort_run(const qc_vec2 *p, qc_edge *e, size_t m)
+{
+    size_t i, j;
+
+    if (m <= 24) {
+        for (i = 1; i < m; i++) {
+            qc_edge x = e[i];
+            for (j = i; j > 0 && edge_before(p, x, e[j - 1]); j--)
+                e[j] = e[j - 1];
+            e[j] = x;
+        }
+        return;
+    }
+    for (i = m / 2; i-- > 0;)
+        sift(p, e, i, m);
+    for (i = m; i-- > 1;) {
+        qc_edge t = e[0];
+        e[0] = e[i], e[i] = t;
+        sift(p, e, 0, i);
+    }
+}
+
+/*
+ * Sorts e[0..m) (a < b each) by (length, a, b): a radix sort on the upper
+ * 32 bits of the squared length (sign, exponent, 20 mantissa bits), then
+ * the few runs that tie there are finished with exact comparisons.
+ */
 static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
 {
     uint64_t *key = qc__alloc_array(ctx, m, sizeof *key);
-    uint32_t *val = qc__alloc_array(ctx, m, sizeof *val);
-    size_t i;
-    int rc = QC_ENOMEM;
+    size_t i, r;
 
-    if (key == NULL || val == NULL)
-        goto out_free;
+    if (key == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "mst: out of memory sorting %lu edges",
+                        (unsigned long)m);
     for (i = 0; i < m; i++)
-        key[i] = (uint64_t)e[i].a << 32 | e[i].b;
-    if (qc__radix_sort(ctx, key, NULL, m, 0) < 0)
-        goto out_free;
-    for (i = 0; i < m; i++) {
-        e[i].a = (uint32_t)(key[i] >> 32);
-        e[i].b = (uint32_t)key[i];
-        key[i] = len_key(len2(p, e[i].a, e[i].b));
-        val[i] = (uint32_t)i;
+        key[i] = (len_key(len2(p, e[i].a, e[i].b)) >> 32) << 32 | (uint64_t)i;
+    if (qc__radix_sort(ctx, key, NULL, m, 32) < 0) {
+        qc__free(ctx, key, m * sizeof *key);
+        return QC_ENOMEM;
     }
-    if (qc__radix_sort(ctx, key, val, m, 0) < 0)
-        goto out_free;
-    /* Permute through key[] as scratch: e[val[i]] -> position i. */
-    for (i = 0; i < m; i++)
-        key[i] = (uint64_t)e[val[i]].a << 32 | e[val[i]].b;
+    /* Permute through key[] as scratch: e[index in key[i]] -> position i. */
+    for (i = 0; i < m; i++) {
+        qc_edge x = e[(uint32_t)key[i]];
+        key[i] = (uint64_t)x.a << 32 | x.b;
+    }
     for (i = 0; i < m; i++) {
         e[i].a = (uint32_t)(key[i] >> 32);
         e[i].b = (uint32_t)key[i];
     }
-    rc = QC_OK;
-out_free:
     qc__free(ctx, key, m * sizeof *key);
-    qc__free(ctx, val, m * sizeof *val);
-    return rc < 0 ? qc__fail(ctx, rc, "mst: out of memory sorting %lu edges",
-                             (unsigned long)m)
-                  : rc;
+    for (i = 0; i < m; i = r) {
+        uint64_t hi = len_key(len2(p, e[i].a, e[i].b)) >> 32;
+
+        for (r = i + 1; r < m && len_key(len2(p, e[r].a, e[r].b)) >> 32 == hi; r++)
+            ;
+        if (r - i > 1)
+            sort_run(p, e + i, r - i);
+    }
+    return QC_OK;
 }
 
 static uint32_t find(uint32_t *parent, uint32_t x)
@@ -142,15 +197,6 @@ out_free:
     return rc;
 }
 
-/* (l1, a1, b1) < (l2, a2, b2) with a < b in each. */
-static int before(double l1, uint32_t a1, uint32_t b1, double l2, uint32_t a2,
-                  uint32_t b2)
-{
-    if (l1 != l2)
-        return l1 < l2;
-    return a1 != a2 ? a1 < a2 : b1 < b2;
-}
-
 static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
 {
     double *best = qc__alloc_array(ctx, n, sizeof *best);
@@ -213,6 +259,9 @@ int qc_mst(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mst_mode mode,
 
     if (mode != QC_MST_MODE_DELAUNAY && mode != QC_MST_MODE_COMPLETE)
         return qc__fail(ctx, QC_EINVAL, "mst: unknown mode %d", (int)mode);
+    if (n >= ((size_t)1 << 30)) /* edge indices must fit in 32 bits */
+        return qc__fail(ctx, QC_ELIMIT, "mst: %lu points, at most 2^30 - 1",
+                        (unsigned long)n);
     if (mode == QC_MST_MODE_COMPLETE && n > COMPLETE_MAX)
         return qc__fail(ctx, QC_ELIMIT,
                         "mst: complete graph of %lu points, at most %d",
