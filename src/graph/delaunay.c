@@ -19,9 +19,9 @@ typedef struct bedge {
 typedef struct dt {
     const qc_vec2 *q; /* points in insertion order */
     uint32_t inf;     /* == number of points: the ghost vertex */
-    uint32_t *tr;     /* 6 per triangle: vertices CCW, then the neighbour
-                         across v[i]v[i+1] (one cache line for both) */
-    uint32_t *stamp;  /* cavity mark per triangle */
+    uint32_t *tr;     /* 8 per triangle: vertices CCW, the neighbours across
+                         v[i]v[i+1], the cavity mark, padding: 32 bytes, so
+                         a triangle never straddles a cache line */
     uint32_t *start;  /* per vertex (+ INF): new triangle whose boundary edge starts there */
     uint32_t ntri, last, it;
     uint32_t *cav;
@@ -31,8 +31,9 @@ typedef struct dt {
     uint64_t rng;
 } dt;
 
-#define TV(d, t) ((d)->tr + 6 * (size_t)(t))
+#define TV(d, t) ((d)->tr + 8 * (size_t)(t))
 #define TN(d, t) (TV(d, t) + 3)
+#define TS(d, t) (TV(d, t)[6])
 
 /* The predicates' floating-point filters, inlined here for speed; the exact
  * functions decide whenever the filter cannot. */
@@ -123,19 +124,19 @@ static int insert(qc_ctx *ctx, dt *d, uint32_t pi)
     if (d->cav_cap == 0)
         QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, 1));
     d->cav[ncav++] = t0;
-    d->stamp[t0] = d->it;
+    TS(d, t0) = d->it;
     for (k = 0; k < ncav; k++) {
         uint32_t t = d->cav[k], i;
 
         for (i = 0; i < 3; i++) {
             uint32_t o = TN(d, t)[i];
 
-            if (d->stamp[o] == d->it)
+            if (TS(d, o) == d->it)
                 continue;
             if (conflict(d, o, p)) {
                 if (ncav == d->cav_cap)
                     QC__TRY(QC__RESERVE(ctx, d->cav, d->cav_cap, ncav + 1));
-                d->stamp[o] = d->it;
+                TS(d, o) = d->it;
                 d->cav[ncav++] = o;
             } else {
                 if (nb == d->b_cap)
@@ -200,8 +201,7 @@ static void dt_free(qc_ctx *ctx, dt *d, size_t m)
 {
     size_t cap = 2 * m + 2;
 
-    qc__free(ctx, d->tr, 6 * cap * sizeof *d->tr);
-    qc__free(ctx, d->stamp, cap * sizeof *d->stamp);
+    qc__free(ctx, d->tr, 8 * cap * sizeof *d->tr);
     qc__free(ctx, d->start, (m + 1) * sizeof *d->start);
     qc__free(ctx, d->cav, d->cav_cap * sizeof *d->cav);
     qc__free(ctx, d->b, d->b_cap * sizeof *d->b);
@@ -219,12 +219,11 @@ int qc__triangulate(qc_ctx *ctx, const qc_vec2 *q, const uint32_t *orig,
     d.q = q;
     d.inf = m;
     d.rng = 0x853c49e6748fea9bu;
-    d.tr = qc__alloc_array(ctx, 6 * cap, sizeof *d.tr);
-    d.stamp = qc__alloc_array(ctx, cap, sizeof *d.stamp);
+    d.tr = qc__alloc_array(ctx, 8 * cap, sizeof *d.tr);
     d.start = qc__alloc_array(ctx, (size_t)m + 1, sizeof *d.start);
-    if (d.tr == NULL || d.stamp == NULL || d.start == NULL)
+    if (d.tr == NULL || d.start == NULL)
         goto out_free;
-    memset(d.stamp, 0, cap * sizeof *d.stamp);
+    memset(d.tr, 0, 8 * cap * sizeof *d.tr);
     init_triangle(&d);
     for (i = 3; i < m; i++)
         if ((rc = insert(ctx, &d, i)) < 0)
