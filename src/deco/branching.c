@@ -14,6 +14,10 @@
 
 enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 
+/* Unit-frame radius round the attachment left out of the vine test: the
+ * motif necessarily meets the vine there. */
+#define TRIM 0.4
+
 typedef struct spot {
     uint32_t seg;    /* vine cubic */
     double t;        /* parameter in it */
@@ -239,7 +243,7 @@ static int make_shapes(run *r)
         pts.n = 0;
         rc = qc_curve_flatten(r->ctx, &m->path, 1e-3, &pts, NULL);
         for (j = 0; rc == QC_OK && j < pts.n; j++)
-            if (qc_hypot(pts.v[j].x - m->entry.x, pts.v[j].y - m->entry.y) > 0.3)
+            if (qc_hypot(pts.v[j].x - m->entry.x, pts.v[j].y - m->entry.y) > TRIM)
                 pts.v[keep++] = pts.v[j];
         if (rc == QC_OK && keep < 3) { /* too small to trim: the whole hull */
             keep = m->nhull;
@@ -331,7 +335,11 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     if (!(gap >= 0))
         gap = 0;
     if (motifs == NULL || motifs->n == 0) {
-        QC__TRY(qc_motif_builtin(ctx, "leaf", &def));
+        rc = qc_motif_builtin(ctx, "leaf", &def);
+        if (rc != QC_OK) {
+            qc_motif_set_free(ctx, &def);
+            return rc;
+        }
         motifs = &def;
     }
     r.ctx = ctx;

@@ -125,8 +125,8 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
     switch (b->kind) {
     case M_LEAF:
         M(g, 0, 0);
-        C(g, 0.45, 0.25, 0.5, 0.9, 0, 1.45);
-        C(g, -0.5, 0.9, -0.45, 0.25, 0, 0);
+        C(g, 0.3, 0.3, 0.55, 0.8, 0, 1.45);
+        C(g, -0.55, 0.8, -0.3, 0.3, 0, 0);
         break;
     case M_HEART:
         M(g, 0, 0);
@@ -152,10 +152,10 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         spiral(g, v2(0, 1), 0.5, 0.5, QC_PI / 2, -3 * QC_PI, 8);
         break;
     case M_LOOP:
-        M(g, 0, 0);
-        C(g, 0.15, 0.55, 0.75, 0.95, 0.5, 1.35);
-        C(g, 0.3, 1.7, -0.5, 1.6, -0.5, 1.2);
-        C(g, -0.5, 0.8, -0.1, 0.5, 0, 0);
+        M(g, 0, 0); /* up, round the top, crossing back down to the start */
+        C(g, -0.15, 0.35, 0.55, 0.75, 0.5, 1.2);
+        C(g, 0.45, 1.65, -0.5, 1.65, -0.5, 1.15);
+        C(g, -0.5, 0.7, 0.3, 0.4, 0, 0);
         break;
     case M_TEARDROP:
         M(g, 0, 0);

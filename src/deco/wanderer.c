@@ -1,23 +1,45 @@
 /*
  * Wanderer (paper §5.2): a two-legged primitive centred on each tour point,
- * its leg bisector turned towards CC_prev + CC_next, the variant whose legs
- * make angles closest to 60 degrees with the joins; neighbours joined by
- * cubic Béziers leaving and meeting the legs with tangents l * |P0P3|.
- * A join that would cross a primitive, another join or the boundary is
- * retried with shorter tangents; what still crosses is counted.
+ * its leg bisector turned towards CC_prev + CC_next, the variant (and
+ * mirror image) whose legs make angles closest to 60 degrees with the
+ * directions to its neighbours; neighbours joined by cubic Béziers that
+ * leave and meet the legs with tangents l * |P0P3|. A join that would cross
+ * another primitive's hull, another join or the boundary is retried with
+ * shorter tangents (l/2, l/4, 0), then with the next primitive's other
+ * variants; what still crosses is kept as stated and counted.
  */
 #include <math.h>
 #include <string.h>
 
 #include "deco_internal.h"
 
-enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16 };
+enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 };
 
 typedef struct prim {
     qc__xf xf;
     uint32_t m;
+    uint32_t rec;  /* its hull's record in the grid */
     qc_vec2 entry, exit, in_dir, out_dir; /* world */
 } prim;
+
+typedef struct cand {
+    double score;
+    uint32_t m;
+    int mirror;
+} cand;
+
+typedef struct wrun {
+    qc_ctx *ctx;
+    const qc_motif_set *set;
+    uint32_t *var;
+    size_t nvar;
+    double s;
+    qc__cgrid grid;
+    uint32_t *rec_owner; /* hull records: owner primitive, or UINT32_MAX when replaced */
+    size_t nrec, rec_cap;
+    qc_vec2 *hbuf;
+    size_t nhbuf;
+} wrun;
 
 static qc_vec2 unit(double x, double y)
 {
@@ -37,10 +59,7 @@ static double angle_between(qc_vec2 a, qc_vec2 b)
 
 static qc_vec2 lin(const qc__xf *f, qc_vec2 d)
 {
-    qc_vec2 r;
-    r.x = f->a * d.x + f->b * d.y;
-    r.y = f->c * d.x + f->d * d.y;
-    return unit(r.x, r.y);
+    return unit(f->a * d.x + f->b * d.y, f->c * d.x + f->d * d.y);
 }
 
 /* The map of motif m centred at c, bisector along bis, scaled k, mirrored or not. */
@@ -55,7 +74,7 @@ static qc__xf orient(const qc_motif *m, qc_vec2 c, qc_vec2 bis, double k, int mi
     co = mb.x * bis.x + mb.y * bis.y;
     si = mb.x * bis.y - mb.y * bis.x;
     a = co; b = -si; cc = si; d = co;
-    if (mirror) { /* reflect about the bisector first: H = 2 mb mb^T - I */
+    if (mirror) { /* reflect about the motif's bisector first: H = 2 mb mb^T - I */
         double h00 = 2 * mb.x * mb.x - 1, h01 = 2 * mb.x * mb.y, h11 = 2 * mb.y * mb.y - 1;
         double na = a * h00 + b * h01, nb = a * h01 + b * h11;
         double nc = cc * h00 + d * h01, nd = cc * h01 + d * h11;
@@ -67,19 +86,70 @@ static qc__xf orient(const qc_motif *m, qc_vec2 c, qc_vec2 bis, double k, int mi
     return f;
 }
 
+static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 bis)
+{
+    const qc_motif *mo = &w->set->m[m];
+    prim p;
+
+    memset(&p, 0, sizeof p);
+    p.xf = orient(mo, c, bis, w->s / 2, mirror);
+    p.m = m;
+    p.in_dir = lin(&p.xf, mo->entry_dir);
+    p.out_dir = lin(&p.xf, mo->exit_dir);
+    p.entry = qc__xf_apply(&p.xf, mo->entry);
+    p.exit = qc__xf_apply(&p.xf, mo->exit);
+    return p;
+}
+
+/* Every (variant, mirror) for tour point i, best first; returns the count. */
+static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd)
+{
+    size_t n = sk->norder, v, k, nc = 0;
+    qc_vec2 c = sk->p[sk->order[i]];
+    qc_vec2 pv = sk->p[sk->order[(i + n - 1) % n]], nx = sk->p[sk->order[(i + 1) % n]];
+    qc_vec2 dp = unit(pv.x - c.x, pv.y - c.y), dn = unit(nx.x - c.x, nx.y - c.y);
+    qc_vec2 bis = unit(dp.x + dn.x, dp.y + dn.y);
+    int mir;
+
+    if (bis.x == 0 && bis.y == 0) /* straight through: bend to the left */
+        bis = unit(-dn.y, dn.x);
+    if (bis.x == 0 && bis.y == 0)
+        bis.y = -1;
+    if (n == 1)
+        dp = dn = bis;
+    for (v = 0; v < w->nvar && nc < MAXV; v++) {
+        for (mir = 0; mir < 2; mir++) {
+            prim p = make_prim(w, w->var[v], mir, c, bis);
+            cand t;
+            t.score = fabs(fabs(angle_between(p.in_dir, dp)) - 60) +
+                      fabs(fabs(angle_between(p.out_dir, dn)) - 60);
+            t.m = w->var[v];
+            t.mirror = mir;
+            for (k = nc; k > 0 && cd[k - 1].score > t.score + 1e-9; k--)
+                cd[k] = cd[k - 1];
+            cd[k] = t;
+            nc++;
+        }
+    }
+    *bis_out = bis;
+    return nc;
+}
+
 typedef struct skipctx {
+    const wrun *w;
     uint32_t i, n, seg;
-    int own_ok; /* segments this close to an end may touch their own primitive */
 } skipctx;
 
 static int skip_fn(void *ud, unsigned kind, uint32_t id)
 {
     const skipctx *s = ud;
     uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
-    if (kind == K_PRIM)
-        return (id == s->i && s->seg < 2) || (id == next && s->seg + 2 >= NFLAT);
-    if (kind == K_JOIN)
-        return (id == prev && s->seg < 2) || (id == next && s->seg + 2 >= NFLAT) || id == s->i;
+    if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
+        uint32_t owner = s->w->rec_owner[id];
+        return owner == UINT32_MAX || owner == s->i || owner == next;
+    }
+    if (kind == K_JOIN) /* neighbouring joins share end points */
+        return (id == prev && s->seg < 2) || (id == next && s->seg + 2 >= NFLAT);
     return 0;
 }
 
@@ -103,87 +173,122 @@ static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o
     }
 }
 
+/* Whether the join i (polyline f) crosses anything it must not. */
+static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
+{
+    skipctx sk;
+    size_t k;
+
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)n;
+    for (k = 0; k < NFLAT; k++) {
+        sk.seg = (uint32_t)k;
+        if (qc__cgrid_hit(&w->grid, f + k, 2, 1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN,
+                          skip_fn, &sk))
+            return 1;
+    }
+    return 0;
+}
+
+/* Adds primitive i's hull as a new record. */
+static int add_hull(wrun *w, prim *p, uint32_t owner)
+{
+    const qc_motif *m = &w->set->m[p->m];
+    size_t k;
+
+    QC__TRY(QC__RESERVE(w->ctx, w->rec_owner, w->rec_cap, w->nrec + 1));
+    for (k = 0; k < m->nhull; k++)
+        w->hbuf[k] = qc__xf_apply(&p->xf, m->hull[k]);
+    QC__TRY(qc__cgrid_add(w->ctx, &w->grid, w->hbuf, m->nhull, K_PRIM, (uint32_t)w->nrec));
+    p->rec = (uint32_t)w->nrec;
+    w->rec_owner[w->nrec++] = owner;
+    return QC_OK;
+}
+
+/* Tries the tangent ladder for join a -> b: 1 and the controls when clear. */
+static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, size_t n,
+                    qc_vec2 *c1, qc_vec2 *c2, qc_vec2 *f)
+{
+    static const double shrink[] = {1, 0.5, 0.25, 0};
+    size_t tr;
+
+    for (tr = 0; tr < 4; tr++) {
+        join_ctrl(a, b, l * shrink[tr], c1, c2);
+        flat_join(a->exit, *c1, *c2, b->entry, f);
+        if (!join_hits(w, f, i, n))
+            return 1;
+        if (l == 0)
+            break;
+    }
+    return 0;
+}
+
 int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                      const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
                      qc_stats *stats)
 {
     qc_motif_set def = {0};
-    const qc_motif_set *set = motifs;
+    wrun w;
     prim *pr = NULL;
-    uint32_t *var = NULL;
-    size_t nvar = 0, n, i, ring;
-    double s, l = params->tangent;
-    qc__cgrid grid;
+    cand cd[MAXV];
+    size_t n, i, ring, maxhull = 0;
+    double l = params->tangent;
     qc_stats dummy;
     int rc = QC_OK;
 
-    memset(&grid, 0, sizeof grid);
+    memset(&w, 0, sizeof w);
     if (stats == NULL)
         stats = memset(&dummy, 0, sizeof dummy);
     if (skel == NULL || skel->norder == 0)
         return qc__fail(ctx, QC_EEMPTY, "wanderer needs at least one point");
-    s = params->size;
-    if (!(s > 0))
-        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", s);
+    if (!(params->size > 0))
+        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", params->size);
     if (!(l >= 0))
         l = 0;
     n = skel->norder;
-    if (set != NULL)
-        for (i = 0; i < set->n; i++)
-            nvar += set->m[i].legs == 2;
-    if (nvar == 0) {
-        QC__TRY(qc_motif_builtin(ctx, "loop30,loop60,loop90,loop120", &def));
-        set = &def;
+    w.ctx = ctx;
+    w.s = params->size;
+    w.set = motifs;
+    if (motifs != NULL)
+        for (i = 0; i < motifs->n; i++)
+            w.nvar += motifs->m[i].legs == 2;
+    if (w.nvar == 0) { /* no primitive with legs given: the loops */
+        rc = qc_motif_builtin(ctx, "loop30,loop60,loop90,loop120", &def);
+        if (rc != QC_OK) {
+            qc_motif_set_free(ctx, &def);
+            return rc;
+        }
+        w.set = &def;
     }
-    var = qc__alloc_array(ctx, set->n, sizeof *var);
+    w.var = qc__alloc_array(ctx, w.set->n, sizeof *w.var);
     pr = qc__alloc_array(ctx, n, sizeof *pr);
-    if (var == NULL || pr == NULL) {
+    if (w.var == NULL || pr == NULL) {
         rc = QC_ENOMEM;
         goto out_free;
     }
-    nvar = 0;
-    for (i = 0; i < set->n; i++)
-        if (set->m[i].legs == 2)
-            var[nvar++] = (uint32_t)i;
-
-    /* Primitives: centred, bisector to CC_prev + CC_next, best variant. */
-    for (i = 0; i < n; i++) {
-        qc_vec2 c = skel->p[skel->order[i]];
-        qc_vec2 pv = skel->p[skel->order[(i + n - 1) % n]], nx = skel->p[skel->order[(i + 1) % n]];
-        qc_vec2 dp = unit(pv.x - c.x, pv.y - c.y), dn = unit(nx.x - c.x, nx.y - c.y);
-        qc_vec2 bis = unit(dp.x + dn.x, dp.y + dn.y);
-        double best = 1e300;
-        size_t v;
-        int mir;
-        if (bis.x == 0 && bis.y == 0)
-            bis = unit(-dn.y, dn.x);
-        if (bis.x == 0 && bis.y == 0)
-            bis.y = -1;
-        if (n == 1)
-            dp = dn = bis;
-        for (v = 0; v < nvar; v++) {
-            for (mir = 0; mir < 2; mir++) {
-                const qc_motif *m = &set->m[var[v]];
-                qc__xf f = orient(m, c, bis, s / 2, mir);
-                qc_vec2 ind = lin(&f, m->entry_dir), outd = lin(&f, m->exit_dir);
-                double sc = fabs(fabs(angle_between(ind, dp)) - 60) +
-                            fabs(fabs(angle_between(outd, dn)) - 60);
-                if (sc < best - 1e-9) {
-                    best = sc;
-                    pr[i].xf = f;
-                    pr[i].m = var[v];
-                    pr[i].in_dir = ind;
-                    pr[i].out_dir = outd;
-                    pr[i].entry = qc__xf_apply(&f, m->entry);
-                    pr[i].exit = qc__xf_apply(&f, m->exit);
-                }
-            }
-        }
+    w.nvar = 0;
+    for (i = 0; i < w.set->n; i++) {
+        if (w.set->m[i].legs == 2)
+            w.var[w.nvar++] = (uint32_t)i;
+        if (w.set->m[i].nhull > maxhull)
+            maxhull = w.set->m[i].nhull;
     }
+    w.hbuf = qc__alloc_array(ctx, maxhull, sizeof *w.hbuf);
+    if (w.hbuf == NULL) {
+        rc = QC_ENOMEM;
+        goto out_free;
+    }
+    w.nhbuf = maxhull;
 
+    for (i = 0; i < n; i++) { /* each primitive its best variant */
+        qc_vec2 bis;
+        rank(&w, skel, i, &bis, cd);
+        pr[i] = make_prim(&w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+    }
     {
         qc_bbox b = qc_region_bbox(region);
-        double cell = s;
+        double s = w.s;
         for (i = 0; i < n; i++) {
             qc_vec2 c = skel->p[skel->order[i]];
             b.min.x = fmin(b.min.x, c.x);
@@ -192,7 +297,7 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
             b.max.y = fmax(b.max.y, c.y);
         }
         b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
-        rc = qc__cgrid_init(ctx, &grid, b, cell, 8 * n + 4096);
+        rc = qc__cgrid_init(ctx, &w.grid, b, s, 8 * n + 4096);
     }
     for (ring = 0; rc == QC_OK && ring < region->nrings; ring++) {
         size_t lo = ring ? region->ring_end[ring - 1] : 0, hi = region->ring_end[ring];
@@ -200,62 +305,67 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
             qc_vec2 e[2];
             e[0] = region->v[i];
             e[1] = region->v[i + 1 < hi ? i + 1 : lo];
-            rc = qc__cgrid_add(ctx, &grid, e, 2, K_BOUND, 0);
+            rc = qc__cgrid_add(ctx, &w.grid, e, 2, K_BOUND, 0);
         }
     }
-    for (i = 0; rc == QC_OK && i < n; i++) {
-        const qc_motif *m = &set->m[pr[i].m];
-        qc_vec2 h[256];
-        size_t k, nh = m->nhull < 256 ? m->nhull : 256;
-        for (k = 0; k < nh; k++)
-            h[k] = qc__xf_apply(&pr[i].xf, m->hull[k]);
-        rc = qc__cgrid_add(ctx, &grid, h, nh, K_PRIM, (uint32_t)i);
-    }
+    for (i = 0; rc == QC_OK && i < n; i++)
+        rc = add_hull(&w, &pr[i], (uint32_t)i);
 
     /* The path: primitive, join, primitive, ..., back to the first. */
     if (rc == QC_OK)
         rc = qc_path_move_to(ctx, out, pr[0].entry);
     for (i = 0; rc == QC_OK && i < n; i++) {
-        const prim *a = &pr[i], *b = &pr[(i + 1) % n];
-        static const double shrink[] = {1, 0.5, 0.25, 0};
+        size_t j = (i + 1) % n, k, nc, alt;
         qc_vec2 c1, c2, f[NFLAT + 1];
-        size_t tr, k;
-        int crossed = 1;
-        rc = qc__path_append_xf(ctx, out, &set->m[a->m].path, &a->xf);
+        int ok;
+        rc = qc__path_append_xf(ctx, out, &w.set->m[pr[i].m].path, &pr[i].xf);
         if (rc != QC_OK || n == 1)
             break;
-        for (tr = 0; tr < 4 && crossed; tr++) {
-            skipctx sk;
-            join_ctrl(a, b, l * shrink[tr], &c1, &c2);
-            flat_join(a->exit, c1, c2, b->entry, f);
-            sk.i = (uint32_t)i;
-            sk.n = (uint32_t)n;
-            crossed = 0;
-            for (k = 0; k < NFLAT && !crossed; k++) {
-                sk.seg = (uint32_t)k;
-                crossed = qc__cgrid_hit(&grid, f + k, 2, 1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN,
-                                        skip_fn, &sk);
+        ok = try_join(&w, &pr[i], &pr[j], l, i, n, &c1, &c2, f);
+        if (!ok && j != 0) { /* the next primitive's other variants, unless it is sewn */
+            qc_vec2 bis;
+            nc = rank(&w, skel, j, &bis, cd);
+            for (alt = 1; alt < nc && !ok; alt++) {
+                prim q = make_prim(&w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
+                const qc_motif *m = &w.set->m[q.m];
+                skipctx sk;
+                for (k = 0; k < m->nhull; k++)
+                    w.hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
+                sk.w = &w;
+                sk.i = (uint32_t)j; /* its hull may meet its own joins and primitives */
+                sk.n = (uint32_t)n;
+                sk.seg = NFLAT / 2;
+                if (qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_JOIN | 1u << K_BOUND, skip_fn, &sk))
+                    continue;
+                if (try_join(&w, &pr[i], &q, l, i, n, &c1, &c2, f)) {
+                    w.rec_owner[pr[j].rec] = UINT32_MAX;
+                    pr[j] = q;
+                    rc = add_hull(&w, &pr[j], (uint32_t)j);
+                    ok = 1;
+                }
             }
-            if (!crossed && tr > 0)
-                break;
         }
-        if (crossed) { /* nothing helped: keep the stated tangents */
+        if (rc != QC_OK)
+            break;
+        if (!ok) { /* nothing helped: keep the stated tangents */
             stats->joins_unfixed++;
-            join_ctrl(a, b, l, &c1, &c2);
-            flat_join(a->exit, c1, c2, b->entry, f);
+            join_ctrl(&pr[i], &pr[j], l, &c1, &c2);
+            flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
         }
         for (k = 0; k < NFLAT && rc == QC_OK; k++)
-            rc = qc__cgrid_add(ctx, &grid, f + k, 2, K_JOIN, (uint32_t)i);
+            rc = qc__cgrid_add(ctx, &w.grid, f + k, 2, K_JOIN, (uint32_t)i);
         if (rc == QC_OK)
-            rc = qc_path_cubic_to(ctx, out, c1, c2, b->entry);
+            rc = qc_path_cubic_to(ctx, out, c1, c2, pr[j].entry);
     }
     if (rc == QC_OK)
         stats->motifs_placed += n;
 
 out_free:
-    qc__cgrid_free(ctx, &grid);
+    qc__cgrid_free(ctx, &w.grid);
+    qc__free(ctx, w.rec_owner, w.rec_cap * sizeof *w.rec_owner);
+    qc__free(ctx, w.hbuf, w.nhbuf * sizeof *w.hbuf);
     qc__free(ctx, pr, n * sizeof *pr);
-    qc__free(ctx, var, set->n * sizeof *var);
+    qc__free(ctx, w.var, w.set->n * sizeof *w.var);
     qc_motif_set_free(ctx, &def);
     return rc;
 }
