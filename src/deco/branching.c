@@ -17,6 +17,8 @@ enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 /* Unit-frame radius round the attachment left out of the vine test: the
  * motif necessarily meets the vine there. */
 #define TRIM 0.4
+/* The vine is tested as chords within this fraction of s of the curve. */
+#define VINE_TOL 0.01
 
 typedef struct spot {
     uint32_t seg;    /* vine cubic */
@@ -120,12 +122,12 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
 
     for (i = 0; i < nf; i++)
         full[i] = qc__xf_apply(&f, m->hull[i]);
-    for (i = 0; i < nb; i++)
-        body[i] = qc__xf_apply(&f, sh->body[i]);
-    if (!qc_region_contains(r->region, full[0]))
-        return 0;
     if (qc__cgrid_hit(&r->grid, full, nf, 1u << K_BOUND | 1u << K_MOTIF, NULL, NULL))
         return 0;
+    if (!qc_region_contains(r->region, full[0]))
+        return 0;
+    for (i = 0; i < nb; i++)
+        body[i] = qc__xf_apply(&f, sh->body[i]);
     if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
         return 0;
     *rc = QC__RESERVE(r->ctx, r->spots, r->spots_cap, r->nspots + 1);
@@ -323,7 +325,8 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     qc_stats dummy;
     double s = params->size, gap = params->gap, alpha = params->angle, step, acc = 0;
     size_t i, j, nseg, ring;
-    int rc = QC_OK, side = 1;
+    unsigned char *seen = NULL;
+    int rc = QC_OK, side = 1, walk;
 
     memset(&r, 0, sizeof r);
     if (stats == NULL)
@@ -380,12 +383,22 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
             rc = QC_ENOMEM;
     }
     if (rc == QC_OK) {
-        qc_bbox b = qc_region_bbox(region), vb = qc_curve_bbox(&vine, 0.01);
+        qc_bbox b = qc_region_bbox(region), vb;
+        vb.min = vb.max = vine.pt[0]; /* control points bound the curve */
+        for (i = 1; i < vine.npt; i++) {
+            vb.min.x = fmin(vb.min.x, vine.pt[i].x);
+            vb.min.y = fmin(vb.min.y, vine.pt[i].y);
+            vb.max.x = fmax(vb.max.x, vine.pt[i].x);
+            vb.max.y = fmax(vb.max.y, vine.pt[i].y);
+        }
         b.min.x = fmin(b.min.x, vb.min.x) - s;
         b.min.y = fmin(b.min.y, vb.min.y) - s;
         b.max.x = fmax(b.max.x, vb.max.x) + s;
         b.max.y = fmax(b.max.y, vb.max.y) + s;
         rc = qc__cgrid_init(ctx, &r.grid, b, s, 16 * skel->norder + 4096);
+        if (rc == QC_OK) /* a guess at the vine's chords and the motifs: fewer regrowths */
+            rc = qc__cgrid_reserve(ctx, &r.grid, 4 * nseg + region->nv + 64,
+                                   16 * nseg + 2 * region->nv + 1024, 12 * nseg + 4 * region->nv + 256);
     }
     /* The boundary, every ring. */
     for (ring = 0; rc == QC_OK && ring < region->nrings; ring++) {
@@ -400,13 +413,14 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     /* The vine as short chords (within a few percent of s of the curve). */
     for (j = 0; rc == QC_OK && j < nseg; j++) {
         const qc_vec2 *q = vine.pt + 3 * j; /* MOVE point + 3 per cubic */
-        double len = qc_hypot(q[1].x - q[0].x, q[1].y - q[0].y) +
-                     qc_hypot(q[2].x - q[1].x, q[2].y - q[1].y) +
-                     qc_hypot(q[3].x - q[2].x, q[3].y - q[2].y);
-        size_t k, nk = (size_t)ceil(len / (s / 4));
+        /* chords within about VINE_TOL * s of the curve: n^2 >= dev / tol */
+        double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
+        double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
+        double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
+        size_t k, nk = (size_t)ceil(sqrt(dev / (VINE_TOL * s)));
         qc_vec2 prev = q[0];
-        if (nk < 2)
-            nk = 2;
+        if (nk < 1)
+            nk = 1;
         if (nk > 256)
             nk = 256;
         for (k = 1; k <= nk && rc == QC_OK; k++) {
@@ -440,13 +454,33 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
             rc = candidate(&r, pts.v[i], d, 0, alpha, s, (uint32_t)i, 0, stats);
         }
     }
-    /* Step 4: along the vine every step, alternating sides. */
+    /* Step 4: along each branch once (the walk's first pass down it), every
+     * step, alternating sides. */
     step = s / 2 + gap;
     acc = step / 2;
+    walk = skel->edges != NULL && nseg + 1 == pts.n && skel->n > 0;
+    if (rc == QC_OK && walk) {
+        seen = qc__alloc(ctx, skel->n);
+        if (seen == NULL)
+            rc = QC_ENOMEM;
+        else
+            memset(seen, 0, skel->n);
+    }
+    if (rc == QC_OK && walk)
+        seen[skel->order[0]] = 1;
     for (j = 0; rc == QC_OK && j < nseg; j++) {
         const qc_vec2 *q = vine.pt + 3 * j;
         size_t k, nk = 16;
         qc_vec2 prev = q[0];
+        if (walk) {
+            uint32_t to = skel->order[j + 1];
+            int down = !seen[to];
+            seen[to] = 1;
+            if (!down) {
+                acc = step / 2;
+                continue;
+            }
+        }
         for (k = 1; k <= nk && rc == QC_OK; k++) {
             double t = (double)k / nk;
             qc_vec2 p = bez(q, t);
@@ -493,6 +527,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     }
 
 out_free:
+    qc__free(ctx, seen, seen != NULL ? skel->n : 0);
     qc__cgrid_free(ctx, &r.grid);
     free_shapes(&r);
     qc__free(ctx, r.buf, r.nbuf * sizeof *r.buf);

@@ -14,11 +14,21 @@ static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 
     b->min = b->max = p[0];
     for (i = 1; i < n; i++) {
-        b->min.x = fmin(b->min.x, p[i].x);
-        b->min.y = fmin(b->min.y, p[i].y);
-        b->max.x = fmax(b->max.x, p[i].x);
-        b->max.y = fmax(b->max.y, p[i].y);
+        if (p[i].x < b->min.x)
+            b->min.x = p[i].x;
+        if (p[i].y < b->min.y)
+            b->min.y = p[i].y;
+        if (p[i].x > b->max.x)
+            b->max.x = p[i].x;
+        if (p[i].y > b->max.y)
+            b->max.y = p[i].y;
     }
+}
+
+static int boxes_apart(const qc_bbox *a, const qc_bbox *b, double eps)
+{
+    return a->max.x + eps < b->min.x || b->max.x + eps < a->min.x ||
+           a->max.y + eps < b->min.y || b->max.y + eps < a->min.y;
 }
 
 int qc__cgrid_init(qc_ctx *ctx, qc__cgrid *g, qc_bbox box, double cell, size_t max_cells)
@@ -70,8 +80,8 @@ static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
     c[3] = (b->max.y - g->y0) / g->cell;
     for (k = 0; k < 4; k++) {
         double lim = (k & 1) ? g->ny - 1 : g->nx - 1;
-        c[k] = floor(c[k]);
-        r[k] = c[k] < 0 ? 0 : c[k] > lim ? (uint32_t)lim : (uint32_t)c[k];
+        /* truncation is floor here: negatives clamp to 0 first */
+        r[k] = !(c[k] >= 0) ? 0 : c[k] > lim ? (uint32_t)lim : (uint32_t)c[k];
     }
 }
 
@@ -103,6 +113,7 @@ int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
         }
     }
     memcpy(g->v + g->nv, poly, n * sizeof *poly);
+    g->item[g->nitem].box = b;
     g->item[g->nitem].off = (uint32_t)g->nv;
     g->item[g->nitem].n = (uint16_t)n;
     g->item[g->nitem].kind = (uint8_t)kind;
@@ -118,15 +129,20 @@ static void project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo
 {
     size_t i;
 
-    *lo = *hi = p[0].x * ax + p[0].y * ay;
+    double l = p[0].x * ax + p[0].y * ay, h = l;
+
     for (i = 1; i < n; i++) {
         double d = p[i].x * ax + p[i].y * ay;
-        *lo = fmin(*lo, d);
-        *hi = fmax(*hi, d);
+        if (d < l)
+            l = d;
+        if (d > h)
+            h = d;
     }
+    *lo = l;
+    *hi = h;
 }
 
-/* Whether an edge normal of a separates a from b. */
+/* Whether an edge normal of a separates a from b (eps in mm). */
 static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
 {
     size_t i, ne = na == 2 ? 1 : na;
@@ -134,17 +150,53 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
     for (i = 0; i < ne; i++) {
         qc_vec2 p = a[i], q = a[(i + 1) % na];
         double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
-        double alo, ahi, blo, bhi;
+        double alo, ahi, blo, bhi, e = eps * len;
         if (len < 1e-15)
             continue;
-        ax /= len;
-        ay /= len;
         project(a, na, ax, ay, &alo, &ahi);
         project(b, nb, ax, ay, &blo, &bhi);
-        if (ahi + eps < blo || bhi + eps < alo)
+        if (ahi + e < blo || bhi + e < alo)
             return 1;
     }
     return 0;
+}
+
+/* A segment against a convex CCW polygon in O(n): apart when one edge's
+ * outer half-plane holds both ends, or the segment's line misses the polygon. */
+static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps)
+{
+    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl = sqrt(dx * dx + dy * dy);
+    double lo, hi, c;
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = p[i], b = p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y, el = sqrt(ex * ex + ey * ey);
+        double s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
+        double s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        if (s0 < -eps * el && s1 < -eps * el) /* both right of a CCW edge: outside */
+            return 1;
+    }
+    if (sl < 1e-15)
+        return 0;
+    /* the segment's own normal */
+    project(p, n, -dy, dx, &lo, &hi);
+    c = -dy * s[0].x + dx * s[0].y;
+    return hi + eps * sl < c || c + eps * sl < lo;
+}
+
+/* SAT once the boxes overlap. */
+static int sat_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    if (na == 2 && nb >= 3)
+        return !seg_poly_apart(a, b, nb, eps);
+    if (nb == 2 && na >= 3)
+        return !seg_poly_apart(b, a, na, eps);
+    if (na >= 2 && separated_by(a, na, b, nb, eps))
+        return 0;
+    if (nb >= 2 && separated_by(b, nb, a, na, eps))
+        return 0;
+    return 1;
 }
 
 int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
@@ -153,14 +205,9 @@ int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, d
 
     poly_box(a, na, &ba);
     poly_box(b, nb, &bb);
-    if (ba.max.x + eps < bb.min.x || bb.max.x + eps < ba.min.x ||
-        ba.max.y + eps < bb.min.y || bb.max.y + eps < ba.min.y)
+    if (boxes_apart(&ba, &bb, eps))
         return 0;
-    if (na >= 2 && separated_by(a, na, b, nb, eps))
-        return 0;
-    if (nb >= 2 && separated_by(b, nb, a, na, eps))
-        return 0;
-    return 1;
+    return sat_touch(a, na, b, nb, eps);
 }
 
 int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
@@ -190,8 +237,58 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
                     continue;
                 if (skip != NULL && skip(ud, m->kind, m->id))
                     continue;
-                if (qc__convex_touch(poly, n, g->v + m->off, m->n, 1e-9))
+                if (!boxes_apart(&b, &m->box, 1e-9) && sat_touch(poly, n, g->v + m->off, m->n, 1e-9))
                     return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, size_t entries)
+{
+    QC__TRY(QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE(ctx, g->v, g->v_cap, g->nv + verts));
+    return QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + entries);
+}
+
+int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
+                           qc__cgrid_skip_seg skip, void *ud)
+{
+    qc_bbox b;
+    uint32_t r[4], x, y;
+    size_t k;
+
+    if (n < 2 || g->nitem == 0)
+        return 0;
+    if (++g->cur == 0) {
+        memset(g->stamp, 0, g->nitem * sizeof *g->stamp);
+        g->cur = 1;
+    }
+    poly_box(pts, n, &b);
+    cell_range(g, &b, r);
+    for (y = r[1]; y <= r[3]; y++) {
+        for (x = r[0]; x <= r[2]; x++) {
+            uint32_t e = g->head[(size_t)y * g->nx + x];
+            for (; e != UINT32_MAX; e = g->ent[e].next) {
+                uint32_t it = g->ent[e].item;
+                const qc__cgrid_item *m = &g->item[it];
+                if (g->stamp[it] == g->cur)
+                    continue;
+                g->stamp[it] = g->cur;
+                if (!(kinds & (1u << m->kind)) || boxes_apart(&b, &m->box, 1e-9))
+                    continue;
+                for (k = 0; k + 1 < n; k++) {
+                    qc_bbox sb;
+                    poly_box(pts + k, 2, &sb);
+                    if (boxes_apart(&sb, &m->box, 1e-9))
+                        continue;
+                    if (skip != NULL && skip(ud, m->kind, m->id, k))
+                        continue;
+                    if (sat_touch(pts + k, 2, g->v + m->off, m->n, 1e-9))
+                        return 1;
+                }
             }
         }
     }

@@ -41,6 +41,7 @@ QC__HIDDEN int qc__path_append_xf(qc_ctx *ctx, qc_path *out, const qc_path *path
 
 /* Convex polygons (2 vertices: a segment) binned in a uniform grid. */
 typedef struct qc__cgrid_item {
+    qc_bbox box;    /* prefilter */
     uint32_t off;   /* first vertex in v */
     uint16_t n;     /* vertex count */
     uint8_t kind;   /* caller's class: boundary, vine, motif, join ... */
@@ -79,6 +80,15 @@ QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, siz
  * not exclude (skip may be NULL), else 0. */
 QC__HIDDEN int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n,
                              unsigned kinds, qc__cgrid_skip skip, void *ud);
+/* Per-segment skip for polyline queries. */
+typedef int (*qc__cgrid_skip_seg)(void *ud, unsigned kind, uint32_t id, size_t seg);
+/* 1 if a segment of the polyline pts[0..n) touches an item (one pass over
+ * the cells under the polyline's box), else 0. */
+QC__HIDDEN int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n,
+                                      unsigned kinds, qc__cgrid_skip_seg skip, void *ud);
+/* Makes room for items more items of about verts vertices and entries cells in all. */
+QC__HIDDEN int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts,
+                                 size_t entries);
 /* Separating-axis test of two convex polygons (1 or 2 vertices allowed);
  * 1 if they touch or overlap (within eps mm). */
 QC__HIDDEN int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b,

@@ -246,7 +246,7 @@ static int flat(qc_ctx *ctx, const qc_path *path, qc_points *pts)
     return qc_curve_flatten(ctx, path, 1e-4, pts, NULL);
 }
 
-#define HULL_TOL 0.01
+#define HULL_TOL 0.04
 
 /* Moves every edge of the CCW convex polygon h outward by d (tmp: n points). */
 static void outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d)

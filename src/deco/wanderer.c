@@ -140,6 +140,19 @@ typedef struct skipctx {
     uint32_t i, n, seg;
 } skipctx;
 
+static int skip_seg(void *ud, unsigned kind, uint32_t id, size_t seg)
+{
+    const skipctx *s = ud;
+    uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
+    if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
+        uint32_t owner = s->w->rec_owner[id];
+        return owner == UINT32_MAX || owner == s->i || owner == next;
+    }
+    if (kind == K_JOIN) /* neighbouring joins share end points */
+        return (id == prev && seg < 2) || (id == next && seg + 2 >= NFLAT);
+    return 0;
+}
+
 static int skip_fn(void *ud, unsigned kind, uint32_t id)
 {
     const skipctx *s = ud;
@@ -177,18 +190,13 @@ static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o
 static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
 {
     skipctx sk;
-    size_t k;
 
     sk.w = w;
     sk.i = (uint32_t)i;
     sk.n = (uint32_t)n;
-    for (k = 0; k < NFLAT; k++) {
-        sk.seg = (uint32_t)k;
-        if (qc__cgrid_hit(&w->grid, f + k, 2, 1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN,
-                          skip_fn, &sk))
-            return 1;
-    }
-    return 0;
+    sk.seg = 0;
+    return qc__cgrid_hit_polyline(&w->grid, f, NFLAT + 1,
+                                  1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN, skip_seg, &sk);
 }
 
 /* Adds primitive i's hull as a new record. */
@@ -298,6 +306,10 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
         }
         b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
         rc = qc__cgrid_init(ctx, &w.grid, b, s, 8 * n + 4096);
+        if (rc == QC_OK)
+            rc = qc__cgrid_reserve(ctx, &w.grid, (NFLAT + 1) * n + region->nv,
+                                   (2 * NFLAT + maxhull) * n + 2 * region->nv,
+                                   (NFLAT * 2 + 4) * n + 4 * region->nv);
     }
     for (ring = 0; rc == QC_OK && ring < region->nrings; ring++) {
         size_t lo = ring ? region->ring_end[ring - 1] : 0, hi = region->ring_end[ring];
