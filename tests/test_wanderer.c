@@ -257,6 +257,26 @@ static void wanderer_should_choose_variants_and_repeat_for_a_seed(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+static void wanderer_should_use_the_legged_variants_of_a_named_motif(void)
+{
+    ttour t;
+    qc_skeleton sk;
+    qc_params par = params(0.5);
+    qc_motif_set set = {0};
+    qc_path out = {0};
+
+    square_tour(4, 2, 10, 4, &t);
+    sk = as_skel(&t);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_builtin(&ctx, "heart", &set));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_wanderer(&ctx, &t.r, &par, &sk, &set, &out, NULL));
+    /* heart60/heart90 bodies are four cubics, plus the join */
+    TEST_ASSERT_EQUAL_UINT(1 + 5 * t.n, out.ncmd);
+    qc_path_free(&ctx, &out);
+    qc_motif_set_free(&ctx, &set);
+    free_tour(&t);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 static void wanderer_should_refuse_empty_tours_and_handle_one_point(void)
 {
     ttour t;
@@ -307,6 +327,7 @@ int main(void)
     RUN_TEST(wanderer_should_join_legs_with_stated_tangents_in_a_square);
     RUN_TEST(wanderer_should_join_legs_in_a_circle);
     RUN_TEST(wanderer_should_choose_variants_and_repeat_for_a_seed);
+    RUN_TEST(wanderer_should_use_the_legged_variants_of_a_named_motif);
     RUN_TEST(wanderer_should_refuse_empty_tours_and_handle_one_point);
     RUN_TEST(wanderer_should_free_everything_when_allocation_fails);
     return UNITY_END();

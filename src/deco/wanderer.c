@@ -261,8 +261,26 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
     if (motifs != NULL)
         for (i = 0; i < motifs->n; i++)
             w.nvar += motifs->m[i].legs == 2;
-    if (w.nvar == 0) { /* no primitive with legs given: the loops */
-        rc = qc_motif_builtin(ctx, "loop30,loop60,loop90,loop120", &def);
+    if (w.nvar == 0) { /* no primitive with legs: the built-in variants of the
+                        * motifs named ("heart" -> heart60, heart90), else the loops */
+        char names[512];
+        size_t len = 0, b;
+        names[0] = '\0';
+        for (i = 0; motifs != NULL && i < motifs->n; i++) {
+            size_t nl = strlen(motifs->m[i].name);
+            for (b = 0; b < qc_motif_builtin_count(); b++) {
+                const char *bn = qc_motif_builtin_name(b);
+                size_t bl = strlen(bn);
+                if (nl == 0 || bl <= nl || memcmp(bn, motifs->m[i].name, nl) != 0 ||
+                    bn[nl] < '0' || bn[nl] > '9' || len + bl + 2 > sizeof names)
+                    continue;
+                if (len > 0)
+                    names[len++] = ',';
+                memcpy(names + len, bn, bl + 1);
+                len += bl;
+            }
+        }
+        rc = qc_motif_builtin(ctx, len > 0 ? names : "loop30,loop60,loop90,loop120", &def);
         if (rc != QC_OK) {
             qc_motif_set_free(ctx, &def);
             return rc;
