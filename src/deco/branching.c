@@ -19,6 +19,8 @@ enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 #define TRIM 0.4
 /* The vine is tested as chords within this fraction of s of the curve. */
 #define VINE_TOL 0.01
+/* Body hulls: a coarse polyline's hull pushed out by its tolerance (unit frame). */
+#define BODY_TOL 0.04
 
 typedef struct spot {
     uint32_t seg;    /* vine cubic */
@@ -165,52 +167,60 @@ static qc_vec2 rot(qc_vec2 d, double deg)
     return r;
 }
 
-/*
- * One candidate with resolution. tangent: the vine's forward direction;
- * side: +1 left, -1 right, 0 a tip (dir = tangent). Returns QC_OK or an error.
- */
-static int candidate(run *r, qc_vec2 a, qc_vec2 tangent, int side, double alpha, double s,
-                     uint32_t seg, double t, qc_stats *st)
+/* One attempt sequence for motif mi; 1 placed, 0 not, or an error. */
+static int resolve(run *r, uint32_t mi, qc_vec2 a, qc_vec2 tangent, int side, double alpha,
+                   double s, uint32_t seg, double t, qc_stats *st)
 {
     static const double scales[] = {1, 0.75, 0.5};
     static const double tip_turn[] = {0, 15, -15, 30, -30};
-    uint32_t mi = r->choice[r->nchoice > 1 ? qc_rng_below(&r->rng, r->nchoice) : 0];
+    size_t si, ai, nang = side == 0 ? 5 : 4;
     int rc = QC_OK, sd, flips = side != 0 ? 2 : 1;
-    size_t si, ai;
 
-    for (sd = 0; sd < flips; sd++) {
-        int sgn = sd == 0 ? side : -side;
-        size_t nang = side == 0 ? 5 : 4;
-        for (ai = 0; ai < nang; ai++) {
-            qc_vec2 dir;
-            double ang;
-            if (side == 0) {
-                ang = tip_turn[ai];
-                dir = rot(tangent, ang);
-            } else {
-                ang = alpha + 15.0 * (double)ai;
-                if (ai > 0 && ang > 60 + 1e-9) {
-                    if (alpha >= 60)
-                        break;
-                    ang = 60;
-                }
-                /* alpha from the normal, leaning forward */
-                dir = rot(tangent, sgn * (90 - ang));
-            }
-            for (si = 0; si < 3; si++) {
+    for (ai = 0; ai < nang; ai++) {
+        double ang = side == 0 ? tip_turn[ai] : alpha + 15.0 * (double)ai;
+        if (side != 0 && ai > 0 && ang > 60 + 1e-9) {
+            if (alpha >= 60)
+                break;
+            ang = 60;
+        }
+        for (si = 0; si < 3; si++) {
+            for (sd = 0; sd < flips; sd++) {
+                int sgn = sd == 0 ? side : -side;
+                /* tips turn about the tangent; elsewhere alpha from the normal, leaning forward */
+                qc_vec2 dir = side == 0 ? rot(tangent, ang) : rot(tangent, sgn * (90 - ang));
                 if (try_place(r, mi, a, dir, s / 2 * scales[si], seg, t, &rc)) {
                     st->motifs_placed++;
                     st->motifs_shrunk += si > 0;
                     st->motifs_rotated += ai > 0;
                     st->motifs_flipped += sd > 0;
-                    return QC_OK;
+                    return 1;
                 }
                 if (rc != QC_OK)
                     return rc;
             }
-            if (side != 0 && ang >= 60)
-                break;
         }
+        if (side != 0 && ang >= 60)
+            break;
+    }
+    return 0;
+}
+
+/*
+ * One candidate: the randomly chosen motif, then the set's others, each
+ * with the cheapest change first (the other side at full size keeps the
+ * look), then smaller, then turned towards the tip. tangent: the vine's
+ * forward direction; side: +1 left, -1 right, 0 a tip. QC_OK or an error.
+ */
+static int candidate(run *r, qc_vec2 a, qc_vec2 tangent, int side, double alpha, double s,
+                     uint32_t seg, double t, qc_stats *st)
+{
+    size_t first = r->nchoice > 1 ? (size_t)qc_rng_below(&r->rng, r->nchoice) : 0, c;
+
+    for (c = 0; c < r->nchoice; c++) {
+        int got = resolve(r, r->choice[(first + c) % r->nchoice], a, tangent, side, alpha, s,
+                          seg, t, st);
+        if (got != 0)
+            return got < 0 ? got : QC_OK;
     }
     st->motifs_skipped++;
     return QC_OK;
@@ -243,7 +253,7 @@ static int make_shapes(run *r)
         const qc_motif *m = &r->set->m[i];
         size_t keep = 0;
         pts.n = 0;
-        rc = qc_curve_flatten(r->ctx, &m->path, 1e-3, &pts, NULL);
+        rc = qc_curve_flatten(r->ctx, &m->path, BODY_TOL, &pts, NULL);
         for (j = 0; rc == QC_OK && j < pts.n; j++)
             if (qc_hypot(pts.v[j].x - m->entry.x, pts.v[j].y - m->entry.y) > TRIM)
                 pts.v[keep++] = pts.v[j];
@@ -271,6 +281,7 @@ static int make_shapes(run *r)
         }
         if (rc == QC_OK) {
             r->sh[i].nbody = qc__convex_hull(pts.v, keep, r->sh[i].body, scr);
+            qc__hull_outset(r->sh[i].body, r->sh[i].nbody, scr, BODY_TOL);
             r->sh[i].axis = unit((qc_vec2){-m->entry.x, -m->entry.y});
             if (r->sh[i].axis.x == 0 && r->sh[i].axis.y == 0)
                 r->sh[i].axis.y = 1;
@@ -365,6 +376,10 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     /* The vine: one cubic per walk step. */
     for (i = 0; i < skel->norder && rc == QC_OK; i++)
         rc = qc_points_push(ctx, &pts, skel->p[skel->order[i]]);
+    if (rc == QC_OK) /* room for the whole vine at once */
+        rc = QC__RESERVE(ctx, vine.cmd, vine.cmd_cap, pts.n + 1);
+    if (rc == QC_OK)
+        rc = QC__RESERVE(ctx, vine.pt, vine.pt_cap, 3 * pts.n + 1);
     if (rc == QC_OK)
         rc = qc_curve_catmull_rom(ctx, pts.v, pts.n, skel->edges == NULL, &vine);
     if (rc != QC_OK)
@@ -501,6 +516,16 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     /* Assemble: the vine, split at each attachment for the detour. */
     if (rc == QC_OK && r.nspots > 1)
         qsort(r.spots, r.nspots, sizeof *r.spots, cmp_spot);
+    if (rc == QC_OK) { /* room for the result at once: vine, splits and motifs */
+        size_t nc = out->ncmd + 1 + nseg + 2 * r.nspots, np = out->npt + 1 + 3 * (nseg + r.nspots);
+        for (i = 0; i < r.nspots; i++) {
+            nc += motifs->m[r.spots[i].motif].path.ncmd;
+            np += motifs->m[r.spots[i].motif].path.npt;
+        }
+        rc = QC__RESERVE(ctx, out->cmd, out->cmd_cap, nc);
+        if (rc == QC_OK)
+            rc = QC__RESERVE(ctx, out->pt, out->pt_cap, np);
+    }
     if (rc == QC_OK) {
         size_t sp = 0;
         rc = qc_path_move_to(ctx, out, vine.pt[0]);

@@ -14,6 +14,9 @@
  * points, written to out (room for 2n); scratch holds 2n. Returns the count. */
 QC__HIDDEN size_t qc__convex_hull(const qc_vec2 *pts, size_t n, qc_vec2 *out,
                                   qc_vec2 *scratch);
+/* Moves every edge of the CCW convex polygon h[0..n) outward by d, so a hull
+ * of a polyline within d of a curve holds the curve. tmp holds n points. */
+QC__HIDDEN void qc__hull_outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d);
 /* Minimum bounding circle of pts[0..n) (Welzl, iterative, the points visited
  * in a fixed pseudo-random order). scratch holds n points. n == 0: r = 0. */
 QC__HIDDEN void qc__min_circle(const qc_vec2 *pts, size_t n, qc_vec2 *scratch,

@@ -128,12 +128,14 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         C(g, 0.3, 0.3, 0.55, 0.8, 0, 1.45);
         C(g, -0.55, 0.8, -0.3, 0.3, 0, 0);
         break;
-    case M_HEART:
+    case M_HEART: /* on a short stem: its wide base stays off the vine */
         M(g, 0, 0);
-        C(g, 0.5, 0.35, 0.85, 0.75, 0.55, 1.1);
-        C(g, 0.35, 1.3, 0.05, 1.2, 0, 0.95);
-        C(g, -0.05, 1.2, -0.35, 1.3, -0.55, 1.1);
-        C(g, -0.85, 0.75, -0.5, 0.35, 0, 0);
+        L(g, 0, 0.4);
+        C(g, 0.5, 0.75, 0.85, 1.15, 0.55, 1.5);
+        C(g, 0.35, 1.7, 0.05, 1.6, 0, 1.35);
+        C(g, -0.05, 1.6, -0.35, 1.7, -0.55, 1.5);
+        C(g, -0.85, 1.15, -0.5, 0.75, 0, 0.4);
+        L(g, 0, 0);
         break;
     case M_FLOWER: /* a stem, five petals round its head, back down */
         M(g, 0, 0);
@@ -248,25 +250,6 @@ static int flat(qc_ctx *ctx, const qc_path *path, qc_points *pts)
 
 #define HULL_TOL 0.04
 
-/* Moves every edge of the CCW convex polygon h outward by d (tmp: n points). */
-static void outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d)
-{
-    size_t i;
-
-    if (n < 3)
-        return;
-    for (i = 0; i < n; i++) {
-        qc_vec2 a = h[(i + n - 1) % n], b = h[i], c = h[(i + 1) % n];
-        double l1 = qc_hypot(b.x - a.x, b.y - a.y), l2 = qc_hypot(c.x - b.x, c.y - b.y);
-        double n1x = (b.y - a.y) / l1, n1y = -(b.x - a.x) / l1;
-        double n2x = (c.y - b.y) / l2, n2y = -(c.x - b.x) / l2;
-        double k = d / (1 + n1x * n2x + n1y * n2y);
-        tmp[i].x = b.x + k * (n1x + n2x);
-        tmp[i].y = b.y + k * (n1y + n2y);
-    }
-    memcpy(h, tmp, n * sizeof *h);
-}
-
 static void map_path(qc_path *p, double k, qc_vec2 c)
 {
     size_t i;
@@ -335,7 +318,7 @@ int qc__motif_add(qc_ctx *ctx, qc_path *path, const char *name, int legs,
     if (rc == QC_OK) {
         qc_vec2 *h2;
         nh = qc__convex_hull(pts.v, pts.n, hull, scratch);
-        outset(hull, nh, scratch, HULL_TOL * (1 + 1e-6));
+        qc__hull_outset(hull, nh, scratch, HULL_TOL * (1 + 1e-6));
         h2 = qc__realloc(ctx, hull, hull_cap * sizeof *hull, nh * sizeof *hull);
         if (h2 == NULL) { /* keep the larger block */
             rc = qc__fail(ctx, QC_ENOMEM, "motif %s hull", name);

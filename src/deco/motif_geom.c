@@ -64,6 +64,25 @@ size_t qc__convex_hull(const qc_vec2 *pts, size_t n, qc_vec2 *out, qc_vec2 *scra
     return k > 1 ? k - 1 : k;
 }
 
+/* Moves every edge of the CCW convex polygon h outward by d (tmp: n points). */
+void qc__hull_outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d)
+{
+    size_t i;
+
+    if (n < 3)
+        return;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = h[(i + n - 1) % n], b = h[i], c = h[(i + 1) % n];
+        double l1 = qc_hypot(b.x - a.x, b.y - a.y), l2 = qc_hypot(c.x - b.x, c.y - b.y);
+        double n1x = (b.y - a.y) / l1, n1y = -(b.x - a.x) / l1;
+        double n2x = (c.y - b.y) / l2, n2y = -(c.x - b.x) / l2;
+        double k = d / (1 + n1x * n2x + n1y * n2y);
+        tmp[i].x = b.x + k * (n1x + n2x);
+        tmp[i].y = b.y + k * (n1y + n2y);
+    }
+    memcpy(h, tmp, n * sizeof *h);
+}
+
 static double dist2(qc_vec2 a, qc_vec2 b)
 {
     double dx = a.x - b.x, dy = a.y - b.y;
