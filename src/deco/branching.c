@@ -18,7 +18,7 @@ enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
  * motif necessarily meets the vine there. */
 #define TRIM 0.4
 /* The vine is tested as chords within this fraction of s of the curve. */
-#define VINE_TOL 0.01
+#define VINE_TOL 0.02
 /* Body hulls: a coarse polyline's hull pushed out by its tolerance (unit frame). */
 #define BODY_TOL 0.04
 
@@ -411,6 +411,8 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
         b.max.x = fmax(b.max.x, vb.max.x) + s;
         b.max.y = fmax(b.max.y, vb.max.y) + s;
         rc = qc__cgrid_init(ctx, &r.grid, b, s, 16 * skel->norder + 4096);
+        if (rc == QC_OK)
+            rc = QC__RESERVE(ctx, r.spots, r.spots_cap, nseg + 16);
         if (rc == QC_OK) /* a guess at the vine's chords and the motifs: fewer regrowths */
             rc = qc__cgrid_reserve(ctx, &r.grid, 4 * nseg + region->nv + 64,
                                    16 * nseg + 2 * region->nv + 1024, 12 * nseg + 4 * region->nv + 256);

@@ -20,6 +20,7 @@ typedef struct prim {
     uint32_t m;
     uint32_t rec;  /* its hull's record in the grid */
     qc_vec2 entry, exit, in_dir, out_dir; /* world */
+    qc_vec2 bis;   /* where the legs' bisector points */
 } prim;
 
 typedef struct cand {
@@ -98,6 +99,7 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     p.out_dir = lin(&p.xf, mo->exit_dir);
     p.entry = qc__xf_apply(&p.xf, mo->entry);
     p.exit = qc__xf_apply(&p.xf, mo->exit);
+    p.bis = bis;
     return p;
 }
 
@@ -121,8 +123,9 @@ static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_
         for (mir = 0; mir < 2; mir++) {
             prim p = make_prim(w, w->var[v], mir, c, bis);
             cand t;
-            t.score = fabs(fabs(angle_between(p.in_dir, dp)) - 60) +
-                      fabs(fabs(angle_between(p.out_dir, dn)) - 60);
+            /* a quick measure: unit vectors 60 degrees apart are 1 apart */
+            t.score = fabs(qc_hypot(p.in_dir.x - dp.x, p.in_dir.y - dp.y) - 1) +
+                      fabs(qc_hypot(p.out_dir.x - dn.x, p.out_dir.y - dn.y) - 1);
             t.m = w->var[v];
             t.mirror = mir;
             for (k = nc; k > 0 && cd[k - 1].score > t.score + 1e-9; k--)
@@ -307,10 +310,27 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
     }
     w.nhbuf = maxhull;
 
-    for (i = 0; i < n; i++) { /* each primitive its best variant */
+    for (i = 0; i < n; i++) { /* each primitive its best variant ... */
         qc_vec2 bis;
         rank(&w, skel, i, &bis, cd);
         pr[i] = make_prim(&w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+    }
+    for (i = 0; n > 1 && i < n; i++) { /* ... judged again against the real P0P3 */
+        const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
+        qc_vec2 bis = pr[i].bis;
+        size_t k;
+        double best = 1e300;
+        for (k = 0; k < 2 * w.nvar; k++) {
+            prim q = make_prim(&w, w.var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
+            qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
+            qc_vec2 dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
+            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60) +
+                        fabs(fabs(angle_between(q.out_dir, dout)) - 60);
+            if (sc < best - 1e-9) {
+                best = sc;
+                pr[i] = q;
+            }
+        }
     }
     {
         qc_bbox b = qc_region_bbox(region);
