@@ -277,6 +277,26 @@ static void wanderer_should_use_the_legged_variants_of_a_named_motif(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+static void wanderer_should_shrink_primitives_that_reach_the_boundary(void)
+{
+    ttour t;
+    qc_skeleton sk;
+    qc_params par = params(0.3);
+    qc_path out = {0};
+    qc_stats st;
+
+    square_tour(4, 2, 10, 6, &t);
+    sk = as_skel(&t);
+    memset(&st, 0, sizeof st);
+    par.size = 9; /* radius 4.5 mm, points about 5 mm from the edge */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_wanderer(&ctx, &t.r, &par, &sk, NULL, &out, &st));
+    TEST_ASSERT_GREATER_THAN_UINT(0, st.motifs_shrunk);
+    TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&out));
+    qc_path_free(&ctx, &out);
+    free_tour(&t);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 static void wanderer_should_refuse_empty_tours_and_handle_one_point(void)
 {
     ttour t;
@@ -328,6 +348,7 @@ int main(void)
     RUN_TEST(wanderer_should_join_legs_in_a_circle);
     RUN_TEST(wanderer_should_choose_variants_and_repeat_for_a_seed);
     RUN_TEST(wanderer_should_use_the_legged_variants_of_a_named_motif);
+    RUN_TEST(wanderer_should_shrink_primitives_that_reach_the_boundary);
     RUN_TEST(wanderer_should_refuse_empty_tours_and_handle_one_point);
     RUN_TEST(wanderer_should_free_everything_when_allocation_fails);
     return UNITY_END();

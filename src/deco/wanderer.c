@@ -6,7 +6,8 @@
  * leave and meet the legs with tangents l * |P0P3|. A join that would cross
  * another primitive's hull, another join or the boundary is retried with
  * shorter tangents (l/2, l/4, 0), then with the next primitive's other
- * variants; what still crosses is kept as stated and counted.
+ * variants; what still crosses is kept as stated and counted. A primitive
+ * whose hull reaches the boundary is shrunk (3/4, then 1/2).
  */
 #include <math.h>
 #include <string.h>
@@ -358,8 +359,28 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
             rc = qc__cgrid_add(ctx, &w.grid, e, 2, K_BOUND, 0);
         }
     }
-    for (i = 0; rc == QC_OK && i < n; i++)
+    for (i = 0; rc == QC_OK && i < n; i++) {
+        /* a primitive that reaches the boundary shrinks, down to half size */
+        static const double shrink[] = {0.75, 0.5};
+        const qc_motif *m = &w.set->m[pr[i].m];
+        double s0 = w.s;
+        size_t k, tr;
+        for (tr = 0; tr < 2; tr++) {
+            for (k = 0; k < m->nhull; k++)
+                w.hbuf[k] = qc__xf_apply(&pr[i].xf, m->hull[k]);
+            if (!qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_BOUND, NULL, NULL))
+                break;
+            w.s = s0 * shrink[tr];
+            {
+                uint32_t mi = pr[i].m;
+                int mir = pr[i].xf.a * pr[i].xf.d - pr[i].xf.b * pr[i].xf.c < 0;
+                pr[i] = make_prim(&w, mi, mir, skel->p[skel->order[i]], pr[i].bis);
+            }
+            w.s = s0;
+        }
+        stats->motifs_shrunk += tr > 0;
         rc = add_hull(&w, &pr[i], (uint32_t)i);
+    }
 
     /* The path: primitive, join, primitive, ..., back to the first. */
     if (rc == QC_OK)
