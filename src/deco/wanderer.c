@@ -59,9 +59,13 @@ static double angle_between(qc_vec2 a, qc_vec2 b)
     return qc_atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y) * (180 / QC_PI);
 }
 
-static qc_vec2 lin(const qc__xf *f, qc_vec2 d)
+/* A unit direction mapped by f, a similarity of scale k. */
+static qc_vec2 lin(const qc__xf *f, qc_vec2 d, double k)
 {
-    return unit(f->a * d.x + f->b * d.y, f->c * d.x + f->d * d.y);
+    qc_vec2 r;
+    r.x = (f->a * d.x + f->b * d.y) / k;
+    r.y = (f->c * d.x + f->d * d.y) / k;
+    return r;
 }
 
 /* The map of motif m centred at c, bisector along bis, scaled k, mirrored or not. */
@@ -96,8 +100,8 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     memset(&p, 0, sizeof p);
     p.xf = orient(mo, c, bis, w->s / 2, mirror);
     p.m = m;
-    p.in_dir = lin(&p.xf, mo->entry_dir);
-    p.out_dir = lin(&p.xf, mo->exit_dir);
+    p.in_dir = lin(&p.xf, mo->entry_dir, w->s / 2);
+    p.out_dir = lin(&p.xf, mo->exit_dir, w->s / 2);
     p.entry = qc__xf_apply(&p.xf, mo->entry);
     p.exit = qc__xf_apply(&p.xf, mo->exit);
     p.bis = bis;
