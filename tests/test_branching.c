@@ -243,6 +243,7 @@ static void branching_should_respect_a_hole(void)
 static void branching_should_fill_a_circle(void)
 {
     check_pattern(R_CIRCLE, 5, "loop,spiral,leaf");
+    check_pattern(R_CIRCLE, 6, "swirl45"); /* an open primitive comes back in a line */
 }
 
 static void branching_should_repeat_for_a_seed(void)

@@ -142,6 +142,55 @@ static void convex_touch_should_separate_and_detect(void)
     TEST_ASSERT_FALSE(qc__convex_touch(b, 3, seg, 2, 0));
 }
 
+static void from_path_should_read_attachment_and_legs(void)
+{
+    qc_motif_set set = {0};
+    qc_path p = {0};
+    qc_vec2 a = {100, 50}, b = {105, 53}, c = {112, 70}, d = {100, 75};
+    qc_vec2 l0 = {-12, -12}, l1 = {-4, -6};
+    qc_vec2 k1 = {10, 4}, k2 = {10, 20}, k3 = {0, 20}, k4 = {-10, 20}, k5 = {-10, 4}, k6 = {4, -6};
+    qc_vec2 l2 = {12, -12};
+
+    /* closed: a branching motif attached at its start */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, b, c, d));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__motif_from_path(&ctx, &p, "mine", &set));
+    TEST_ASSERT_EQUAL_UINT(0, p.ncmd);
+    TEST_ASSERT_EQUAL_INT(0, set.m[0].legs);
+    TEST_ASSERT_EQUAL_STRING("mine", set.m[0].name);
+    TEST_ASSERT_EQUAL_MEMORY(&set.m[0].entry, &set.m[0].exit, sizeof(qc_vec2));
+
+    /* open with legs: the first and last segments are directions only */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, l0));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, l1));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, k1, k2, k3));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, k4, k5, k6));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, l2));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__motif_from_path(&ctx, &p, "legs", &set));
+    TEST_ASSERT_EQUAL_INT(2, set.m[1].legs);
+    TEST_ASSERT_EQUAL_UINT(3, set.m[1].path.ncmd); /* MOVE + the two body cubics */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, -0.8, set.m[1].entry_dir.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, -0.6, set.m[1].entry_dir.y);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.8, set.m[1].exit_dir.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, -0.6, set.m[1].exit_dir.y);
+    TEST_ASSERT_TRUE(set.m[1].entry.x < set.m[1].exit.x); /* entry on the left */
+
+    /* open but too short for legs: closed with a straight stitch */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, b, c, d));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__motif_from_path(&ctx, &p, "short", &set));
+    TEST_ASSERT_EQUAL_INT(0, set.m[2].legs);
+    TEST_ASSERT_EQUAL_MEMORY(&set.m[2].entry, &set.m[2].exit, sizeof(qc_vec2));
+
+    /* a lone point has no extent */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, a));
+    TEST_ASSERT_EQUAL_INT(QC_EDEGENERATE, qc__motif_from_path(&ctx, &p, "dot", &set));
+    TEST_ASSERT_EQUAL_UINT(3, set.n);
+    qc_motif_set_free(&ctx, &set);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 static void builtin_should_free_everything_when_allocation_fails(void)
 {
     size_t k;
@@ -167,6 +216,7 @@ int main(void)
     RUN_TEST(builtin_should_refuse_unknown_names);
     RUN_TEST(hull_and_circle_should_handle_known_sets);
     RUN_TEST(convex_touch_should_separate_and_detect);
+    RUN_TEST(from_path_should_read_attachment_and_legs);
     RUN_TEST(builtin_should_free_everything_when_allocation_fails);
     return UNITY_END();
 }

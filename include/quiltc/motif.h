@@ -39,7 +39,8 @@ const char *qc_motif_builtin_name(size_t i);
 int qc_motif_builtin(qc_ctx *ctx, const char *names, qc_motif_set *out);
 /* Appends a motif read from an SVG document (docs/motifs.md) named name:
  * every shape as one path (qc_io_read_svg_path); its start point is the
- * attachment; a path that does not return to its start is a Wanderer
+ * attachment; a path that does not return to its start (and has at least
+ * three segments, else it is closed with a straight stitch) is a Wanderer
  * primitive whose first and last segments are the legs (not sewn).
  * Families scale a motif so its bounding circle's diameter is the size s.
  * Errors: those of the SVG reader, QC_EDEGENERATE (empty or a single point),

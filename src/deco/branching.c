@@ -519,7 +519,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     if (rc == QC_OK && r.nspots > 1)
         qsort(r.spots, r.nspots, sizeof *r.spots, cmp_spot);
     if (rc == QC_OK) { /* room for the result at once: vine, splits and motifs */
-        size_t nc = out->ncmd + 1 + nseg + 2 * r.nspots, np = out->npt + 1 + 3 * (nseg + r.nspots);
+        size_t nc = out->ncmd + 1 + nseg + 3 * r.nspots, np = out->npt + 1 + 3 * (nseg + r.nspots) + r.nspots;
         for (i = 0; i < r.nspots; i++) {
             nc += motifs->m[r.spots[i].motif].path.ncmd;
             np += motifs->m[r.spots[i].motif].path.npt;
@@ -544,9 +544,15 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
                     memcpy(cur, rr, sizeof cur);
                     t0 = t;
                 }
-                if (rc == QC_OK)
-                    rc = qc__path_append_xf(ctx, out, &motifs->m[r.spots[sp].motif].path,
-                                            &r.spots[sp].xf);
+                if (rc == QC_OK) {
+                    const qc_motif *m = &motifs->m[r.spots[sp].motif];
+                    qc_vec2 at = qc__xf_apply(&r.spots[sp].xf, m->entry), end;
+                    rc = qc__path_append_xf(ctx, out, &m->path, &r.spots[sp].xf);
+                    end = qc_path_last(out);
+                    /* an open motif (a Wanderer primitive) comes back in a straight line */
+                    if (rc == QC_OK && (end.x != at.x || end.y != at.y))
+                        rc = qc_path_line_to(ctx, out, at);
+                }
             }
             if (rc == QC_OK && nseg > 0)
                 rc = qc_path_cubic_to(ctx, out, cur[1], cur[2], cur[3]);

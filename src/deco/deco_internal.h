@@ -22,6 +22,14 @@ QC__HIDDEN void qc__hull_outset(qc_vec2 *h, size_t n, qc_vec2 *tmp, double d);
 QC__HIDDEN void qc__min_circle(const qc_vec2 *pts, size_t n, qc_vec2 *scratch,
                                qc_vec2 *c, double *r);
 
+/* Takes ownership of *path (any units, y up) and appends it to out as a
+ * motif named name: closed (ends at its start) -> a branching motif attached
+ * at its start; open with >= 4 commands -> a Wanderer primitive whose first
+ * and last segments are the legs. Later MOVEs become LINEs. *path is freed
+ * and zeroed in every case. Errors: QC_EDEGENERATE, QC_ENOMEM. */
+QC__HIDDEN int qc__motif_from_path(qc_ctx *ctx, qc_path *path, const char *name,
+                                   qc_motif_set *out);
+
 /* An affine map: (x, y) -> (a x + b y + tx, c x + d y + ty). */
 typedef struct qc__xf {
     double a, b, c, d, tx, ty;
