@@ -16,5 +16,7 @@
 #include "quiltc/stitch.h"
 #include "quiltc/io.h"
 #include "quiltc/pattern.h"
+#include "quiltc/measure.h"
+#include "quiltc/tile.h"
 
 #endif

@@ -123,4 +123,42 @@ QC__HIDDEN int qc__branching_run(qc_ctx *ctx, const qc_region *region,
                                  const qc_motif_set *motifs, qc_path *out,
                                  qc_stats *stats, qc__placement *pl);
 
+/* ---- fixed-width fill outlines (fill_tree.c) ---- */
+
+/* A tree as half-edges sorted counter-clockwise round each node. */
+typedef struct qc__ftree {
+    const qc_vec2 *p;  /* node positions */
+    size_t n;          /* nodes */
+    uint32_t *off;     /* n + 1: node v's half-edges are [off[v], off[v+1]) */
+    uint32_t *src, *tgt, *twin; /* per half-edge */
+    size_t nh;         /* half-edges (2 per tree edge) */
+    uint32_t *rep;     /* n: the node each point was merged into */
+} qc__ftree;
+
+/* Builds the half-edge tree from edges over p[0..n) (zero-length edges
+ * dropped, their ends merged, so duplicate points are one node). Errors:
+ * QC_EINVAL (an index out of range), QC_ENOMEM. */
+QC__HIDDEN int qc__ftree_build(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *e,
+                               size_t ne, qc__ftree *t);
+QC__HIDDEN void qc__ftree_free(qc_ctx *ctx, qc__ftree *t);
+/* The node a duplicate point was merged into. */
+QC__HIDDEN uint32_t qc__ftree_rep(const qc__ftree *t, uint32_t v);
+
+/* How an outline is drawn. */
+typedef struct qc__fstyle {
+    double half;       /* w / 2 */
+    double tip;        /* tip circle radius (> half), 0 for none */
+    double arc_step;   /* largest angle of one arc segment, radians */
+    const double *tip_at; /* per node tip radius overriding tip, or NULL */
+} qc__fstyle;
+
+/* The closed outline at distance half round the whole tree, counter-
+ * clockwise, starting at root (points appended, the first not repeated). */
+QC__HIDDEN int qc__ftree_loop(qc_ctx *ctx, const qc__ftree *t, uint32_t root,
+                              const qc__fstyle *st, qc_points *out);
+/* The open outline from leaf a to leaf b: the a-b path is crossed once,
+ * every other branch outlined on its own side (tiles). */
+QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint32_t b,
+                              const qc__fstyle *st, qc_points *out);
+
 #endif

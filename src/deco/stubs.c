@@ -17,7 +17,5 @@
 
 QC__STUB(qc_deco_pebbling, "pebbling")
 QC__STUB(qc_deco_packing, "packing")
-QC__STUB(qc_deco_fill, "fill")
-QC__STUB(qc_deco_stipple, "stipple")
 QC__STUB(qc_deco_echo, "echo")
 QC__STUB(qc_deco_spiral, "spiral")

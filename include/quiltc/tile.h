@@ -1,0 +1,44 @@
+/*
+ * Repeatable tiles (paper §7.1, Fig. 27): a tile's path enters on its left
+ * edge and leaves at the mirrored point of its right edge, so copies laid
+ * side by side join into one continuous pantograph. The fill and stipple
+ * families build such tiles when params.tile is edge-to-edge or all-over
+ * and lay them out repeat_cols x repeat_rows themselves (qc_tile_repeat).
+ */
+#ifndef QUILTC_TILE_H
+#define QUILTC_TILE_H
+
+#include "core.h"
+#include "region.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/*
+ * The tile's entry and exit: where the horizontal line through the middle
+ * of region's bounding box first enters and last leaves the region (for a
+ * rectangle, the midpoints of its left and right sides). The exit is the
+ * entry moved by the tile's width, so *exit - *entry == (box width, 0).
+ * Errors: QC_EINVAL (no ring, or the line misses the region).
+ */
+int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 *exit);
+
+/*
+ * Appends cols x rows copies of tile (one piece, from its entry to its exit
+ * = entry + (dx, 0)) to out: row r is moved down by r * dy mm and runs left
+ * to right for even r, right to left (the tile reversed) for odd r, like a
+ * pantograph; rows are joined by a straight line along the outer side edge.
+ * Each copy's first point is replaced by the previous copy's last point,
+ * so the joins are exact and out is one piece. A MOVE starts out only when
+ * out is empty (else the first point is joined by a LINE).
+ * Errors: QC_EINVAL (tile empty or not one piece, cols or rows 0, or
+ * dx/dy not finite), QC_ENOMEM (out keeps what was appended; free it).
+ */
+int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                   unsigned rows, qc_path *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,205 @@
+/*
+ * Fixed-width fill and stippling (paper §7.1, Fig. 26): the spanning tree
+ * outlined at width w as one closed, non-crossing loop (fill_tree.c);
+ * stippling is the same outline at w = d/3 through a centripetal
+ * Catmull-Rom spline, which reads as the classic meander. With a tile mode
+ * the region is a tile: the path runs from its left port to its mirrored
+ * right port (the ports joined to the tree as extra leaves, the port-to-port
+ * branch crossed once) and the tile is laid out repeat_cols x repeat_rows.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "deco_internal.h"
+
+/* Largest-gap statistic resolution, times d. */
+#define GAP_RES (1.0 / 6.0)
+
+static int tree_crosses(const qc_vec2 *p, const qc_edge *e, size_t ne, qc_vec2 a, uint32_t bi)
+{
+    qc_vec2 b = p[bi];
+    size_t k;
+
+    for (k = 0; k < ne; k++) {
+        qc_vec2 c = p[e[k].a], d = p[e[k].b];
+        double o1, o2, o3, o4;
+
+        if (e[k].a == bi || e[k].b == bi)
+            continue;
+        o1 = qc_orient2d(a, b, c);
+        o2 = qc_orient2d(a, b, d);
+        o3 = qc_orient2d(c, d, a);
+        o4 = qc_orient2d(c, d, b);
+        if (((o1 >= 0.0 && o2 <= 0.0) || (o1 <= 0.0 && o2 >= 0.0)) &&
+            ((o3 >= 0.0 && o4 <= 0.0) || (o3 <= 0.0 && o4 >= 0.0)))
+            return 1;
+    }
+    return 0;
+}
+
+/* The node a port joins: the nearest whose stub crosses no tree edge (of the 16 nearest). */
+static uint32_t port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne, qc_vec2 a)
+{
+    uint32_t best[16];
+    double bd[16];
+    size_t m = 0, i, k;
+
+    for (i = 0; i < n; i++) {
+        double dd = (p[i].x - a.x) * (p[i].x - a.x) + (p[i].y - a.y) * (p[i].y - a.y);
+        if (m == 16 && dd >= bd[15])
+            continue;
+        k = m < 16 ? m++ : 15;
+        while (k > 0 && bd[k - 1] > dd) {
+            bd[k] = bd[k - 1];
+            best[k] = best[k - 1];
+            k--;
+        }
+        bd[k] = dd;
+        best[k] = (uint32_t)i;
+    }
+    for (k = 0; k < m; k++)
+        if (!tree_crosses(p, e, ne, a, best[k]))
+            return best[k];
+    return best[0];
+}
+
+/* Tile: the outline from the left port to the right port. */
+static int tile_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
+                        const qc_skeleton *skel, qc__fstyle *st, qc_points *pts,
+                        qc_vec2 *entry, qc_vec2 *exit)
+{
+    size_t n = skel->n, ne = skel->nedges, i;
+    qc_vec2 *p = qc__alloc_array(ctx, n + 2, sizeof *p);
+    qc_edge *e = qc__alloc_array(ctx, ne + 2, sizeof *e);
+    double *tip = qc__alloc_array(ctx, n + 2, sizeof *tip);
+    qc__ftree t;
+    qc_bbox box = qc_region_bbox(region);
+    int rc, all = prm->tile == QC_TILE_ALL_OVER;
+
+    memset(&t, 0, sizeof t);
+    if (p == NULL || e == NULL || tip == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    rc = qc_tile_ports(ctx, region, entry, exit);
+    if (rc < 0)
+        goto out;
+    memcpy(p, skel->p, n * sizeof *p);
+    memcpy(e, skel->edges, ne * sizeof *e);
+    p[n] = *entry;
+    p[n + 1] = *exit;
+    e[ne].a = port_node(skel->p, n, skel->edges, ne, *entry);
+    e[ne].b = (uint32_t)n;
+    e[ne + 1].a = port_node(skel->p, n, skel->edges, ne, *exit);
+    e[ne + 1].b = (uint32_t)(n + 1);
+    /* wrap: a tip circle keeps clear of the edges a neighbouring tile shares */
+    for (i = 0; i < n + 2; i++) {
+        double room = fmin(p[i].x - box.min.x, box.max.x - p[i].x);
+        if (all)
+            room = fmin(room, fmin(p[i].y - box.min.y, box.max.y - p[i].y));
+        tip[i] = fmin(st->tip, room - 0.1 * st->half * 2.0);
+    }
+    st->tip_at = tip;
+    rc = qc__ftree_build(ctx, p, n + 2, e, ne + 2, &t);
+    if (rc == QC_OK)
+        rc = qc__ftree_open(ctx, &t, (uint32_t)n, (uint32_t)(n + 1), st, pts);
+out:
+    st->tip_at = NULL;
+    qc__ftree_free(ctx, &t);
+    qc__free(ctx, p, (n + 2) * sizeof *p);
+    qc__free(ctx, e, (ne + 2) * sizeof *e);
+    qc__free(ctx, tip, (n + 2) * sizeof *tip);
+    return rc;
+}
+
+static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
+                    const qc_skeleton *skel, qc_path *out, qc_stats *stats, int stipple)
+{
+    const char *name = stipple ? "stipple" : "fill";
+    qc__fstyle st;
+    qc__ftree t;
+    qc_points pts = {0};
+    qc_path one = {0}, rep = {0};
+    qc_vec2 entry, exit;
+    double d = prm->spacing, w = prm->width;
+    int tiled = prm->tile == QC_TILE_EDGE_TO_EDGE || prm->tile == QC_TILE_ALL_OVER;
+    size_t i;
+    int rc;
+
+    memset(&t, 0, sizeof t);
+    if (skel->n == 0)
+        return qc__fail(ctx, QC_EEMPTY, "%s needs at least one point", name);
+    if (skel->n > 1 && (skel->edges == NULL || skel->nedges + 1 != skel->n))
+        return qc__fail(ctx, QC_EINVAL, "%s needs a spanning tree (skeleton mst), got %lu edges "
+                        "for %lu points", name, (unsigned long)skel->nedges,
+                        (unsigned long)skel->n);
+    if (!(w > 0.0) || !(d > 0.0))
+        return qc__fail(ctx, QC_ERANGE, "%s width %g mm and spacing %g mm must be > 0", name,
+                        w, d);
+    memset(&st, 0, sizeof st);
+    st.half = 0.5 * w;
+    st.tip = prm->tip == QC_TIP_CIRCLE ? fmin(1.5 * w, 0.4 * d) : 0.0;
+    st.arc_step = stipple ? QC_PI / 4.0 : QC_PI / 16.0;
+    if (tiled) {
+        rc = tile_outline(ctx, region, prm, skel, &st, &pts, &entry, &exit);
+    } else {
+        rc = qc__ftree_build(ctx, skel->p, skel->n, skel->edges, skel->nedges, &t);
+        if (rc == QC_OK)
+            rc = qc__ftree_loop(ctx, &t, skel->root < skel->n ? skel->root : 0, &st, &pts);
+    }
+    if (rc < 0)
+        goto out;
+    if (stipple) {
+        rc = qc_curve_catmull_rom(ctx, pts.v, pts.n, !tiled, &one);
+    } else {
+        rc = qc_path_move_to(ctx, &one, pts.v[0]);
+        for (i = 1; i < pts.n && rc == QC_OK; i++)
+            rc = qc_path_line_to(ctx, &one, pts.v[i]);
+        if (rc == QC_OK && !tiled)
+            rc = qc_path_line_to(ctx, &one, pts.v[0]);
+    }
+    if (rc < 0)
+        goto out;
+    if (stats != NULL) {
+        double g = qc_path_largest_gap(ctx, region, &one, GAP_RES * d, NULL);
+        if (g < 0.0) {
+            rc = (int)g;
+            goto out;
+        }
+        stats->largest_gap_mm = g;
+    }
+    if (tiled) {
+        qc_bbox box = qc_region_bbox(region);
+        unsigned cols = prm->repeat_cols >= 1.0 ? (unsigned)prm->repeat_cols : 1u;
+        unsigned rows = prm->repeat_rows >= 1.0 ? (unsigned)prm->repeat_rows : 1u;
+
+        rc = qc_tile_repeat(ctx, &one, exit.x - entry.x, box.max.y - box.min.y, cols, rows,
+                            &rep);
+        if (rc == QC_OK)
+            rc = qc_path_append(ctx, out, &rep, 1);
+    } else {
+        rc = qc_path_append(ctx, out, &one, 1);
+    }
+out:
+    qc__ftree_free(ctx, &t);
+    qc_points_free(ctx, &pts);
+    qc_path_free(ctx, &one);
+    qc_path_free(ctx, &rep);
+    return rc;
+}
+
+int qc_deco_fill(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                 const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                 qc_stats *stats)
+{
+    (void)motifs;
+    return fill_run(ctx, region, params, skel, out, stats, 0);
+}
+
+int qc_deco_stipple(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                    const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                    qc_stats *stats)
+{
+    (void)motifs;
+    return fill_run(ctx, region, params, skel, out, stats, 1);
+}

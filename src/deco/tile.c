@@ -1,0 +1,114 @@
+/* Tiles: the entry and exit ports of a tile and the pantograph layout of copies. */
+#include <math.h>
+
+#include "internal.h"
+
+int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 *exit)
+{
+    qc_bbox box;
+    double y, lo = HUGE_VAL;
+    size_t k, rs = 0;
+
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EINVAL, "tile ports: the region has no ring");
+    box = qc_region_bbox(region);
+    y = 0.5 * (box.min.y + box.max.y);
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], i, p = end - 1;
+
+        for (i = rs; i < end; p = i++) {
+            qc_vec2 a = region->v[p], b = region->v[i];
+            if ((a.y > y) != (b.y > y))
+                lo = fmin(lo, a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
+            else if (a.y == y && b.y == y)
+                lo = fmin(lo, fmin(a.x, b.x));
+        }
+        rs = end;
+    }
+    if (!(lo < HUGE_VAL))
+        return qc__fail(ctx, QC_EINVAL, "tile ports: the line y = %g mm misses the region", y);
+    entry->x = lo;
+    entry->y = y;
+    exit->x = lo + (box.max.x - box.min.x);
+    exit->y = y;
+    return QC_OK;
+}
+
+/* Appends tile moved by (tx, ty), reversed when rev, without its first point. */
+static int append_copy(qc_ctx *ctx, const qc_path *tile, double tx, double ty, int rev,
+                       qc_path *out)
+{
+    size_t c, k;
+
+    if (!rev) {
+        for (c = 1, k = 1; c < tile->ncmd; c++) {
+            const qc_vec2 *q = tile->pt + k;
+            qc_vec2 a, b, e;
+
+            if (tile->cmd[c] == QC_PATH_CUBIC) {
+                a.x = q[0].x + tx; a.y = q[0].y + ty;
+                b.x = q[1].x + tx; b.y = q[1].y + ty;
+                e.x = q[2].x + tx; e.y = q[2].y + ty;
+                QC__TRY(qc_path_cubic_to(ctx, out, a, b, e));
+                k += 3;
+            } else {
+                e.x = q[0].x + tx; e.y = q[0].y + ty;
+                QC__TRY(qc_path_line_to(ctx, out, e));
+                k += 1;
+            }
+        }
+        return QC_OK;
+    }
+    k = tile->npt;
+    for (c = tile->ncmd; c-- > 1;) {
+        size_t m = qc_path_cmd_points(tile->cmd[c]);
+        const qc_vec2 *q = tile->pt + k - m;
+        qc_vec2 s = tile->pt[k - m - 1], a, b, e; /* the command's start point */
+
+        e.x = s.x + tx; e.y = s.y + ty;
+        if (tile->cmd[c] == QC_PATH_CUBIC) {
+            a.x = q[1].x + tx; a.y = q[1].y + ty;
+            b.x = q[0].x + tx; b.y = q[0].y + ty;
+            QC__TRY(qc_path_cubic_to(ctx, out, a, b, e));
+        } else {
+            QC__TRY(qc_path_line_to(ctx, out, e));
+        }
+        k -= m;
+    }
+    return QC_OK;
+}
+
+int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                   unsigned rows, qc_path *out)
+{
+    unsigned r, c;
+
+    if (tile == NULL || tile->ncmd < 2 || tile->cmd[0] != QC_PATH_MOVE ||
+        qc_path_pieces(tile) != 1)
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: the tile must be one piece of 2+ commands");
+    if (cols == 0 || rows == 0)
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: %ux%u tiles", cols, rows);
+    if (!isfinite(dx) || !isfinite(dy))
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: step (%g, %g) mm is not finite", dx, dy);
+    for (r = 0; r < rows; r++) {
+        int rev = (int)(r & 1u);
+        double ty = -(double)r * dy;
+
+        for (c = 0; c < cols; c++) {
+            unsigned col = rev ? cols - 1 - c : c;
+            double tx = (double)col * dx;
+
+            if (c == 0) {
+                qc_vec2 s = rev ? tile->pt[tile->npt - 1] : tile->pt[0];
+                s.x += tx;
+                s.y += ty;
+                if (out->ncmd == 0)
+                    QC__TRY(qc_path_move_to(ctx, out, s));
+                else
+                    QC__TRY(qc_path_line_to(ctx, out, s));
+            }
+            QC__TRY(append_copy(ctx, tile, tx, ty, rev, out));
+        }
+    }
+    return QC_OK;
+}

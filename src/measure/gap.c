@@ -1,0 +1,244 @@
+/*
+ * The largest gap: the biggest circle inside the region that the path and
+ * the boundary leave empty, by an exact distance transform of a raster of
+ * seeds, then the winning cell's clearance measured exactly.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "measure_internal.h"
+
+#define MAX_CELLS ((size_t)1 << 22)
+#define FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */
+
+typedef struct gap_grid {
+    double x0, y0, h;
+    size_t nx, ny;
+    double *f;
+} gap_grid;
+
+static void seed_segment(gap_grid *g, qc_vec2 a, qc_vec2 b)
+{
+    double len = qc_hypot(b.x - a.x, b.y - a.y);
+    double steps = ceil(len / (0.5 * g->h));
+    size_t m, k;
+
+    if (!(steps < 1e9))
+        steps = 1e9;
+    m = steps < 1.0 ? 1 : (size_t)steps;
+    for (k = 0; k <= m; k++) {
+        double t = (double)k / (double)m;
+        double x = (a.x + (b.x - a.x) * t - g->x0) / g->h;
+        double y = (a.y + (b.y - a.y) * t - g->y0) / g->h;
+
+        /* the box's far sides (x == nx) belong to the last cells */
+        if (x >= -1.0 && y >= -1.0 && x < (double)g->nx + 1.0 && y < (double)g->ny + 1.0) {
+            x = fmin(fmax(x, 0.0), (double)(g->nx - 1));
+            y = fmin(fmax(y, 0.0), (double)(g->ny - 1));
+            g->f[(size_t)y * g->nx + (size_t)x] = 0.0;
+        }
+    }
+}
+
+static int transform(qc_ctx *ctx, gap_grid *g)
+{
+    size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
+    double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
+    int *v = qc__alloc_array(ctx, m, sizeof *v);
+    double *out, *z;
+
+    if (col == NULL || v == NULL) {
+        qc__free(ctx, col, (3 * m + 1) * sizeof *col);
+        qc__free(ctx, v, m * sizeof *v);
+        return QC_ENOMEM;
+    }
+    out = col + m;
+    z = out + m;
+    for (i = 0; i < g->nx; i++) {
+        for (j = 0; j < g->ny; j++)
+            col[j] = g->f[j * g->nx + i];
+        qc__edt_1d(col, g->ny, out, v, z);
+        for (j = 0; j < g->ny; j++)
+            g->f[j * g->nx + i] = out[j];
+    }
+    for (j = 0; j < g->ny; j++) {
+        memcpy(col, g->f + j * g->nx, g->nx * sizeof *col);
+        qc__edt_1d(col, g->nx, g->f + j * g->nx, v, z);
+    }
+    qc__free(ctx, col, (3 * m + 1) * sizeof *col);
+    qc__free(ctx, v, m * sizeof *v);
+    return QC_OK;
+}
+
+/* Segments of the pieces: piece k is pts[ends[k-1] .. ends[k]) (ends NULL: one piece). */
+typedef struct pieces {
+    const qc_vec2 *pts;
+    size_t n;
+    const uint32_t *ends;
+    size_t nends;
+} pieces;
+
+static size_t piece_end(const pieces *pc, size_t k)
+{
+    return pc->ends != NULL ? pc->ends[k] : pc->n;
+}
+
+/* Exact clearance of c: distance to the nearest path segment or boundary edge. */
+static double clearance(const qc_region *region, const pieces *pc, qc_vec2 c)
+{
+    double best = qc_region_boundary_distance(region, c);
+    double b2 = best * best;
+    size_t k, b = 0, i;
+
+    for (k = 0; k < (pc->ends != NULL ? pc->nends : 1); k++) {
+        size_t e = piece_end(pc, k);
+        if (e == b + 1)
+            b2 = fmin(b2, qc__seg_dist2(c, pc->pts[b], pc->pts[b]));
+        for (i = b + 1; i < e; i++)
+            b2 = fmin(b2, qc__seg_dist2(c, pc->pts[i - 1], pc->pts[i]));
+        b = e;
+    }
+    return sqrt(b2);
+}
+
+static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
+                      double resolution, qc_vec2 *centre_out)
+{
+    const qc_vec2 *pts = pc->pts;
+    size_t n = pc->n;
+    gap_grid g;
+    qc_bbox box;
+    unsigned char *mask = NULL;
+    size_t i, j, k, best_at = 0, rs = 0;
+    double best = -1.0, r;
+    int rc;
+
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EINVAL, "largest gap: the region has no ring");
+    if (pts == NULL && n > 0)
+        return qc__fail(ctx, QC_EINVAL, "largest gap: %lu points but pts is NULL",
+                        (unsigned long)n);
+    if (!(resolution > 0.0) || !(resolution < HUGE_VAL))
+        return qc__fail(ctx, QC_EINVAL, "largest gap: resolution %g mm must be > 0",
+                        resolution);
+    for (i = 0; i < n; i++)
+        if (!isfinite(pts[i].x) || !isfinite(pts[i].y))
+            return qc__fail(ctx, QC_ERANGE, "largest gap: point %lu is not finite",
+                            (unsigned long)i);
+    for (i = 0; i < region->nv; i++)
+        if (!isfinite(region->v[i].x) || !isfinite(region->v[i].y))
+            return qc__fail(ctx, QC_ERANGE, "largest gap: region vertex %lu is not finite",
+                            (unsigned long)i);
+    box = qc_region_bbox(region);
+    g.h = resolution;
+    for (;;) {
+        double fx = ceil((box.max.x - box.min.x) / g.h), fy = ceil((box.max.y - box.min.y) / g.h);
+        fx = fx < 1.0 ? 1.0 : fx;
+        fy = fy < 1.0 ? 1.0 : fy;
+        if (fx * fy <= (double)MAX_CELLS) {
+            g.nx = (size_t)fx;
+            g.ny = (size_t)fy;
+            break;
+        }
+        g.h *= 1.25;
+    }
+    g.x0 = box.min.x;
+    g.y0 = box.min.y;
+    g.f = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.f);
+    mask = qc__alloc(ctx, g.nx * g.ny);
+    if (g.f == NULL || mask == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx,
+                           g.ny, mask);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < g.nx * g.ny; k++)
+        g.f[k] = FAR;
+    {
+        size_t b = 0, q;
+        for (q = 0; q < (pc->ends != NULL ? pc->nends : 1); q++) {
+            size_t e = piece_end(pc, q);
+            if (e == b + 1)
+                seed_segment(&g, pts[b], pts[b]);
+            for (i = b + 1; i < e; i++)
+                seed_segment(&g, pts[i - 1], pts[i]);
+            b = e;
+        }
+    }
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], p = end - 1;
+
+        for (i = rs; i < end; p = i++)
+            seed_segment(&g, region->v[p], region->v[i]);
+        rs = end;
+    }
+    rc = transform(ctx, &g);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < g.nx * g.ny; k++)
+        if (mask[k] && g.f[k] > best) {
+            best = g.f[k];
+            best_at = k;
+        }
+out:
+    if (rc < 0) {
+        qc__free(ctx, g.f, g.nx * g.ny * sizeof *g.f);
+        qc__free(ctx, mask, g.nx * g.ny);
+        return rc;
+    }
+    j = best_at / g.nx;
+    i = best_at % g.nx;
+    {
+        qc_vec2 c;
+        c.x = g.x0 + ((double)i + 0.5) * g.h;
+        c.y = g.y0 + ((double)j + 0.5) * g.h;
+        r = best < 0.0 ? 0.0 : clearance(region, pc, c);
+        if (best < 0.0) /* no cell centre inside: a sliver far below the resolution */
+            c = region->v[0];
+        if (centre_out != NULL)
+            *centre_out = c;
+    }
+    qc__free(ctx, g.f, g.nx * g.ny * sizeof *g.f);
+    qc__free(ctx, mask, g.nx * g.ny);
+    return r;
+}
+
+double qc_largest_gap(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, size_t n,
+                      double resolution, qc_vec2 *centre_out)
+{
+    pieces pc;
+
+    pc.pts = pts;
+    pc.n = n;
+    pc.ends = NULL;
+    pc.nends = 0;
+    return gap_run(ctx, region, &pc, resolution, centre_out);
+}
+
+double qc_path_largest_gap(qc_ctx *ctx, const qc_region *region, const qc_path *path,
+                           double resolution, qc_vec2 *centre_out)
+{
+    qc_points flat = {0};
+    qc_order ends = {0};
+    pieces pc;
+    double r;
+    int rc;
+
+    if (path == NULL)
+        return qc__fail(ctx, QC_EINVAL, "largest gap: path is NULL");
+    rc = qc_curve_flatten(ctx, path, 0.01, &flat, &ends);
+    if (rc < 0) {
+        r = rc;
+    } else {
+        pc.pts = flat.v;
+        pc.n = flat.n;
+        pc.ends = ends.i;
+        pc.nends = ends.n;
+        r = gap_run(ctx, region, &pc, resolution, centre_out);
+    }
+    qc_points_free(ctx, &flat);
+    qc_order_free(ctx, &ends);
+    return r;
+}

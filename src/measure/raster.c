@@ -1,0 +1,142 @@
+/* Rasterising regions (scanline inside masks) and the 1-D exact distance transform. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "measure_internal.h"
+
+double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
+{
+    double dx = b.x - a.x, dy = b.y - a.y;
+    double len2 = dx * dx + dy * dy;
+    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
+    double ex, ey;
+
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    ex = a.x + t * dx - p.x;
+    ey = a.y + t * dy - p.y;
+    return ex * ex + ey * ey;
+}
+
+/* Rows j whose y = y0 + j h satisfies lo <= y < hi, clamped to [0, ny). */
+static void row_span(double lo, double hi, double y0, double h, size_t ny, size_t *j0,
+                     size_t *j1)
+{
+    double a = ceil((lo - y0) / h) - 1.0, b = ceil((hi - y0) / h) + 1.0;
+
+    a = a < 0.0 ? 0.0 : a;
+    b = b > (double)ny ? (double)ny : b;
+    *j0 = (size_t)a;
+    *j1 = b > a ? (size_t)b : *j0;
+}
+
+static int cmp_double(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0,
+                      double h, size_t nx, size_t ny, unsigned char *mask)
+{
+    size_t *start, k, rs = 0, j, total = 0;
+    double *xs;
+
+    memset(mask, 0, nx * ny);
+    start = qc__alloc_array(ctx, ny + 1, sizeof *start);
+    if (start == NULL)
+        return QC_ENOMEM;
+    memset(start, 0, (ny + 1) * sizeof *start);
+    /* pass 1 counts crossings per row, pass 2 stores them */
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], i, p = end - 1;
+
+        for (i = rs; i < end; p = i++) {
+            qc_vec2 a = region->v[p], b = region->v[i];
+            size_t j0, j1;
+
+            row_span(fmin(a.y, b.y), fmax(a.y, b.y), y0, h, ny, &j0, &j1);
+            for (j = j0; j < j1; j++) {
+                double y = y0 + (double)j * h;
+                if ((a.y > y) != (b.y > y))
+                    start[j + 1]++;
+            }
+        }
+        rs = end;
+    }
+    for (j = 0; j < ny; j++)
+        start[j + 1] += start[j];
+    total = start[ny];
+    xs = qc__alloc_array(ctx, total ? total : 1, sizeof *xs);
+    if (xs == NULL) {
+        qc__free(ctx, start, (ny + 1) * sizeof *start);
+        return QC_ENOMEM;
+    }
+    rs = 0;
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], i, p = end - 1;
+
+        for (i = rs; i < end; p = i++) {
+            qc_vec2 a = region->v[p], b = region->v[i];
+            size_t j0, j1;
+
+            row_span(fmin(a.y, b.y), fmax(a.y, b.y), y0, h, ny, &j0, &j1);
+            for (j = j0; j < j1; j++) {
+                double y = y0 + (double)j * h;
+                if ((a.y > y) != (b.y > y))
+                    xs[start[j]++] = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+            }
+        }
+        rs = end;
+    }
+    /* start[j] now ends row j; row j begins at start[j - 1] */
+    for (j = ny; j-- > 0;) {
+        size_t b = j ? start[j - 1] : 0, e = start[j], c;
+
+        qsort(xs + b, e - b, sizeof *xs, cmp_double);
+        for (c = b; c + 1 < e; c += 2) {
+            double lo = ceil((xs[c] - x0) / h), hi = ceil((xs[c + 1] - x0) / h);
+            size_t i;
+
+            lo = lo < 0.0 ? 0.0 : lo;
+            hi = hi > (double)nx ? (double)nx : hi;
+            for (i = (size_t)lo; (double)i < hi; i++)
+                mask[j * nx + i] = 1;
+        }
+    }
+    qc__free(ctx, xs, (total ? total : 1) * sizeof *xs);
+    qc__free(ctx, start, (ny + 1) * sizeof *start);
+    return QC_OK;
+}
+
+void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z)
+{
+    int k = 0, q, nn = (int)n;
+
+    v[0] = 0;
+    z[0] = -HUGE_VAL;
+    z[1] = HUGE_VAL;
+    for (q = 1; q < nn; q++) {
+        double s;
+        int p = v[k];
+
+        s = ((f[q] + (double)q * q) - (f[p] + (double)p * p)) / (2.0 * (q - p));
+        while (s <= z[k]) { /* z[0] = -inf stops this at k == 0 */
+            k--;
+            p = v[k];
+            s = ((f[q] + (double)q * q) - (f[p] + (double)p * p)) / (2.0 * (q - p));
+        }
+        k++;
+        v[k] = q;
+        z[k] = s;
+        z[k + 1] = HUGE_VAL;
+    }
+    k = 0;
+    for (q = 0; q < nn; q++) {
+        double dq;
+        while (z[k + 1] < (double)q)
+            k++;
+        dq = (double)(q - v[k]);
+        d[q] = dq * dq + f[v[k]];
+    }
+}
