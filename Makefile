@@ -73,7 +73,7 @@ all: $(BUILD)/libquiltc.a $(BUILD)/libquiltc.so $(BUILD)/quiltc
 
 lib: $(BUILD)/libquiltc.a
 
-$(BUILD)/obj/src/%.o: src/%.c $(HEADERS) src/core/internal.h
+$(BUILD)/obj/src/%.o: src/%.c $(HEADERS) $(wildcard src/*/*.h)
 	@mkdir -p $(dir $@)
 	$(CC) $(LIB_CFLAGS) -c $< -o $@
 

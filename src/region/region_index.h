@@ -1,0 +1,37 @@
+/*
+ * A spatial index over a region's boundary edges, for the many inside and
+ * near-the-boundary questions sampling asks (10^6 points against a
+ * 10^5-vertex outline). Not installed.
+ */
+#ifndef QC_REGION_INDEX_H
+#define QC_REGION_INDEX_H
+
+#include "internal.h"
+
+typedef struct qc__rindex {
+    const qc_region *region;
+    uint32_t *next;         /* next[a] = the other end of the edge from vertex a */
+    qc_bbox box;
+    double cell;            /* square grid cell size, mm */
+    size_t nx, ny;
+    uint32_t *cell_start;   /* nx*ny+1 offsets into cell_edge (CSR) */
+    uint32_t *cell_edge;    /* edge = index of its first vertex in region->v */
+    size_t ncell_edge;
+    double band;            /* horizontal band height for the ray test */
+    size_t nband;
+    uint32_t *band_start;   /* nband+1 offsets into band_edge */
+    uint32_t *band_edge;
+    size_t nband_edge;
+} qc__rindex;
+
+/* Indexes region's edges (region must outlive the index). QC_OK, QC_ENOMEM. */
+QC__HIDDEN int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix);
+QC__HIDDEN void qc__rindex_free(qc_ctx *ctx, qc__rindex *ix);
+/* As qc_region_contains. */
+QC__HIDDEN int qc__rindex_contains(const qc__rindex *ix, qc_vec2 p);
+/* Whether some boundary edge is closer to p than r. */
+QC__HIDDEN int qc__rindex_near(const qc__rindex *ix, qc_vec2 p, double r);
+/* Inside and at least margin from every edge. */
+QC__HIDDEN int qc__rindex_admits(const qc__rindex *ix, qc_vec2 p, double margin);
+
+#endif

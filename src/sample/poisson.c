@@ -1,0 +1,126 @@
+/*
+ * Bridson's Poisson-disk sampling (2007) over a background grid of cell
+ * d / sqrt 2 (at most one point per cell). Every empty cell whose centre is
+ * admissible seeds a new run, so islands and the far side of holes fill too.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "sample_internal.h"
+
+#define EMPTY UINT32_MAX
+
+typedef struct pgrid {
+    double x0, y0, cell, d2;
+    size_t nx, ny;
+    uint32_t *slot; /* point index per cell, or EMPTY */
+} pgrid;
+
+static size_t cell_index(const pgrid *g, qc_vec2 p)
+{
+    size_t cx = (size_t)((p.x - g->x0) / g->cell), cy = (size_t)((p.y - g->y0) / g->cell);
+    return (cy < g->ny ? cy : g->ny - 1) * g->nx + (cx < g->nx ? cx : g->nx - 1);
+}
+
+/* No point of pts closer than d to p (the 5x5 cells round p's cell suffice). */
+static int is_far(const pgrid *g, const qc_points *pts, qc_vec2 p)
+{
+    size_t c = cell_index(g, p), cx = c % g->nx, cy = c / g->nx;
+    size_t x0 = cx >= 2 ? cx - 2 : 0, y0 = cy >= 2 ? cy - 2 : 0;
+    size_t x1 = cx + 2 < g->nx ? cx + 2 : g->nx - 1, y1 = cy + 2 < g->ny ? cy + 2 : g->ny - 1;
+    size_t x, y;
+
+    for (y = y0; y <= y1; y++)
+        for (x = x0; x <= x1; x++) {
+            uint32_t s = g->slot[y * g->nx + x];
+            if (s != EMPTY) {
+                double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
+                if (dx * dx + dy * dy < g->d2)
+                    return 0;
+            }
+        }
+    return 1;
+}
+
+static int inside_box(const qc__rindex *ix, qc_vec2 p)
+{
+    return p.x >= ix->box.min.x && p.x <= ix->box.max.x && p.y >= ix->box.min.y &&
+           p.y <= ix->box.max.y;
+}
+
+static int add_point(qc_ctx *ctx, pgrid *g, qc_points *pts, qc_order *active, qc_vec2 p)
+{
+    g->slot[cell_index(g, p)] = (uint32_t)pts->n;
+    QC__TRY(qc_order_push(ctx, active, (uint32_t)pts->n));
+    return qc_points_push(ctx, pts, p);
+}
+
+/* Grows the sample from the active list until it empties. */
+static int grow(qc_ctx *ctx, const qc__rindex *ix, pgrid *g, double d, double margin, int k,
+                qc_rng *rng, qc_points *pts, qc_order *active)
+{
+    while (active->n > 0) {
+        size_t at = (size_t)qc_rng_below(rng, active->n);
+        qc_vec2 c = pts->v[active->i[at]];
+        int t, placed = 0;
+
+        for (t = 0; t < k && !placed; t++) {
+            double a = 2.0 * QC_PI * qc_rng_unit(rng);
+            double r = d * sqrt(1.0 + 3.0 * qc_rng_unit(rng)); /* area-uniform in [d, 2d) */
+            qc_vec2 p;
+
+            p.x = c.x + r * qc_cos(a);
+            p.y = c.y + r * qc_sin(a);
+            if (inside_box(ix, p) && is_far(g, pts, p) && qc__rindex_admits(ix, p, margin)) {
+                QC__TRY(add_point(ctx, g, pts, active, p));
+                placed = 1;
+            }
+        }
+        if (!placed)
+            active->i[at] = active->i[--active->n];
+    }
+    return QC_OK;
+}
+
+int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margin,
+                       uint64_t seed, int k, qc_points *out)
+{
+    pgrid g;
+    qc_order active = {0};
+    qc_points pts = {0};
+    qc_rng rng;
+    size_t c, i;
+    int rc = QC_OK;
+
+    memset(&g, 0, sizeof g);
+    g.x0 = ix->box.min.x;
+    g.y0 = ix->box.min.y;
+    g.cell = d / 1.4142135623730951;
+    g.d2 = d * d;
+    g.nx = (size_t)((ix->box.max.x - g.x0) / g.cell) + 1;
+    g.ny = (size_t)((ix->box.max.y - g.y0) / g.cell) + 1;
+    g.slot = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.slot);
+    if (g.slot == NULL)
+        return QC_ENOMEM;
+    for (c = 0; c < g.nx * g.ny; c++)
+        g.slot[c] = EMPTY;
+    qc_rng_seed(&rng, seed);
+    for (c = 0; c < g.nx * g.ny && rc == QC_OK; c++) {
+        qc_vec2 p;
+        if (g.slot[c] != EMPTY)
+            continue;
+        p.x = g.x0 + ((double)(c % g.nx) + 0.5) * g.cell;
+        p.y = g.y0 + ((double)(c / g.nx) + 0.5) * g.cell;
+        if (inside_box(ix, p) && is_far(&g, &pts, p) && qc__rindex_admits(ix, p, margin)) {
+            rc = add_point(ctx, &g, &pts, &active, p);
+            if (rc == QC_OK)
+                rc = grow(ctx, ix, &g, d, margin, k, &rng, &pts, &active);
+        }
+    }
+    for (i = 0; i < pts.n && rc == QC_OK; i++)
+        rc = qc_points_push(ctx, out, pts.v[i]);
+    qc_points_free(ctx, &pts);
+    qc_order_free(ctx, &active);
+    qc__free(ctx, g.slot, g.nx * g.ny * sizeof *g.slot);
+    return rc;
+}

@@ -1,0 +1,280 @@
+/* Regions: built-in shapes, normalize's validation and orientation, the boundary index. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "quiltc.h"
+#include "testalloc.h"
+#include "unity.h"
+#include "../src/region/region_index.h"
+
+static testalloc ta;
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    memset(&ta, 0, sizeof ta);
+    qc_ctx_init(&ctx, testalloc_fn, &ta);
+}
+
+void tearDown(void)
+{
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+    TEST_ASSERT_FALSE(ta.size_mismatch);
+}
+
+static qc_vec2 v2(double x, double y)
+{
+    qc_vec2 p;
+    p.x = x;
+    p.y = y;
+    return p;
+}
+
+static void square_ring(qc_region *r, double x0, double y0, double s, int ccw)
+{
+    qc_vec2 v[4];
+    v[0] = v2(x0, y0);
+    v[1] = ccw ? v2(x0 + s, y0) : v2(x0, y0 + s);
+    v[2] = v2(x0 + s, y0 + s);
+    v[3] = ccw ? v2(x0, y0 + s) : v2(x0 + s, y0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, r, v, 4));
+}
+
+static double ring_signed_area(const qc_region *r, size_t k)
+{
+    size_t s = k ? r->ring_end[k - 1] : 0, e = r->ring_end[k], i, j = e - 1;
+    double a = 0;
+    for (i = s; i < e; j = i++)
+        a += r->v[j].x * r->v[i].y - r->v[i].x * r->v[j].y;
+    return a / 2;
+}
+
+static void expect_error(int rc, int status, const char *needle)
+{
+    TEST_ASSERT_EQUAL_INT_MESSAGE(status, rc, qc_errmsg(&ctx));
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(qc_errmsg(&ctx), needle), qc_errmsg(&ctx));
+}
+
+static void test_rect_in_inches_is_exact(void)
+{
+    qc_region r;
+    qc_bbox b;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:8x6", 25.4, &r));
+    b = qc_region_bbox(&r);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, b.min.x);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, b.min.y);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 203.2, b.max.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 152.4, b.max.y);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 203.2 * 152.4, qc_region_area(&r));
+    qc_region_free(&ctx, &r);
+}
+
+/* Every built-in: bbox at the origin, counter-clockwise, the expected area. */
+static void test_shapes_are_normalized_with_expected_areas(void)
+{
+    static const struct { const char *spec; double area; double tol; } cases[] = {
+        {"square:100", 10000.0, 1e-9},
+        {"circle:100", -1.0, 1e-9}, /* the inscribed polygon's area */
+        {"hexagon:100", 6495.190528383290, 1e-6},     /* 3 sqrt3 / 2 r^2 */
+        {"star:100", 2806.424853622408, 1e-6}, /* 10 triangles R r sin 36 / 2, r = (3 - sqrt5)/2 R */
+        {"heart:100", 0.0, 0.0},
+    };
+    size_t i;
+
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        qc_region r;
+        qc_bbox b;
+
+        TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, qc_region_shape(&ctx, cases[i].spec, 1.0, &r),
+                                      cases[i].spec);
+        b = qc_region_bbox(&r);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, b.min.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, b.min.y);
+        TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 0));
+        if (cases[i].area < 0) /* n/2 r^2 sin(2 pi / n), within 0.03% of pi r^2 */
+            TEST_ASSERT_DOUBLE_WITHIN(2.5, 7853.981633974483, qc_region_area(&r));
+        if (cases[i].area < 0)
+            TEST_ASSERT_DOUBLE_WITHIN(1e-6, r.nv / 2.0 * 2500.0 * sin(2 * QC_PI / r.nv),
+                                      qc_region_area(&r));
+        else if (cases[i].tol > 0)
+            TEST_ASSERT_DOUBLE_WITHIN(cases[i].tol, cases[i].area, qc_region_area(&r));
+        else /* the heart is D wide */
+            TEST_ASSERT_DOUBLE_WITHIN(1e-6, 100.0, b.max.x);
+        qc_region_free(&ctx, &r);
+    }
+}
+
+static void test_circle_polygon_stays_near_the_circle(void)
+{
+    qc_region r;
+    size_t i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "circle:200", 1.0, &r));
+    for (i = 0; i < r.nv; i++) {
+        qc_vec2 a = r.v[i], b = r.v[(i + 1) % r.nv];
+        qc_vec2 m = v2((a.x + b.x) / 2 - 100, (a.y + b.y) / 2 - 100);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 100.0, hypot(a.x - 100, a.y - 100));
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(0.0101, 100.0 - hypot(m.x, m.y));
+    }
+    qc_region_free(&ctx, &r);
+}
+
+static void test_shape_errors_name_the_value(void)
+{
+    qc_region r;
+
+    expect_error(qc_region_shape(&ctx, "blob:5", 1.0, &r), QC_EINVAL, "unknown shape 'blob:5'");
+    expect_error(qc_region_shape(&ctx, "rect:8", 1.0, &r), QC_EINVAL, "expected WxH");
+    expect_error(qc_region_shape(&ctx, "rect:0x5", 1.0, &r), QC_ERANGE, "size 0 mm");
+    expect_error(qc_region_shape(&ctx, "circle:-3", 1.0, &r), QC_ERANGE, "size -3 mm");
+    expect_error(qc_region_shape(&ctx, "circle:nan", 1.0, &r), QC_EINVAL, "at 'nan'");
+    expect_error(qc_region_shape(&ctx, "circle:3x10", 1.0, &r), QC_EINVAL, "unexpected 'x10'");
+    expect_error(qc_region_shape(&ctx, "circle:1e300", 1.0, &r), QC_ERANGE, "outside");
+    expect_error(qc_region_shape(&ctx, "circle:abc", 1.0, &r), QC_EINVAL, "expected a number");
+    expect_error(qc_region_shape(&ctx, "circle:5mm", 1.0, &r), QC_EINVAL, "unexpected 'mm'");
+    expect_error(qc_region_shape(&ctx, "circle:5", 0.0, &r), QC_ERANGE, "unit");
+}
+
+static void test_normalize_orients_outer_ccw_holes_cw_islands_ccw(void)
+{
+    qc_region r = {0};
+
+    square_ring(&r, 0, 0, 100, 0);  /* outer given clockwise */
+    square_ring(&r, 20, 20, 60, 1); /* hole given counter-clockwise */
+    square_ring(&r, 40, 40, 20, 0); /* island in the hole given clockwise */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 0));
+    TEST_ASSERT_LESS_THAN_DOUBLE(0.0, ring_signed_area(&r, 1));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 2));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 10000.0 - 3600.0 + 400.0, qc_region_area(&r));
+    TEST_ASSERT_TRUE(qc_region_contains(&r, v2(10, 10)));
+    TEST_ASSERT_FALSE(qc_region_contains(&r, v2(30, 30)));
+    TEST_ASSERT_TRUE(qc_region_contains(&r, v2(50, 50)));
+    qc_region_free(&ctx, &r);
+}
+
+static void test_normalize_drops_repeated_vertices(void)
+{
+    qc_region r = {0};
+    qc_vec2 v[7];
+
+    v[0] = v2(0, 0); v[1] = v2(0, 0); v[2] = v2(10, 0); v[3] = v2(10, 10);
+    v[4] = v2(10, 10); v[5] = v2(0, 10); v[6] = v2(0, 0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, v, 7));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_EQUAL_size_t(4, r.nv);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 100.0, qc_region_area(&r));
+    qc_region_free(&ctx, &r);
+}
+
+static void test_normalize_rejects_bad_regions(void)
+{
+    qc_region r = {0};
+    qc_vec2 bow[4], line[3], spike[5];
+
+    expect_error(qc_region_normalize(&ctx, &r), QC_EEMPTY, "no outline");
+
+    bow[0] = v2(0, 0); bow[1] = v2(10, 10); bow[2] = v2(10, 0); bow[3] = v2(0, 20);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, bow, 4));
+    expect_error(qc_region_normalize(&ctx, &r), QC_EINTERSECT, "ring 1 crosses itself");
+    qc_region_free(&ctx, &r);
+
+    square_ring(&r, 0, 0, 10, 1);
+    square_ring(&r, 5, 5, 10, 1);
+    expect_error(qc_region_normalize(&ctx, &r), QC_EINTERSECT, "ring 1 touches or crosses ring 2");
+    qc_region_free(&ctx, &r);
+
+    square_ring(&r, 0, 0, 10, 1);
+    square_ring(&r, 10, 0, 10, 1); /* shares an edge */
+    expect_error(qc_region_normalize(&ctx, &r), QC_EINTERSECT, "touches");
+    qc_region_free(&ctx, &r);
+
+    line[0] = v2(0, 0); line[1] = v2(5, 5); line[2] = v2(10, 10);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, line, 3));
+    expect_error(qc_region_normalize(&ctx, &r), QC_EDEGENERATE, "ring 1 has zero area");
+    qc_region_free(&ctx, &r);
+
+    /* a spike folding back along itself */
+    spike[0] = v2(0, 0); spike[1] = v2(10, 0); spike[2] = v2(20, 0); spike[3] = v2(5, 0);
+    spike[4] = v2(0, 10);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, spike, 5));
+    expect_error(qc_region_normalize(&ctx, &r), QC_EINTERSECT, "crosses itself");
+    qc_region_free(&ctx, &r);
+
+    square_ring(&r, 0, 0, 10, 1);
+    r.v[2].x = NAN;
+    expect_error(qc_region_normalize(&ctx, &r), QC_ERANGE, "ring 1 vertex 3 is (nan");
+    qc_region_free(&ctx, &r);
+
+    square_ring(&r, 0, 0, 10, 1);
+    r.v[1].x = 5e6;
+    expect_error(qc_region_normalize(&ctx, &r), QC_ERANGE, "within 1e+06 mm");
+    qc_region_free(&ctx, &r);
+}
+
+/* The index answers exactly as the brute-force queries, on a heart with a hole. */
+static void test_index_agrees_with_brute_force(void)
+{
+    qc_region r;
+    qc__rindex ix;
+    qc_rng rng;
+    qc_vec2 hole[4];
+    size_t i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "heart:120", 1.0, &r));
+    hole[0] = v2(50, 40); hole[1] = v2(70, 40); hole[2] = v2(70, 60); hole[3] = v2(50, 60);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, hole, 4));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__rindex_build(&ctx, &r, &ix));
+    qc_rng_seed(&rng, 7);
+    for (i = 0; i < 20000; i++) {
+        qc_vec2 p = v2(qc_rng_unit(&rng) * 140 - 10, qc_rng_unit(&rng) * 140 - 10);
+        double d = qc_region_boundary_distance(&r, p);
+        TEST_ASSERT_EQUAL_INT(qc_region_contains(&r, p), qc__rindex_contains(&ix, p));
+        TEST_ASSERT_EQUAL_INT(d < 3.0, qc__rindex_near(&ix, p, 3.0));
+    }
+    /* vertices and edge midpoints are on the boundary: inside */
+    for (i = 0; i < r.nv; i++)
+        TEST_ASSERT_TRUE(qc__rindex_contains(&ix, r.v[i]));
+    TEST_ASSERT_TRUE(qc__rindex_contains(&ix, v2(60, 40)));
+    qc__rindex_free(&ctx, &ix);
+    qc_region_free(&ctx, &r);
+}
+
+static void test_out_of_memory_is_reported_and_leaks_nothing(void)
+{
+    size_t k;
+
+    for (k = 1;; k++) {
+        qc_region r;
+        int rc;
+
+        memset(&ta, 0, sizeof ta);
+        ta.fail_at = k;
+        rc = qc_region_shape(&ctx, "heart:80", 1.0, &r);
+        TEST_ASSERT_EQUAL_size_t(0, rc == QC_OK ? 0 : ta.live_blocks);
+        if (rc == QC_OK) {
+            qc_region_free(&ctx, &r);
+            break;
+        }
+        TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
+    }
+    TEST_ASSERT_GREATER_THAN_UINT(2, (unsigned)k);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_rect_in_inches_is_exact);
+    RUN_TEST(test_shapes_are_normalized_with_expected_areas);
+    RUN_TEST(test_circle_polygon_stays_near_the_circle);
+    RUN_TEST(test_shape_errors_name_the_value);
+    RUN_TEST(test_normalize_orients_outer_ccw_holes_cw_islands_ccw);
+    RUN_TEST(test_normalize_drops_repeated_vertices);
+    RUN_TEST(test_normalize_rejects_bad_regions);
+    RUN_TEST(test_index_agrees_with_brute_force);
+    RUN_TEST(test_out_of_memory_is_reported_and_leaks_nothing);
+    return UNITY_END();
+}
