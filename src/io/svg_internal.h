@@ -1,0 +1,166 @@
+/*
+ * Internals of the SVG reader: a strict XML tokenizer (svg_xml.c), numbers,
+ * path data and arcs (svg_path.c), lengths, units and the root viewport
+ * (svg_units.c), and the document walk that turns elements into shapes
+ * (svg_shapes.c). read_svg.c holds the two public readers.
+ */
+#ifndef QC_SVG_INTERNAL_H
+#define QC_SVG_INTERNAL_H
+
+#include "io_internal.h"
+
+/* ---- XML tokenizer ---- */
+
+#define QC__XML_MAX_DEPTH 256 /* deeper nesting is QC_ELIMIT */
+#define QC__XML_MAX_ATTRS 256 /* attributes per element */
+
+typedef struct qc__xml_attr {
+    const char *name;  /* qualified name, in the document (not NUL-terminated) */
+    size_t name_len;
+    const char *value; /* entity-decoded, NUL-terminated, in the tokenizer's text buffer */
+    size_t value_len;
+    size_t at;         /* byte offset of the value's first character */
+} qc__xml_attr;
+
+typedef struct qc__xml_ns {
+    const char *prefix; /* NULL (len 0) for the default namespace */
+    size_t prefix_len;
+    size_t depth;       /* element depth that declared it */
+    int svg;            /* bound to the SVG namespace */
+} qc__xml_ns;
+
+typedef struct qc__xml_open {
+    const char *name;
+    size_t len, at;
+} qc__xml_open;
+
+typedef struct qc__xml {
+    qc_ctx *ctx;
+    const char *buf;
+    size_t len, pos;
+    size_t depth;                /* elements open */
+    qc__xml_open open[QC__XML_MAX_DEPTH];
+    int started, root_seen, root_done, close_pending;
+    /* the current element (after QC__XML_OPEN or QC__XML_CLOSE) */
+    const char *name;            /* qualified name, not NUL-terminated */
+    size_t name_len, at;         /* at: byte offset of its '<' */
+    const char *local;           /* local part of the name */
+    size_t local_len;
+    int svg;                     /* in the SVG namespace */
+    qc__xml_attr *attr;
+    size_t nattr, attr_cap;
+    char *text;                  /* decoded attribute values */
+    size_t text_len, text_cap;
+    qc__xml_ns *ns;
+    size_t nns, ns_cap;
+} qc__xml;
+
+enum { QC__XML_DONE = 0, QC__XML_OPEN = 1, QC__XML_CLOSE = 2 };
+
+QC__HIDDEN void qc__xml_init(qc__xml *x, qc_ctx *ctx, const char *buf, size_t len);
+QC__HIDDEN void qc__xml_free(qc__xml *x);
+/* The next event: QC__XML_OPEN (x->name, x->attr valid; x->depth counts
+ * it), QC__XML_CLOSE (x->name; a self-closing element gets OPEN then
+ * CLOSE), QC__XML_DONE after the root element closed and only comments,
+ * processing instructions and white space followed; or QC_EFORMAT,
+ * QC_ELIMIT, QC_ENOMEM. */
+QC__HIDDEN int qc__xml_next(qc__xml *x);
+/* 1-based line number of byte offset at. */
+QC__HIDDEN unsigned long qc__xml_line(const qc__xml *x, size_t at);
+/* The unprefixed attribute name of the current element, or NULL. */
+QC__HIDDEN const qc__xml_attr *qc__xml_attr_get(const qc__xml *x, const char *name);
+
+/* ---- numbers, affine matrices, error locations ---- */
+
+#define QC__SVG_MAX_NUMBER 1e7   /* |user units| beyond are QC_ERANGE */
+#define QC__SVG_MAX_MM 1e6       /* final coordinates, as qc_region_normalize */
+#define QC__SVG_PX_MM (25.4 / 96.0)
+
+/* x' = a x + c y + e, y' = b x + d y + f (SVG's matrix(a b c d e f)). */
+typedef struct qc__svg_mat {
+    double a, b, c, d, e, f;
+} qc__svg_mat;
+
+QC__HIDDEN qc__svg_mat qc__svg_mat_identity(void);
+/* l then r applied to a point is l(r(p)): SVG's "l r" transform list. */
+QC__HIDDEN qc__svg_mat qc__svg_mat_mul(qc__svg_mat l, qc__svg_mat r);
+QC__HIDDEN qc_vec2 qc__svg_mat_apply(const qc__svg_mat *m, qc_vec2 p);
+
+/* Where a value came from, for error messages: "svg line 12, <path d>". */
+typedef struct qc__svg_where {
+    qc_ctx *ctx;
+    unsigned long line;
+    const char *elem; /* element local name, NUL-terminated */
+    const char *attr; /* attribute name */
+} qc__svg_where;
+
+/* Scans an SVG number (sign, digits, '.', digits, exponent) at s[*pos]:
+ * 1 and *pos past it, or 0 when none starts there (*pos unchanged).
+ * Deterministic decimal conversion (no strtod, no locale); the value may
+ * be huge or inf: see qc__svg_check_number. */
+QC__HIDDEN int qc__svg_scan_number(const char *s, size_t n, size_t *pos, double *v);
+/* QC_OK, or QC_ERANGE when |v| > QC__SVG_MAX_NUMBER (or inf), naming w and
+ * the characters at s[at..). */
+QC__HIDDEN int qc__svg_check_number(const qc__svg_where *w, double v, const char *s,
+                                    size_t n, size_t at);
+/* QC_EFORMAT: "svg line L, <elem attr> char K: what, found "text"" */
+QC__HIDDEN int qc__svg_syntax(const qc__svg_where *w, const char *s, size_t n, size_t at,
+                              const char *what);
+QC__HIDDEN int qc__svg_is_space(char c);
+/* Skips white space and at most one comma (SVG comma-wsp); returns 1 when
+ * a comma was skipped. */
+QC__HIDDEN int qc__svg_skip_sep(const char *s, size_t n, size_t *pos);
+
+/* ---- path data (svg_path.c) ---- */
+
+/* Appends the path data d[0..n) to *out in the element's own user units:
+ * one MOVE per subpath that draws something, LINE and CUBIC (quadratics
+ * and arcs become cubics), Z as a LINE back to the start unless already
+ * there. Errors: QC_EFORMAT naming the character and text, QC_ERANGE. */
+QC__HIDDEN int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n,
+                                  qc_path *out);
+/* Appends the elliptical arc from p0 to p1 (SVG's A parameters, phi in
+ * degrees) as at most 4 cubics per full turn; a zero radius is a line,
+ * p0 == p1 nothing. */
+QC__HIDDEN int qc__svg_arc_to(qc_ctx *ctx, qc_path *out, qc_vec2 p0, double rx, double ry,
+                              double phi_deg, int large, int sweep, qc_vec2 p1);
+/* sin and cos of an angle in degrees, exact at multiples of 90. */
+QC__HIDDEN void qc__svg_sincos_deg(double deg, double *s, double *c);
+
+/* ---- lengths and the viewport (svg_units.c) ---- */
+
+enum { QC__SVG_AXIS_X, QC__SVG_AXIS_Y, QC__SVG_AXIS_OTHER };
+
+/* A <length> attribute in user units: a number with an optional unit (px,
+ * mm, cm, in, pt, pc, or % of the viewport size vp_w/vp_h along axis).
+ * Errors: QC_EFORMAT (unknown unit, trailing text), QC_ERANGE. */
+QC__HIDDEN int qc__svg_length(const qc__svg_where *w, const char *s, size_t n, int axis,
+                              double vp_w, double vp_h, double *out);
+
+/* The root <svg>'s mapping from its user units to mm, y up: width/height
+ * (units; absent or % means the viewBox size in px) and viewBox with
+ * preserveAspectRatio (default xMidYMid meet); then y_mm' = H - y_mm where
+ * H is the document height in mm (0 when neither height nor viewBox is
+ * given, so y is simply negated). vp_w/vp_h receive the viewport in user
+ * units (for % lengths). */
+QC__HIDDEN int qc__svg_root_viewport(const qc__svg_where *w, const qc__xml *x,
+                                     qc__svg_mat *m, double *vp_w, double *vp_h);
+/* A nested <svg>: translate(x, y), then its viewBox into width/height. */
+QC__HIDDEN int qc__svg_nested_viewport(const qc__svg_where *w, const qc__xml *x,
+                                       double vp_w, double vp_h, qc__svg_mat *m);
+
+/* ---- document walk (svg_shapes.c) ---- */
+
+/* Receives each shape in document order: its path in mm, y up (already
+ * transformed, coordinates checked); closed != 0 for shapes with an
+ * inside (path, rect, circle, ellipse, polygon), evenodd for its fill-rule.
+ * A negative return stops the walk. */
+typedef int (*qc__svg_shape_fn)(void *ud, const qc_path *shape, int closed, int evenodd);
+
+/* Parses the document and hands every visible shape to fn. Errors: those
+ * of the tokenizer and parsers, QC_ERANGE for a coordinate beyond 1e6 mm
+ * after transforms, or fn's. */
+QC__HIDDEN int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_shape_fn fn,
+                            void *ud);
+
+#endif

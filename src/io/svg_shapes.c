@@ -1,0 +1,536 @@
+/*
+ * The document walk: containers (svg, g, a, switch) compose their
+ * transforms; shapes (path, rect, circle, ellipse, polygon, polyline, line)
+ * become paths in mm, y up, handed to the caller one by one in document
+ * order. Not drawn and skipped with their whole subtree: display:none,
+ * defs, symbol, clipPath, mask, marker, pattern, text, use, image and every
+ * other element, and elements outside the SVG namespace (sodipodi:namedview,
+ * metadata). fill-rule is inherited (attribute or style, style wins).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "svg_internal.h"
+
+typedef struct frame {
+    qc__svg_mat m; /* this element's user units -> mm, y up */
+    int evenodd;
+    int skip;      /* this element and its subtree draw nothing */
+} frame;
+
+typedef struct walker {
+    qc_ctx *ctx;
+    qc__xml x;
+    frame *st; /* st[d] for the element at depth d (1 = root) */
+    qc_path shape;
+    double vp_w, vp_h;
+    qc__svg_shape_fn fn;
+    void *ud;
+    qc__svg_where w;
+    char elem[24];
+} walker;
+
+static int name_is(const walker *k, const char *name)
+{
+    size_t n = strlen(name);
+
+    return k->x.local_len == n && memcmp(k->x.local, name, n) == 0;
+}
+
+/* ---- style and presentation attributes ---- */
+
+static void trim(const char **s, size_t *n)
+{
+    while (*n > 0 && qc__svg_is_space(**s)) {
+        (*s)++;
+        (*n)--;
+    }
+    while (*n > 0 && qc__svg_is_space((*s)[*n - 1]))
+        (*n)--;
+}
+
+/* The last declaration of prop in a CSS declaration list ("a:b; c:d"). */
+static int style_prop(const char *s, size_t n, const char *prop, const char **val, size_t *vlen)
+{
+    size_t i = 0, plen = strlen(prop);
+    int found = 0;
+
+    while (i < n) {
+        size_t j = i, colon;
+        const char *name, *v;
+        size_t nn, vn;
+
+        while (j < n && s[j] != ';')
+            j++;
+        for (colon = i; colon < j && s[colon] != ':'; colon++)
+            ;
+        if (colon < j) {
+            name = s + i;
+            nn = colon - i;
+            v = s + colon + 1;
+            vn = j - colon - 1;
+            trim(&name, &nn);
+            trim(&v, &vn);
+            if (vn >= 10 && memcmp(v + vn - 10, "!important", 10) == 0) {
+                vn -= 10;
+                trim(&v, &vn);
+            }
+            if (nn == plen && memcmp(name, prop, plen) == 0) {
+                *val = v;
+                *vlen = vn;
+                found = 1;
+            }
+        }
+        i = j + 1;
+    }
+    return found;
+}
+
+/* A presentation property: the style attribute's declaration, else the
+ * attribute of the same name. */
+static int property(const walker *k, const char *prop, const char **val, size_t *vlen)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(&k->x, "style");
+
+    if (a != NULL && style_prop(a->value, a->value_len, prop, val, vlen))
+        return 1;
+    a = qc__xml_attr_get(&k->x, prop);
+    if (a == NULL)
+        return 0;
+    *val = a->value;
+    *vlen = a->value_len;
+    trim(val, vlen);
+    return 1;
+}
+
+static int value_is(const char *v, size_t n, const char *w)
+{
+    return n == strlen(w) && memcmp(v, w, n) == 0;
+}
+
+/* ---- transform lists ---- */
+
+static int transform(walker *k, const char *s, size_t n, qc__svg_mat *out)
+{
+    static const struct {
+        const char *name;
+        int min, max;
+    } fns[] = {{"matrix", 6, 6}, {"translate", 1, 2}, {"scale", 1, 2},
+               {"rotate", 1, 3}, {"skewX", 1, 1},     {"skewY", 1, 1}};
+    qc__svg_where *w = &k->w;
+    size_t i = 0;
+
+    *out = qc__svg_mat_identity();
+    w->attr = "transform";
+    while (i < n && qc__svg_is_space(s[i]))
+        i++;
+    while (i < n) {
+        size_t j = i, f, at;
+        double a[6] = {0, 0, 0, 0, 0, 0}, sn, cs;
+        int na = 0;
+        qc__svg_mat t = qc__svg_mat_identity();
+
+        while (j < n && ((s[j] >= 'a' && s[j] <= 'z') || (s[j] >= 'A' && s[j] <= 'Z')))
+            j++;
+        for (f = 0; f < sizeof fns / sizeof fns[0]; f++)
+            if (value_is(s + i, j - i, fns[f].name))
+                break;
+        if (f == sizeof fns / sizeof fns[0])
+            return qc__svg_syntax(w, s, n, i,
+                                  "expected matrix, translate, scale, rotate, skewX or skewY");
+        while (j < n && qc__svg_is_space(s[j]))
+            j++;
+        if (j >= n || s[j] != '(')
+            return qc__svg_syntax(w, s, n, j, "expected '('");
+        j++;
+        while (j < n && qc__svg_is_space(s[j]))
+            j++;
+        while (j < n && s[j] != ')') {
+            if (na > 0)
+                qc__svg_skip_sep(s, n, &j);
+            at = j;
+            if (na == 6 || !qc__svg_scan_number(s, n, &j, &a[na]))
+                return qc__svg_syntax(w, s, n, at, na == 6 ? "expected ')'" : "expected a number");
+            QC__TRY(qc__svg_check_number(w, a[na], s, n, at));
+            na++;
+            while (j < n && qc__svg_is_space(s[j]))
+                j++;
+        }
+        if (j >= n)
+            return qc__svg_syntax(w, s, n, j, "expected ')'");
+        if (na < fns[f].min || na > fns[f].max || (f == 3 && na == 2))
+            return qc__svg_syntax(w, s, n, i, "wrong number of arguments");
+        j++;
+        switch (f) {
+        case 0:
+            t.a = a[0];
+            t.b = a[1];
+            t.c = a[2];
+            t.d = a[3];
+            t.e = a[4];
+            t.f = a[5];
+            break;
+        case 1:
+            t.e = a[0];
+            t.f = a[1];
+            break;
+        case 2:
+            t.a = a[0];
+            t.d = na == 2 ? a[1] : a[0];
+            break;
+        case 3:
+            qc__svg_sincos_deg(a[0], &sn, &cs);
+            t.a = cs;
+            t.b = sn;
+            t.c = -sn;
+            t.d = cs;
+            /* about (cx, cy): translate(c) rotate translate(-c) */
+            t.e = a[1] - cs * a[1] + sn * a[2];
+            t.f = a[2] - sn * a[1] - cs * a[2];
+            break;
+        default:
+            qc__svg_sincos_deg(a[0], &sn, &cs);
+            if (fabs(cs) < 1e-9)
+                return qc__fail(k->ctx, QC_ERANGE,
+                                "svg line %lu, <%s transform>: skew angle %g has no tangent",
+                                w->line, w->elem, a[0]);
+            if (f == 4)
+                t.c = sn / cs;
+            else
+                t.b = sn / cs;
+            break;
+        }
+        *out = qc__svg_mat_mul(*out, t);
+        i = j;
+        if (qc__svg_skip_sep(s, n, &i) && i >= n)
+            return qc__svg_syntax(w, s, n, i, "expected a transform after ','");
+    }
+    return QC_OK;
+}
+
+/* ---- shapes in their own user units ---- */
+
+/* A <length> attribute; *v keeps its default when absent. */
+static int length(walker *k, const char *name, int axis, double *v, int *given)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(&k->x, name);
+
+    if (given != NULL)
+        *given = a != NULL;
+    if (a == NULL)
+        return QC_OK;
+    k->w.attr = name;
+    return qc__svg_length(&k->w, a->value, a->value_len, axis, k->vp_w, k->vp_h, v);
+}
+
+static qc_vec2 v2(double x, double y)
+{
+    qc_vec2 p;
+
+    p.x = x;
+    p.y = y;
+    return p;
+}
+
+static int move(walker *k, double x, double y)
+{
+    return qc_path_move_to(k->ctx, &k->shape, v2(x, y));
+}
+
+static int line(walker *k, double x, double y)
+{
+    return qc_path_line_to(k->ctx, &k->shape, v2(x, y));
+}
+
+/* Quarter arcs of an ellipse from (x0, y0) to (x1, y1), sweep positive. */
+static int quarter(walker *k, double x0, double y0, double rx, double ry, double x1, double y1)
+{
+    return qc__svg_arc_to(k->ctx, &k->shape, v2(x0, y0), rx, ry, 0, 0, 1, v2(x1, y1));
+}
+
+static int rect(walker *k)
+{
+    double x = 0, y = 0, wd = 0, ht = 0, rx = 0, ry = 0;
+    int hrx, hry;
+
+    QC__TRY(length(k, "x", QC__SVG_AXIS_X, &x, NULL));
+    QC__TRY(length(k, "y", QC__SVG_AXIS_Y, &y, NULL));
+    QC__TRY(length(k, "width", QC__SVG_AXIS_X, &wd, NULL));
+    QC__TRY(length(k, "height", QC__SVG_AXIS_Y, &ht, NULL));
+    QC__TRY(length(k, "rx", QC__SVG_AXIS_X, &rx, &hrx));
+    QC__TRY(length(k, "ry", QC__SVG_AXIS_Y, &ry, &hry));
+    if (!(wd > 0) || !(ht > 0))
+        return QC_OK; /* not rendered */
+    /* a missing or negative radius is auto: the other one */
+    hrx = hrx && rx >= 0;
+    hry = hry && ry >= 0;
+    if (!hrx)
+        rx = hry ? ry : 0;
+    if (!hry)
+        ry = hrx ? rx : 0;
+    rx = rx > wd / 2 ? wd / 2 : rx;
+    ry = ry > ht / 2 ? ht / 2 : ry;
+    if (rx > 0 && ry > 0) {
+        QC__TRY(move(k, x + rx, y));
+        if (wd > 2 * rx)
+            QC__TRY(line(k, x + wd - rx, y));
+        QC__TRY(quarter(k, x + wd - rx, y, rx, ry, x + wd, y + ry));
+        if (ht > 2 * ry)
+            QC__TRY(line(k, x + wd, y + ht - ry));
+        QC__TRY(quarter(k, x + wd, y + ht - ry, rx, ry, x + wd - rx, y + ht));
+        if (wd > 2 * rx)
+            QC__TRY(line(k, x + rx, y + ht));
+        QC__TRY(quarter(k, x + rx, y + ht, rx, ry, x, y + ht - ry));
+        if (ht > 2 * ry)
+            QC__TRY(line(k, x, y + ry));
+        return quarter(k, x, y + ry, rx, ry, x + rx, y);
+    }
+    QC__TRY(move(k, x, y));
+    QC__TRY(line(k, x + wd, y));
+    QC__TRY(line(k, x + wd, y + ht));
+    QC__TRY(line(k, x, y + ht));
+    return line(k, x, y);
+}
+
+static int ellipse(walker *k, double cx, double cy, double rx, double ry)
+{
+    if (!(rx > 0) || !(ry > 0))
+        return QC_OK;
+    QC__TRY(move(k, cx + rx, cy));
+    QC__TRY(quarter(k, cx + rx, cy, rx, ry, cx, cy + ry));
+    QC__TRY(quarter(k, cx, cy + ry, rx, ry, cx - rx, cy));
+    QC__TRY(quarter(k, cx - rx, cy, rx, ry, cx, cy - ry));
+    return quarter(k, cx, cy - ry, rx, ry, cx + rx, cy);
+}
+
+static int circle(walker *k)
+{
+    double cx = 0, cy = 0, r = 0;
+
+    QC__TRY(length(k, "cx", QC__SVG_AXIS_X, &cx, NULL));
+    QC__TRY(length(k, "cy", QC__SVG_AXIS_Y, &cy, NULL));
+    QC__TRY(length(k, "r", QC__SVG_AXIS_OTHER, &r, NULL));
+    return ellipse(k, cx, cy, r, r);
+}
+
+static int ellipse_el(walker *k)
+{
+    double cx = 0, cy = 0, rx = 0, ry = 0;
+    int hrx, hry;
+
+    QC__TRY(length(k, "cx", QC__SVG_AXIS_X, &cx, NULL));
+    QC__TRY(length(k, "cy", QC__SVG_AXIS_Y, &cy, NULL));
+    QC__TRY(length(k, "rx", QC__SVG_AXIS_X, &rx, &hrx));
+    QC__TRY(length(k, "ry", QC__SVG_AXIS_Y, &ry, &hry));
+    if (!hrx)
+        rx = ry; /* SVG 2: auto takes the other radius */
+    if (!hry)
+        ry = rx;
+    return ellipse(k, cx, cy, rx, ry);
+}
+
+static int line_el(walker *k)
+{
+    double c[4] = {0, 0, 0, 0};
+
+    QC__TRY(length(k, "x1", QC__SVG_AXIS_X, &c[0], NULL));
+    QC__TRY(length(k, "y1", QC__SVG_AXIS_Y, &c[1], NULL));
+    QC__TRY(length(k, "x2", QC__SVG_AXIS_X, &c[2], NULL));
+    QC__TRY(length(k, "y2", QC__SVG_AXIS_Y, &c[3], NULL));
+    QC__TRY(move(k, c[0], c[1]));
+    return line(k, c[2], c[3]);
+}
+
+static int poly(walker *k, int closed)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(&k->x, "points");
+    const char *s;
+    size_t n, i = 0, count = 0;
+    double xy[2];
+    qc_vec2 first = {0, 0}, last = {0, 0};
+
+    if (a == NULL)
+        return QC_OK;
+    s = a->value;
+    n = a->value_len;
+    k->w.attr = "points";
+    while (i < n && qc__svg_is_space(s[i]))
+        i++;
+    while (i < n) {
+        size_t at = i;
+
+        if (!qc__svg_scan_number(s, n, &i, &xy[count % 2]))
+            return qc__svg_syntax(&k->w, s, n, at, "expected a number");
+        QC__TRY(qc__svg_check_number(&k->w, xy[count % 2], s, n, at));
+        if (count % 2 == 1) {
+            last = v2(xy[0], xy[1]);
+            if (count == 1) {
+                first = last;
+                QC__TRY(move(k, xy[0], xy[1]));
+            } else {
+                QC__TRY(line(k, xy[0], xy[1]));
+            }
+            if (k->shape.npt > QC_MAX_POINTS)
+                return qc__fail(k->ctx, QC_ELIMIT, "svg line %lu, <%s points>: more than %lu points",
+                                k->w.line, k->w.elem, (unsigned long)QC_MAX_POINTS);
+        }
+        count++;
+        if (qc__svg_skip_sep(s, n, &i) && i >= n)
+            return qc__svg_syntax(&k->w, s, n, i, "expected a number after ','");
+    }
+    if (count % 2 == 1)
+        return qc__svg_syntax(&k->w, s, n, n, "odd number of coordinates");
+    if (count < 4) {
+        k->shape.ncmd = k->shape.npt = 0; /* a single point draws nothing */
+        return QC_OK;
+    }
+    if (closed && (last.x != first.x || last.y != first.y))
+        QC__TRY(line(k, first.x, first.y));
+    return QC_OK;
+}
+
+/* Builds the current shape element into k->shape (own user units);
+ * *closed says whether it has an inside. */
+static int build_shape(walker *k, int *closed)
+{
+    *closed = 1;
+    if (name_is(k, "path")) {
+        const qc__xml_attr *a = qc__xml_attr_get(&k->x, "d");
+
+        if (a == NULL)
+            return QC_OK;
+        k->w.attr = "d";
+        return qc__svg_parse_path(&k->w, a->value, a->value_len, &k->shape);
+    }
+    if (name_is(k, "rect"))
+        return rect(k);
+    if (name_is(k, "circle"))
+        return circle(k);
+    if (name_is(k, "ellipse"))
+        return ellipse_el(k);
+    if (name_is(k, "polygon"))
+        return poly(k, 1);
+    *closed = 0;
+    if (name_is(k, "polyline"))
+        return poly(k, 0);
+    return line_el(k);
+}
+
+static int is_shape(const walker *k)
+{
+    return name_is(k, "path") || name_is(k, "rect") || name_is(k, "circle") ||
+           name_is(k, "ellipse") || name_is(k, "polygon") || name_is(k, "polyline") ||
+           name_is(k, "line");
+}
+
+static int is_container(const walker *k)
+{
+    return name_is(k, "g") || name_is(k, "a") || name_is(k, "switch") || name_is(k, "svg");
+}
+
+/* Maps the shape to mm and hands it over. */
+static int emit(walker *k, const frame *f, int closed)
+{
+    size_t i;
+
+    if (k->shape.ncmd == 0)
+        return QC_OK;
+    for (i = 0; i < k->shape.npt; i++) {
+        qc_vec2 p = qc__svg_mat_apply(&f->m, k->shape.pt[i]);
+
+        if (!(fabs(p.x) <= QC__SVG_MAX_MM) || !(fabs(p.y) <= QC__SVG_MAX_MM))
+            return qc__fail(k->ctx, QC_ERANGE,
+                            "svg line %lu, <%s>: point (%g, %g) mm after transforms is "
+                            "beyond %g mm",
+                            k->w.line, k->w.elem, p.x, p.y, QC__SVG_MAX_MM);
+        k->shape.pt[i] = p;
+    }
+    return k->fn(k->ud, &k->shape, closed, f->evenodd);
+}
+
+static int open_element(walker *k)
+{
+    size_t d = k->x.depth;
+    frame *f = &k->st[d];
+    const frame *parent = &k->st[d - 1];
+    const char *v;
+    size_t vn, ln = k->x.local_len < sizeof k->elem - 1 ? k->x.local_len : sizeof k->elem - 1;
+    qc__svg_mat local;
+    int closed;
+
+    memcpy(k->elem, k->x.local, ln);
+    k->elem[ln] = '\0';
+    k->w.line = qc__xml_line(&k->x, k->x.at);
+    k->w.elem = k->elem;
+    k->w.attr = "";
+    *f = *parent;
+    if (d == 1) {
+        if (!k->x.svg || !name_is(k, "svg"))
+            return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element is <%.*s>, not <svg>",
+                            k->w.line, (int)(k->x.name_len > 40 ? 40 : k->x.name_len), k->x.name);
+        f->skip = 0;
+        f->evenodd = 0;
+        QC__TRY(qc__svg_root_viewport(&k->w, &k->x, &f->m, &k->vp_w, &k->vp_h));
+    } else if (parent->skip || !k->x.svg || !(is_container(k) || is_shape(k))) {
+        f->skip = 1;
+        return QC_OK;
+    } else {
+        const qc__xml_attr *t = qc__xml_attr_get(&k->x, "transform");
+
+        if (t != NULL && !name_is(k, "svg")) {
+            QC__TRY(transform(k, t->value, t->value_len, &local));
+            f->m = qc__svg_mat_mul(f->m, local);
+        }
+        if (name_is(k, "svg")) {
+            QC__TRY(qc__svg_nested_viewport(&k->w, &k->x, k->vp_w, k->vp_h, &local));
+            f->m = qc__svg_mat_mul(f->m, local);
+        }
+    }
+    if (property(k, "display", &v, &vn) && value_is(v, vn, "none")) {
+        f->skip = 1;
+        return QC_OK;
+    }
+    if (property(k, "fill-rule", &v, &vn)) {
+        if (value_is(v, vn, "evenodd"))
+            f->evenodd = 1;
+        else if (value_is(v, vn, "nonzero"))
+            f->evenodd = 0;
+    }
+    if (!is_shape(k))
+        return QC_OK;
+    f->skip = 1; /* children of a shape draw nothing */
+    k->shape.ncmd = k->shape.npt = 0;
+    QC__TRY(build_shape(k, &closed));
+    return emit(k, f, closed);
+}
+
+int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_shape_fn fn, void *ud)
+{
+    walker k;
+    int rc;
+
+    memset(&k, 0, sizeof k);
+    k.ctx = ctx;
+    k.fn = fn;
+    k.ud = ud;
+    k.w.ctx = ctx;
+    k.st = (frame *)qc__alloc_array(ctx, QC__XML_MAX_DEPTH + 1, sizeof *k.st);
+    if (k.st == NULL)
+        return QC_ENOMEM;
+    k.st[0].m = qc__svg_mat_identity();
+    qc__xml_init(&k.x, ctx, buf, len);
+    for (;;) {
+        rc = qc__xml_next(&k.x);
+        if (rc < 0 || rc == QC__XML_DONE)
+            break;
+        if (rc == QC__XML_OPEN) {
+            rc = open_element(&k);
+            if (rc < 0)
+                break;
+        }
+    }
+    qc__xml_free(&k.x);
+    qc_path_free(ctx, &k.shape);
+    qc__free(ctx, k.st, (QC__XML_MAX_DEPTH + 1) * sizeof *k.st);
+    return rc;
+}
