@@ -1,24 +1,37 @@
 # make wasm: the unchanged core + wasm/quiltc_wasm.c as build/web/quiltc.mjs + .wasm, with the page.
 # Debian's emscripten needs the system Node modules (acorn) on NODE_PATH.
-WASM_DIR   = $(BUILD)/web
-WASM_FLAGS = -O2 -std=c99 -ffp-contract=off -Iinclude -Isrc/core \
-             -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createQuiltc -sENVIRONMENT=web,worker \
-             -sFILESYSTEM=0 -sALLOW_MEMORY_GROWTH=1 -sASSERTIONS=0 \
-             -sEXPORTED_FUNCTIONS=@wasm/exports.txt \
-             -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString,stringToUTF8,lengthBytesUTF8,HEAPU8,HEAPU32,HEAPF64
-WASM_SRC   = $(LIB_SRC) wasm/quiltc_wasm.c
+# make serve: serves build/web on http://localhost:8000/ (any static server works).
+# $(BUILD)/tests/qcw_native: the same bindings built natively (tests/wasm/identity.mjs).
+WASM_DIR    = $(BUILD)/web
+WASM_OBJDIR = $(BUILD)/wasm-obj
+WASM_EMCC   = NODE_PATH=/usr/share/nodejs $(EMCC)
+WASM_CFLAGS = $(WARN) -O3 -ffp-contract=off -DNDEBUG -Iinclude -Isrc/core -Iwasm
+WASM_LDFLAGS = -O3 -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createQuiltc \
+             -sENVIRONMENT=web,worker -sFILESYSTEM=0 -sALLOW_MEMORY_GROWTH=1 \
+             -sASSERTIONS=0 -sEXPORTED_FUNCTIONS=@wasm/exports.txt \
+             -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8,HEAPU8,HEAPU32,HEAPF64
+WASM_OBJ    = $(patsubst %.c,$(WASM_OBJDIR)/%.o,$(LIB_SRC) wasm/quiltc_wasm.c)
+WASM_PAGE   = $(patsubst wasm/web/%,$(WASM_DIR)/%,$(wildcard wasm/web/*))
 
 .PHONY: wasm serve
-wasm: $(WASM_DIR)/quiltc.mjs $(patsubst wasm/web/%,$(WASM_DIR)/%,$(wildcard wasm/web/*))
+wasm: $(WASM_DIR)/quiltc.mjs $(WASM_PAGE)
 
-$(WASM_DIR)/quiltc.mjs: $(WASM_SRC) $(HEADERS) src/core/internal.h wasm/exports.txt
+$(WASM_OBJDIR)/%.o: %.c $(HEADERS) $(wildcard src/*/*.h) wasm/quiltc_wasm.h
+	@mkdir -p $(dir $@)
+	$(WASM_EMCC) $(WASM_CFLAGS) -c $< -o $@
+
+$(WASM_DIR)/quiltc.mjs: $(WASM_OBJ) wasm/exports.txt
 	@mkdir -p $(WASM_DIR)
-	NODE_PATH=/usr/share/nodejs $(EMCC) $(WASM_FLAGS) $(WASM_SRC) -o $@
+	$(WASM_EMCC) $(WASM_LDFLAGS) $(WASM_OBJ) -o $@
 
 $(WASM_DIR)/%: wasm/web/%
 	@mkdir -p $(WASM_DIR)
 	cp $< $@
 
+$(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c wasm/quiltc_wasm.c wasm/quiltc_wasm.h $(BUILD)/libquiltc.a
+	@mkdir -p $(dir $@)
+	$(CC) $(BASE_CFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
+
 serve: wasm
-	@echo "quiltc page: http://localhost:8000/"
+	@echo "quiltc page: http://localhost:8000/ (Ctrl-C stops)"
 	cd $(WASM_DIR) && python3 -m http.server 8000

@@ -1,16 +1,25 @@
 /*
- * The JavaScript boundary: flat qcw_* wrappers over the unchanged library.
- * A job holds one region, parameters and the last result; every call returns
- * a status (QC_OK or a negative QC_E*) and qcw_error() tells why. The steps
- * mirror the CLI's exactly, so downloads are byte-identical to quiltc's.
+ * The JavaScript boundary (see quiltc_wasm.h): flat qcw_* functions over the
+ * unchanged library. The steps mirror the CLI's generate exactly (region
+ * normalized and moved to the origin, qc_generate, qc_stitch_plan with the
+ * tie-off count, qc_io_write with the region and svg_inches), so downloads
+ * are byte-identical to quiltc's. The same file is compiled natively for the
+ * tests. Only this layer has a clock: it times the core's stages through
+ * the context's trace hook.
  */
+#define _POSIX_C_SOURCE 200809L
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "quiltc.h"
+#include "quiltc_wasm.h"
 
-typedef struct qcw_job {
+#define MAX_STAGES 16
+
+struct qcw_job {
     qc_ctx ctx;
     qc_region region;
     qc_params params;
@@ -18,44 +27,44 @@ typedef struct qcw_job {
     qc_result result;
     qc_plan plan;
     int svg_inches;
-    double *xy;          /* plan points as x,y pairs (mm) for drawing */
-    unsigned char *flags;
+    const char *stage[MAX_STAGES]; /* trace: stage names and start times */
+    double stage_ms[MAX_STAGES];
+    size_t nstages;
+    double plan_ms, total_ms;
     unsigned char *bytes; /* last export */
     size_t nbytes, bytes_cap;
     char *json;           /* last JSON answer */
-} qcw_job;
+};
 
-qcw_job *qcw_new(void);
-void qcw_free(qcw_job *job);
-const char *qcw_error(const qcw_job *job);
-const char *qcw_version(void);
-const char *qcw_params_json(qcw_job *job);
-int qcw_region_shape(qcw_job *job, const char *spec, double mm_per_unit);
-int qcw_region_svg(qcw_job *job, const char *svg, size_t len);
-const double *qcw_region_xy(const qcw_job *job);
-size_t qcw_region_vertices(const qcw_job *job);
-const uint32_t *qcw_region_ring_ends(const qcw_job *job);
-size_t qcw_region_rings(const qcw_job *job);
-void qcw_params_reset(qcw_job *job, int svg_inches);
-int qcw_param(qcw_job *job, const char *name, double value);
-int qcw_seed(qcw_job *job, double hi, double lo);
-int qcw_motifs(qcw_job *job, const char *names);
-int qcw_motif_svg(qcw_job *job, const char *svg, size_t len, const char *name);
-int qcw_run(qcw_job *job, int tie_stitches);
-size_t qcw_points(const qcw_job *job);
-const double *qcw_xy(const qcw_job *job);
-const unsigned char *qcw_flags(const qcw_job *job);
-const char *qcw_stats_json(qcw_job *job);
-int qcw_export(qcw_job *job, const char *format);
-const unsigned char *qcw_export_data(const qcw_job *job);
-size_t qcw_export_size(const qcw_job *job);
+static double now_ms(void)
+{
+    struct timespec ts;
+
+    if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0)
+        return 0.0;
+    return (double)ts.tv_sec * 1000.0 + (double)ts.tv_nsec / 1e6;
+}
+
+static void on_stage(void *ud, const char *stage)
+{
+    qcw_job *job = ud;
+
+    if (job->nstages < MAX_STAGES) {
+        job->stage[job->nstages] = stage;
+        job->stage_ms[job->nstages] = now_ms();
+        job->nstages++;
+    }
+}
 
 qcw_job *qcw_new(void)
 {
     qcw_job *job = calloc(1, sizeof *job);
 
-    if (job != NULL)
+    if (job != NULL) {
         qc_ctx_init(&job->ctx, NULL, NULL);
+        job->ctx.trace = on_stage;
+        job->ctx.trace_ud = job;
+    }
     return job;
 }
 
@@ -63,10 +72,8 @@ static void drop_result(qcw_job *job)
 {
     qc_result_free(&job->ctx, &job->result);
     qc_plan_free(&job->ctx, &job->plan);
-    free(job->xy);
-    free(job->flags);
-    job->xy = NULL;
-    job->flags = NULL;
+    job->nstages = 0;
+    job->plan_ms = job->total_ms = 0.0;
 }
 
 void qcw_free(qcw_job *job)
@@ -91,59 +98,90 @@ const char *qcw_version(void)
     return qc_version();
 }
 
-/* JSON text builder over a growing heap string. */
+/* A message of the binding's own (the library's are set by qc__fail). */
+static int fail(qcw_job *job, int status, const char *fmt, const char *arg)
+{
+    snprintf(job->ctx.msg, sizeof job->ctx.msg, fmt, arg);
+    job->ctx.status = status;
+    return status;
+}
+
+/* ---- JSON text over a growing heap string ---- */
+
 typedef struct text {
     char *s;
     size_t n, cap;
     int failed;
 } text;
 
-static void add(text *t, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
+static int grow(text *t, size_t need)
+{
+    size_t cap;
+    char *s;
 
-#include <stdarg.h>
+    if (t->failed)
+        return -1;
+    if (t->n + need < t->cap)
+        return 0;
+    cap = (t->cap ? t->cap * 2 : 1024) + need;
+    s = realloc(t->s, cap);
+    if (s == NULL) {
+        t->failed = 1;
+        return -1;
+    }
+    t->s = s;
+    t->cap = cap;
+    return 0;
+}
+
+#if defined(__GNUC__)
+static void add(text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+#endif
 static void add(text *t, const char *fmt, ...)
 {
     va_list ap;
     int k;
 
-    for (;;) {
-        size_t room = t->cap - t->n;
-
-        va_start(ap, fmt);
-        k = vsnprintf(t->s ? t->s + t->n : NULL, t->s ? room : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) {
-            t->failed = 1;
-            return;
-        }
-        if (t->s != NULL && (size_t)k < room) {
-            t->n += (size_t)k;
-            return;
-        }
-        {
-            size_t cap = (t->cap ? t->cap * 2 : 1024) + (size_t)k;
-            char *s = realloc(t->s, cap);
-
-            if (s == NULL) {
-                t->failed = 1;
-                return;
-            }
-            t->s = s;
-            t->cap = cap;
-        }
+    va_start(ap, fmt);
+    k = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (k < 0) {
+        t->failed = 1;
+        return;
     }
+    if (grow(t, (size_t)k + 1) != 0)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(t->s + t->n, t->cap - t->n, fmt, ap);
+    va_end(ap);
+    t->n += (size_t)k;
+}
+
+/* A JSON string literal. */
+static void add_str(text *t, const char *s)
+{
+    add(t, "\"");
+    for (; s != NULL && *s != '\0'; s++) {
+        unsigned char c = (unsigned char)*s;
+
+        if (c == '"' || c == '\\')
+            add(t, "\\%c", c);
+        else if (c < 0x20)
+            add(t, "\\u%04x", c);
+        else
+            add(t, "%c", c);
+    }
+    add(t, "\"");
 }
 
 static const char *finish_json(qcw_job *job, text *t)
 {
     free(job->json);
-    job->json = t->failed ? NULL : t->s;
-    if (t->failed)
+    job->json = NULL;
+    if (t->failed || t->s == NULL)
         free(t->s);
+    else
+        job->json = t->s;
     return job->json != NULL ? job->json : "null";
 }
 
@@ -156,16 +194,37 @@ const char *qcw_params_json(qcw_job *job)
 
     add(&out, "[");
     for (i = 0; i < n; i++) {
-        add(&out, "%s{\"name\":\"%s\",\"help\":\"%s\",\"unit\":\"%s\",\"type\":\"%s\","
-                  "\"choices\":\"%s\",\"min\":%.17g,\"max\":%.17g,\"def\":%.17g,"
-                  "\"def_per_spacing\":%.17g,\"families\":%u}",
-            i ? "," : "", t[i].name, t[i].help, t[i].unit, types[t[i].type],
-            t[i].choices ? t[i].choices : "", t[i].min, t[i].max, t[i].def,
-            t[i].def_per_spacing, (unsigned)t[i].families);
+        add(&out, "%s{\"name\":", i ? "," : "");
+        add_str(&out, t[i].name);
+        add(&out, ",\"help\":");
+        add_str(&out, t[i].help);
+        add(&out, ",\"unit\":");
+        add_str(&out, t[i].unit);
+        add(&out, ",\"type\":\"%s\",\"choices\":", types[t[i].type]);
+        add_str(&out, t[i].choices != NULL ? t[i].choices : "");
+        add(&out, ",\"min\":%.17g,\"max\":%.17g,\"def\":%.17g,\"def_per_spacing\":%.17g,"
+                  "\"families\":%lu}",
+            t[i].min, t[i].max, t[i].def, t[i].def_per_spacing, (unsigned long)t[i].families);
     }
     add(&out, "]");
     return finish_json(job, &out);
 }
+
+const char *qcw_motifs_json(qcw_job *job)
+{
+    size_t n = qc_motif_builtin_count(), i;
+    text out = {0};
+
+    add(&out, "[");
+    for (i = 0; i < n; i++) {
+        add(&out, "%s", i ? "," : "");
+        add_str(&out, qc_motif_builtin_name(i));
+    }
+    add(&out, "]");
+    return finish_json(job, &out);
+}
+
+/* ---- region ---- */
 
 /* As the CLI does: normalized, moved so the bounding box starts at (0, 0). */
 static int place_region(qcw_job *job, int rc)
@@ -202,7 +261,7 @@ int qcw_region_svg(qcw_job *job, const char *svg, size_t len)
 
 const double *qcw_region_xy(const qcw_job *job)
 {
-    return (const double *)job->region.v;
+    return job->region.nv ? &job->region.v[0].x : NULL;
 }
 
 size_t qcw_region_vertices(const qcw_job *job)
@@ -220,6 +279,8 @@ size_t qcw_region_rings(const qcw_job *job)
     return job->region.nrings;
 }
 
+/* ---- parameters and motifs ---- */
+
 void qcw_params_reset(qcw_job *job, int svg_inches)
 {
     memset(&job->params, 0, sizeof job->params);
@@ -227,18 +288,20 @@ void qcw_params_reset(qcw_job *job, int svg_inches)
     qc_motif_set_free(&job->ctx, &job->motifs);
 }
 
-/* Lengths arrive in mm: the page converts from its units, as the CLI does. */
 int qcw_param(qcw_job *job, const char *name, double value)
 {
     qc_clear_error(&job->ctx);
     return qc_params_set(&job->ctx, &job->params, name, value);
 }
 
-/* JS numbers hold 53 bits: the seed comes as two 32-bit halves. */
 int qcw_seed(qcw_job *job, double hi, double lo)
 {
-    int rc = qc_params_set(&job->ctx, &job->params, "seed", 0.0);
+    int rc;
 
+    qc_clear_error(&job->ctx);
+    if (!(hi >= 0.0 && hi <= 4294967295.0 && lo >= 0.0 && lo <= 4294967295.0))
+        return fail(job, QC_ERANGE, "seed halves out of range%s", "");
+    rc = qc_params_set(&job->ctx, &job->params, "seed", 0.0); /* marks it given */
     job->params.seed = ((uint64_t)hi << 32) | (uint64_t)lo;
     return rc;
 }
@@ -255,10 +318,12 @@ int qcw_motif_svg(qcw_job *job, const char *svg, size_t len, const char *name)
     return qc_motif_from_svg(&job->ctx, svg, len, name, &job->motifs);
 }
 
+/* ---- generation ---- */
+
 int qcw_run(qcw_job *job, int tie_stitches)
 {
     qc_stitch_params sp;
-    size_t i;
+    double t0 = now_ms(), t1;
     int rc;
 
     drop_result(job);
@@ -267,21 +332,15 @@ int qcw_run(qcw_job *job, int tie_stitches)
                      job->motifs.n ? &job->motifs : NULL, &job->result);
     if (rc < 0)
         return rc;
+    t1 = now_ms();
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = tie_stitches;
     rc = qc_stitch_plan(&job->ctx, &job->result.path, NULL, &sp, &job->plan);
+    job->plan_ms = now_ms() - t1;
+    job->total_ms = now_ms() - t0;
     if (rc < 0)
-        return rc;
-    job->xy = malloc(job->plan.n * 2 * sizeof *job->xy + 1);
-    job->flags = malloc(job->plan.n + 1);
-    if (job->xy == NULL || job->flags == NULL)
-        return QC_ENOMEM;
-    for (i = 0; i < job->plan.n; i++) {
-        job->xy[2 * i] = job->plan.p[i].x;
-        job->xy[2 * i + 1] = job->plan.p[i].y;
-        job->flags[i] = job->plan.flags[i];
-    }
-    return QC_OK;
+        drop_result(job);
+    return rc;
 }
 
 size_t qcw_points(const qcw_job *job)
@@ -291,12 +350,12 @@ size_t qcw_points(const qcw_job *job)
 
 const double *qcw_xy(const qcw_job *job)
 {
-    return job->xy;
+    return job->plan.n ? &job->plan.p[0].x : NULL;
 }
 
 const unsigned char *qcw_flags(const qcw_job *job)
 {
-    return job->flags;
+    return job->plan.flags;
 }
 
 const char *qcw_stats_json(qcw_job *job)
@@ -304,25 +363,38 @@ const char *qcw_stats_json(qcw_job *job)
     const qc_stats *s = &job->result.stats;
     qc_plan_estimate est;
     text out = {0};
+    size_t i;
 
     qc_plan_estimate_get(&job->plan, 0, 0, &est);
-    add(&out, "{\"family\":\"%s\",\"points\":%lu,\"pieces\":%lu,\"path_length_mm\":%.3f,"
+    add(&out, "{\"family\":");
+    add_str(&out, qc_family_name(job->result.params.family));
+    add(&out, ",\"points\":%lu,\"plan_points\":%lu,\"pieces\":%lu,\"path_length_mm\":%.3f,"
               "\"stitches\":%lu,\"thread_mm\":%.1f,\"sew_seconds\":%.1f,\"jumps\":%lu,"
-              "\"motifs_placed\":%lu,\"motifs_skipped\":%lu,\"pebbles\":%lu,"
-              "\"largest_gap_mm\":%.3f}",
-        qc_family_name(job->result.params.family), (unsigned long)s->points,
-        (unsigned long)s->pieces, s->length_mm, (unsigned long)est.stitches,
-        est.thread_mm, est.seconds, (unsigned long)est.jumps,
-        (unsigned long)s->motifs_placed, (unsigned long)s->motifs_skipped,
-        (unsigned long)s->pebbles, s->largest_gap_mm);
+              "\"ties\":%lu,\"width_mm\":%.3f,\"height_mm\":%.3f,"
+              "\"motifs_placed\":%lu,\"motifs_shrunk\":%lu,\"motifs_skipped\":%lu,"
+              "\"pebbles\":%lu,\"largest_gap_mm\":%.3f,\"spacing_mm\":%.6g,\"stages_ms\":{",
+        (unsigned long)s->points, (unsigned long)job->plan.n, (unsigned long)s->pieces,
+        s->length_mm, (unsigned long)est.stitches, est.thread_mm, est.seconds,
+        (unsigned long)est.jumps, (unsigned long)est.ties, est.bbox.max.x - est.bbox.min.x,
+        est.bbox.max.y - est.bbox.min.y, (unsigned long)s->motifs_placed,
+        (unsigned long)s->motifs_shrunk, (unsigned long)s->motifs_skipped,
+        (unsigned long)s->pebbles, s->largest_gap_mm, job->result.params.spacing);
+    for (i = 0; i + 1 < job->nstages; i++) {
+        add(&out, "%s", i ? "," : "");
+        add_str(&out, job->stage[i]);
+        add(&out, ":%.3f", job->stage_ms[i + 1] - job->stage_ms[i]);
+    }
+    add(&out, "%s\"plan\":%.3f},\"total_ms\":%.3f}", i ? "," : "", job->plan_ms, job->total_ms);
     return finish_json(job, &out);
 }
+
+/* ---- export ---- */
 
 static int collect(void *ud, const void *data, size_t len)
 {
     qcw_job *job = ud;
 
-    if (job->nbytes + len > job->bytes_cap) {
+    if (len > job->bytes_cap - job->nbytes) {
         size_t cap = (job->bytes_cap ? job->bytes_cap * 2 : 65536) + len;
         unsigned char *b = realloc(job->bytes, cap);
 
@@ -343,10 +415,10 @@ int qcw_export(qcw_job *job, const char *format)
 
     qc_clear_error(&job->ctx);
     job->nbytes = 0;
-    if (f < 0) {
-        snprintf(job->ctx.msg, sizeof job->ctx.msg, "unknown format '%s'", format);
-        return QC_EINVAL;
-    }
+    if (f < 0)
+        return fail(job, QC_EINVAL, "unknown format '%s'", format);
+    if (job->plan.n == 0)
+        return fail(job, QC_EEMPTY, "nothing to export: generate a pattern first%s", "");
     memset(&io, 0, sizeof io);
     io.region = &job->region;
     io.svg_inches = job->svg_inches;

@@ -1,26 +1,28 @@
-// Generation off the page's thread: the page never freezes while the core works.
+// Generation off the page's thread, so the page never freezes while the core
+// works. Messages: { type: 'generate', id, units, region, params, seed,
+// motifs, tie } -> { type: 'result', id, rings, xy, flags, stats, ms };
+// { type: 'export', id, format } -> { type: 'export', id, format, bytes };
+// any failure -> { type: 'error', id, message }.
 import createQuiltc from './quiltc.mjs';
 import { Quiltc } from './quiltc-api.js';
 
 let api = null;
-let table = null;
-const ready = createQuiltc().then((m) => {
-  api = new Quiltc(m);
-  table = api.params();
-  postMessage({ type: 'ready', version: api.version(), params: table });
-});
+const ready = createQuiltc().then(
+  (m) => {
+    api = new Quiltc(m);
+    postMessage({ type: 'ready', version: api.version(), params: api.params(), motifs: api.motifNames() });
+  },
+  (err) => postMessage({ type: 'fatal', message: `the WebAssembly module did not load: ${err.message || err}` }),
+);
 
 onmessage = async (e) => {
   await ready;
   const msg = e.data;
   try {
+    if (!api) throw new Error('the WebAssembly module did not load');
     if (msg.type === 'generate') {
       const t0 = performance.now();
-      if (msg.region.svg !== undefined) api.regionSvg(msg.region.svg);
-      else api.regionShape(msg.region.shape, msg.units === 'mm' ? 1 : 25.4);
-      api.setParams(msg, table);
-      if (msg.motifSvg) api.motifSvg(msg.motifSvg.text, msg.motifSvg.name);
-      const out = api.run(msg.tie || 0);
+      const out = api.generate(msg);
       const ms = performance.now() - t0;
       postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), ...out, ms },
         [out.xy.buffer, out.flags.buffer]);
@@ -29,6 +31,6 @@ onmessage = async (e) => {
       postMessage({ type: 'export', id: msg.id, format: msg.format, bytes }, [bytes.buffer]);
     }
   } catch (err) {
-    postMessage({ type: 'error', id: msg.id, message: err.message });
+    postMessage({ type: 'error', id: msg.id, message: err.message || String(err) });
   }
 };

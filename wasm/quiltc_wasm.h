@@ -1,0 +1,64 @@
+/*
+ * The JavaScript boundary: flat qcw_* functions over the unchanged library,
+ * compiled to WebAssembly for the page (wasm/web/) and natively for the
+ * tests (tests/wasm/qcw_native.c), so both run the same composition as the
+ * CLI. A job holds one region, the parameters, the motifs and the last
+ * result. Every fallible call returns QC_OK or a negative QC_E* status and
+ * qcw_error() gives the one-line reason. Strings and arrays returned belong
+ * to the job and stay valid until the next call that changes the same data.
+ * Lengths are millimetres, y up.
+ */
+#ifndef QUILTC_WASM_H
+#define QUILTC_WASM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct qcw_job qcw_job;
+
+qcw_job *qcw_new(void);
+void qcw_free(qcw_job *job);
+const char *qcw_error(const qcw_job *job);
+const char *qcw_version(void);
+
+/* The parameter table as a JSON array of rows (name, help, unit, type,
+ * choices, min, max, def, def_per_spacing, families), and the built-in
+ * motif names as a JSON array of strings. */
+const char *qcw_params_json(qcw_job *job);
+const char *qcw_motifs_json(qcw_job *job);
+
+/* The region, normalized and moved so its bounding box starts at (0, 0),
+ * exactly as the CLI loads it. On failure the job has no region. */
+int qcw_region_shape(qcw_job *job, const char *spec, double mm_per_unit);
+int qcw_region_svg(qcw_job *job, const char *svg, size_t len);
+const double *qcw_region_xy(const qcw_job *job); /* x,y pairs */
+size_t qcw_region_vertices(const qcw_job *job);
+const uint32_t *qcw_region_ring_ends(const qcw_job *job);
+size_t qcw_region_rings(const qcw_job *job);
+
+/* Forgets the parameters and motifs; svg_inches: SVG exports in inches. */
+void qcw_params_reset(qcw_job *job, int svg_inches);
+/* One row of the table by name: lengths in mm, enums as 1-based choices. */
+int qcw_param(qcw_job *job, const char *name, double value);
+/* The 64-bit seed as two 32-bit halves (JS numbers hold 53 bits). */
+int qcw_seed(qcw_job *job, double hi, double lo);
+/* Appends built-in motifs (comma-separated names) or one SVG motif. */
+int qcw_motifs(qcw_job *job, const char *names);
+int qcw_motif_svg(qcw_job *job, const char *svg, size_t len, const char *name);
+
+/* qc_generate, then qc_stitch_plan with tie_stitches (0..100). */
+int qcw_run(qcw_job *job, int tie_stitches);
+/* The plan: n points as x,y pairs (mm) and QC_ST_* flags per point. */
+size_t qcw_points(const qcw_job *job);
+const double *qcw_xy(const qcw_job *job);
+const unsigned char *qcw_flags(const qcw_job *job);
+/* Figures of the last run as one JSON object (counts, length, stitches,
+ * thread, sewing time, milliseconds per stage). */
+const char *qcw_stats_json(qcw_job *job);
+
+/* Encodes the last plan as a format named like the CLI's (pat, svg, ...). */
+int qcw_export(qcw_job *job, const char *format);
+const unsigned char *qcw_export_data(const qcw_job *job);
+size_t qcw_export_size(const qcw_job *job);
+
+#endif
