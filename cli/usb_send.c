@@ -106,7 +106,7 @@ static int send_chunks(libusb_context *ctx, libusb_device_handle *h, const usb_t
     struct libusb_transfer *tr = libusb_alloc_transfer(0);
     progress pg;
     size_t sent = 0;
-    unsigned fails = 0, timeouts = 0, stalls = 0;
+    unsigned fails = 0;
     int rc = CLI_OK;
 
     if (tr == NULL) {
@@ -167,7 +167,6 @@ static int send_chunks(libusb_context *ctx, libusb_device_handle *h, const usb_t
         if (st == LIBUSB_TRANSFER_STALL) {
             int ps;
 
-            stalls++;
             libusb_clear_halt(h, t->ep_out);
             if (proto == USB_PROTO_PRINTER) {
                 ps = usb_printer_port_status(h, t, opts->timeout_ms);
@@ -179,20 +178,24 @@ static int send_chunks(libusb_context *ctx, libusb_device_handle *h, const usb_t
                 }
             }
             if (++fails > opts->retries) {
-                cli_error("endpoint 0x%02x of %s stalled %u times; %lu of %lu bytes delivered",
-                          (unsigned)t->ep_out, who, stalls, (unsigned long)sent,
+                cli_error("endpoint 0x%02x of %s stalled on %u tries; %lu of %lu bytes delivered",
+                          (unsigned)t->ep_out, who, fails, (unsigned long)sent,
                           (unsigned long)len);
                 rc = CLI_RUNTIME;
                 break;
             }
-        } else if (st == LIBUSB_TRANSFER_TIMED_OUT ||
-                   (st == LIBUSB_TRANSFER_COMPLETED && actual == 0)) {
-            timeouts++;
+        } else if (st == LIBUSB_TRANSFER_TIMED_OUT) {
             if (++fails > opts->retries) {
-                cli_error("sending to %s timed out %u times (%u ms each); %lu of %lu bytes "
+                cli_error("sending to %s timed out after %u tries of %u ms; %lu of %lu bytes "
                           "delivered",
-                          who, timeouts, opts->timeout_ms, (unsigned long)sent,
-                          (unsigned long)len);
+                          who, fails, opts->timeout_ms, (unsigned long)sent, (unsigned long)len);
+                rc = CLI_RUNTIME;
+                break;
+            }
+        } else if (st == LIBUSB_TRANSFER_COMPLETED) {
+            if (++fails > opts->retries) {
+                cli_error("%s took no data on %u tries; %lu of %lu bytes delivered", who, fails,
+                          (unsigned long)sent, (unsigned long)len);
                 rc = CLI_RUNTIME;
                 break;
             }
@@ -226,22 +229,15 @@ static int claim_error(int r, int iface, const char *who, const char *ids)
     return CLI_RUNTIME;
 }
 
-int usb_send(libusb_context *ctx, libusb_device *dev, const usb_target *t, const usb_opts *opts,
-             unsigned char *data, size_t len)
+/* Open, detach, claim, printer checks, send, release, re-attach, close. */
+static int send_session(libusb_context *ctx, libusb_device *dev, const usb_target *t,
+                        const usb_opts *opts, int proto, const char *who, const char *ids,
+                        unsigned char *data, size_t len)
 {
-    struct libusb_device_descriptor d;
-    struct sigaction sa, old_int, old_term;
     libusb_device_handle *h;
-    char who[64], ids[16], id[USB_PRINTER_ID_MAX + 1] = "", faults[64];
-    int r, rc, detached = 0, proto = opts->protocol;
+    char id[USB_PRINTER_ID_MAX + 1] = "", faults[64];
+    int r, rc, detached = 0;
     size_t sent = 0;
-
-    usb_describe(dev, who, sizeof who);
-    if (libusb_get_device_descriptor(dev, &d) != 0)
-        memset(&d, 0, sizeof d);
-    snprintf(ids, sizeof ids, "%04x:%04x", (unsigned)d.idVendor, (unsigned)d.idProduct);
-    if (proto == USB_PROTO_AUTO)
-        proto = t->if_class == USB_CLASS_PRINTER_IF ? USB_PROTO_PRINTER : USB_PROTO_RAW;
 
     r = libusb_open(dev, &h);
     if (r == LIBUSB_ERROR_ACCESS) {
@@ -286,15 +282,7 @@ int usb_send(libusb_context *ctx, libusb_device *dev, const usb_target *t, const
         }
     }
 
-    usb_stop = 0;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
     rc = send_chunks(ctx, h, t, opts, proto, who, data, len, &sent);
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
     if (rc == CLI_OK && !opts->quiet) {
         char model[80] = "";
         const char *m = strstr(id, "MDL:");
@@ -315,5 +303,33 @@ out_attach:
     if (detached)
         libusb_attach_kernel_driver(h, t->iface);
     libusb_close(h);
+    return rc;
+}
+
+int usb_send(libusb_context *ctx, libusb_device *dev, const usb_target *t, const usb_opts *opts,
+             unsigned char *data, size_t len)
+{
+    struct libusb_device_descriptor d;
+    struct sigaction sa, old_int, old_term;
+    char who[64], ids[16];
+    int rc, proto = opts->protocol;
+
+    usb_describe(dev, who, sizeof who);
+    if (libusb_get_device_descriptor(dev, &d) != 0)
+        memset(&d, 0, sizeof d);
+    snprintf(ids, sizeof ids, "%04x:%04x", (unsigned)d.idVendor, (unsigned)d.idProduct);
+    if (proto == USB_PROTO_AUTO)
+        proto = t->if_class == USB_CLASS_PRINTER_IF ? USB_PROTO_PRINTER : USB_PROTO_RAW;
+
+    /* Ctrl-C from here on is noted, not fatal: the kernel driver goes back */
+    usb_stop = 0;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    rc = send_session(ctx, dev, t, opts, proto, who, ids, data, len);
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
     return rc;
 }
