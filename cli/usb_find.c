@@ -121,6 +121,33 @@ static int matches(libusb_device *dev, const usb_spec *spec)
     return n == spec->nports && memcmp(ports, spec->ports, (size_t)n) == 0;
 }
 
+/* Orders devices by bus, then port path, so listings and messages are stable. */
+static int by_port(const void *pa, const void *pb)
+{
+    libusb_device *a = *(libusb_device *const *)pa, *b = *(libusb_device *const *)pb;
+    uint8_t x[8], y[8];
+    int nx, ny, i;
+
+    if (libusb_get_bus_number(a) != libusb_get_bus_number(b))
+        return libusb_get_bus_number(a) < libusb_get_bus_number(b) ? -1 : 1;
+    nx = libusb_get_port_numbers(a, x, (int)sizeof x);
+    ny = libusb_get_port_numbers(b, y, (int)sizeof y);
+    for (i = 0; i < nx && i < ny; i++)
+        if (x[i] != y[i])
+            return x[i] < y[i] ? -1 : 1;
+    return nx < ny ? -1 : nx > ny;
+}
+
+/* libusb_get_device_list, sorted by port. */
+static ssize_t device_list(libusb_context *ctx, libusb_device ***list)
+{
+    ssize_t n = libusb_get_device_list(ctx, list);
+
+    if (n > 1)
+        qsort(*list, (size_t)n, sizeof **list, by_port);
+    return n;
+}
+
 static struct libusb_config_descriptor *get_config(libusb_device *dev)
 {
     struct libusb_config_descriptor *cfg = NULL;
@@ -221,7 +248,7 @@ int usb_select(libusb_context *ctx, const usb_opts *opts, libusb_device **out, u
                   opts->device ? opts->device : "");
         return CLI_USAGE;
     }
-    n = libusb_get_device_list(ctx, &list);
+    n = device_list(ctx, &list);
     if (n < 0) {
         cli_error("cannot list USB devices: %s", libusb_strerror((enum libusb_error)n));
         return CLI_RUNTIME;
@@ -345,8 +372,6 @@ static const char *class_name(int c)
         return "HID";
     case LIBUSB_CLASS_HUB:
         return "hub";
-    case LIBUSB_CLASS_PER_INTERFACE:
-        return "per interface";
     default:
         return "other";
     }
@@ -416,7 +441,7 @@ static void list_device(libusb_device *dev, int all)
     struct libusb_config_descriptor *cfg;
     libusb_device_handle *h = NULL;
     int open_err = 0, i, j, shown = 0;
-    char path[48], name[272];
+    char path[48], sysname[48], name[272];
 
     if (libusb_get_device_descriptor(dev, &d) != 0)
         return;
@@ -424,6 +449,10 @@ static void list_device(libusb_device *dev, int all)
     if (cfg == NULL)
         return;
     usb_port_path(dev, path, sizeof path);
+    if (libusb_get_port_number(dev) == 0)
+        snprintf(sysname, sizeof sysname, "usb%u", (unsigned)libusb_get_bus_number(dev));
+    else
+        snprintf(sysname, sizeof sysname, "%s", path);
     for (i = 0; i < cfg->bNumInterfaces; i++)
         for (j = 0; j < cfg->interface[i].num_altsetting; j++) {
             usb_target t;
@@ -438,9 +467,11 @@ static void list_device(libusb_device *dev, int all)
     open_err = libusb_open(dev, &h);
     if (open_err != 0)
         h = NULL;
-    device_strings(dev, h, path, name, sizeof name);
-    printf("%04x:%04x  %-8s %s (class %s)\n", (unsigned)d.idVendor, (unsigned)d.idProduct, path,
-           name, class_name(d.bDeviceClass));
+    device_strings(dev, h, sysname, name, sizeof name);
+    printf("%04x:%04x  %-8s %s", (unsigned)d.idVendor, (unsigned)d.idProduct, path, name);
+    if (d.bDeviceClass != LIBUSB_CLASS_PER_INTERFACE)
+        printf(" (%s class)", class_name(d.bDeviceClass));
+    printf("\n");
     for (i = 0; i < cfg->bNumInterfaces; i++) {
         for (j = 0; j < cfg->interface[i].num_altsetting; j++) {
             const struct libusb_interface_descriptor *a = &cfg->interface[i].altsetting[j];
@@ -509,7 +540,7 @@ int cmd_devices(int argc, char **argv)
     }
     if ((rc = usb_init(&ctx)) != CLI_OK)
         return rc;
-    n = libusb_get_device_list(ctx, &list);
+    n = device_list(ctx, &list);
     if (n < 0) {
         cli_error("cannot list USB devices: %s", libusb_strerror((enum libusb_error)n));
         libusb_exit(ctx);
