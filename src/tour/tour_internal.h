@@ -1,0 +1,133 @@
+/*
+ * Internals of the TSP solver split across src/tour/tsp*.c and knn.c. Not
+ * installed. The solver works on the distinct points only (duplicates are
+ * put back next to their first copy at the end), renumbered along a Hilbert
+ * curve so that neighbours in space are neighbours in memory.
+ */
+#ifndef QC_TOUR_INTERNAL_H
+#define QC_TOUR_INTERNAL_H
+
+#include <math.h>
+
+#include "internal.h"
+
+#define QC__TSP_MAX_K 32        /* largest candidate list */
+#define QC__TSP_GREEDY_K 10     /* candidates the greedy construction sorts */
+#define QC__TSP_LEAF 8          /* points (or tour edges) per leaf of a box tree */
+#define QC__TSP_MAX_LEVELS 40
+
+/* ---- sorting (tsp_prep.c) ---- */
+
+/* Stable LSD radix sort of key[0..n) by bits [lo_bit, 64), carrying val[]
+ * along when val != NULL; bytes equal in every key are skipped. QC_OK or
+ * QC_ENOMEM (the arrays are then unchanged). */
+QC__HIDDEN int qc__tsp_radix(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n,
+                             unsigned lo_bit);
+
+/* ---- box trees (knn.c) ---- */
+
+typedef struct qc__box {
+    double x0, y0, x1, y1;
+} qc__box;
+
+/* A packed binary tree of boxes over consecutive leaves: level 0 holds the
+ * leaves (filled by the caller), level l+1 node j bounds level l nodes 2j
+ * and 2j+1; the top level is one root. */
+typedef struct qc__btree {
+    qc__box *box;
+    size_t total;                        /* boxes allocated */
+    size_t off[QC__TSP_MAX_LEVELS];      /* first box of each level */
+    size_t cnt[QC__TSP_MAX_LEVELS];      /* boxes in each level */
+    int levels;
+} qc__btree;
+
+/* Allocates a tree of nleaves (>= 1) leaves; the caller fills box[0..nleaves). */
+QC__HIDDEN int qc__btree_init(qc_ctx *ctx, qc__btree *t, size_t nleaves);
+/* Computes the upper levels from the leaves. */
+QC__HIDDEN void qc__btree_finish(qc__btree *t);
+QC__HIDDEN void qc__btree_free(qc_ctx *ctx, qc__btree *t);
+
+/*
+ * The k nearest neighbours of every point of q[0..m) among the others
+ * (m >= 2, k <= min(m - 1, QC__TSP_MAX_K)), nearest first, ties by index:
+ * nb[i * k .. i * k + k). Points should come in a spatially coherent order
+ * (a Hilbert curve): leaves are runs of QC__TSP_LEAF consecutive points.
+ * Exact for any distribution, O(m log m) expected. QC_OK or QC_ENOMEM.
+ * (Lists forced to hold neighbours from each quadrant were tried: they
+ * made the TSPLIB tours 0.5-2% longer on average.)
+ */
+QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb);
+
+/* ---- the solver state ---- */
+
+typedef struct qc__tsp {
+    qc_ctx *ctx;
+    const qc_vec2 *p;   /* the caller's points (exact geometry) */
+    size_t n;           /* the caller's count */
+    uint32_t m;         /* distinct points */
+    qc_vec2 *q;         /* the m distinct points (exact copies), Hilbert order */
+    uint32_t *sorted;   /* n caller indices, grouped by distinct point */
+    uint32_t *ustart;   /* m + 1: distinct point u is sorted[ustart[u] .. ustart[u+1]) */
+    unsigned k;         /* candidates per point */
+    uint32_t *nb;       /* m * k candidate lists */
+    double eps;         /* gains below this are rounding noise */
+
+    /* the tour over 0..m-1 as an array with positions */
+    uint32_t *t, *pos;
+    /* the don't-look bits as a FIFO of active points */
+    uint32_t *queue;
+    unsigned char *inq;
+    size_t qhead, qcount;
+    /* reversals done since the last qc__tsp_log_reset (perturbation undo) */
+    int logging;
+    uint32_t *log;      /* pairs (first position, length) */
+    size_t nlog, log_cap;
+} qc__tsp;
+
+/* Distance between distinct points a and b. */
+static inline double qc__tsp_dist(const qc__tsp *s, uint32_t a, uint32_t b)
+{
+    double dx = s->q[a].x - s->q[b].x, dy = s->q[a].y - s->q[b].y;
+    return sqrt(dx * dx + dy * dy);
+}
+
+/* Sorts the caller's points along a Hilbert curve, groups duplicates and
+ * fills q, sorted, ustart, m and eps (tsp_prep.c). QC_OK or QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_prepare(qc__tsp *s);
+
+/* Greedy-edge tour over the candidate lists, fragments joined greedily then
+ * along the Hilbert order; fills t and pos (tsp_construct.c). */
+QC__HIDDEN int qc__tsp_greedy(qc__tsp *s);
+
+/* ---- local search (tsp_opt.c) ---- */
+
+static inline uint32_t qc__tsp_next(const qc__tsp *s, uint32_t a)
+{
+    uint32_t i = s->pos[a] + 1;
+    return s->t[i == s->m ? 0 : i];
+}
+
+static inline uint32_t qc__tsp_prev(const qc__tsp *s, uint32_t a)
+{
+    uint32_t i = s->pos[a];
+    return s->t[i == 0 ? s->m - 1 : i - 1];
+}
+
+/* Replaces tour edges (a, b) and (c, d), both traversed in the same
+ * direction (b follows a as d follows c), by (a, c) and (b, d), reversing
+ * the shorter side. QC_OK or QC_ENOMEM (logging only). */
+QC__HIDDEN int qc__tsp_move2(qc__tsp *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d);
+
+/* Makes room for the queue; queues every point in tour order. */
+QC__HIDDEN void qc__tsp_queue_all(qc__tsp *s);
+/* 2-opt (and Or-opt when oropt) from the queue until it empties; adds the
+ * applied gains (negative) to *delta. QC_OK or QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int oropt, double *delta);
+/* rounds of kick + local search, each kept only if shorter. */
+QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, uint64_t rounds, uint64_t seed);
+
+/* Removes every proper crossing, decided exactly on the caller's points, by
+ * 2-opt moves (each shortens the tour, so it ends) (tsp_uncross.c). */
+QC__HIDDEN int qc__tsp_uncross(qc__tsp *s);
+
+#endif

@@ -1,0 +1,164 @@
+/*
+ * The built-in TSP (paper §4.2, issue 3): greedy-edge construction over
+ * k-nearest-neighbour candidates, 2-opt with neighbour lists and don't-look
+ * bits, Or-opt, optional perturbation rounds, and a final pass removing
+ * every proper crossing by exact predicates. Works on the distinct points;
+ * copies of a point follow their first copy in the tour (zero-length
+ * edges cross nothing).
+ */
+#include <string.h>
+
+#include "tour_internal.h"
+
+#define TSP_MAX_POINTS (1u << 28) /* slots of the greedy sort keys fit 32 bits */
+#define TSP_MAX_COORD 1e150       /* squared distances stay finite */
+#define DEFAULT_K 10
+
+static void release(qc__tsp *s)
+{
+    qc_ctx *ctx = s->ctx;
+    size_t m = s->m;
+
+    qc__free(ctx, s->sorted, s->n * sizeof *s->sorted);
+    qc__free(ctx, s->ustart, (m + 1) * sizeof *s->ustart);
+    qc__free(ctx, s->q, m * sizeof *s->q);
+    qc__free(ctx, s->nb, m * s->k * sizeof *s->nb);
+    qc__free(ctx, s->t, m * sizeof *s->t);
+    qc__free(ctx, s->pos, m * sizeof *s->pos);
+    qc__free(ctx, s->queue, m * sizeof *s->queue);
+    qc__free(ctx, s->inq, m);
+    qc__free(ctx, s->log, s->log_cap * sizeof *s->log);
+}
+
+static int check(qc_ctx *ctx, const qc_vec2 *p, size_t n)
+{
+    size_t i;
+
+    if (n > TSP_MAX_POINTS)
+        return qc__fail(ctx, QC_ELIMIT, "tsp: %lu points, at most %lu", (unsigned long)n,
+                        (unsigned long)TSP_MAX_POINTS);
+    if (n > 0 && p == NULL)
+        return qc__fail(ctx, QC_EINVAL, "tsp: NULL points");
+    for (i = 0; i < n; i++) {
+        double x = p[i].x, y = p[i].y;
+        if (!(x >= -TSP_MAX_COORD && x <= TSP_MAX_COORD && y >= -TSP_MAX_COORD &&
+              y <= TSP_MAX_COORD))
+            return qc__fail(ctx, QC_ERANGE, "tsp: point %lu (%g, %g) is not finite or beyond "
+                            "1e150", (unsigned long)i, x, y);
+    }
+    return QC_OK;
+}
+
+/* The tour of distinct points, copies expanded, rotated to start at 0. */
+static void emit(const qc__tsp *s, qc_order *out)
+{
+    uint32_t u0 = 0, i, j, at;
+    size_t w = out->n;
+
+    for (i = 0; i < s->m; i++) /* the distinct point holding caller index 0 */
+        if (s->sorted[s->ustart[i]] == 0)
+            u0 = i;
+    at = s->pos[u0];
+    for (i = 0; i < s->m; i++) {
+        uint32_t u = s->t[at];
+        for (j = s->ustart[u]; j < s->ustart[u + 1]; j++)
+            out->i[w++] = s->sorted[j];
+        at = at + 1 == s->m ? 0 : at + 1;
+    }
+    out->n = w;
+}
+
+static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *params)
+{
+    qc_ctx *ctx = s->ctx;
+    uint32_t m, i;
+    double delta = 0.0;
+
+    QC__TRY(qc__tsp_prepare(s));
+    m = s->m;
+    s->t = qc__alloc_array(ctx, m, sizeof *s->t);
+    s->pos = qc__alloc_array(ctx, m, sizeof *s->pos);
+    if (s->t == NULL || s->pos == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory for a tour of %lu points",
+                        (unsigned long)m);
+    if (m <= 3) { /* any order is optimal */
+        for (i = 0; i < m; i++)
+            s->t[i] = s->pos[i] = i;
+        return QC_OK;
+    }
+    s->k = (unsigned)(neighbours == 0 ? DEFAULT_K
+                      : neighbours > QC__TSP_MAX_K ? QC__TSP_MAX_K : neighbours);
+    if (s->k > m - 1)
+        s->k = m - 1;
+    s->nb = qc__alloc_array(ctx, (size_t)m * s->k, sizeof *s->nb);
+    if (s->nb == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory for %u neighbours of %lu points",
+                        s->k, (unsigned long)m);
+    QC__TRY(qc__knn(ctx, s->q, m, s->k, s->nb));
+    QC__TRY(qc__tsp_greedy(s));
+    if (method == QC_TSP_METHOD_GREEDY)
+        return QC_OK;
+    s->queue = qc__alloc_array(ctx, m, sizeof *s->queue);
+    s->inq = qc__alloc(ctx, m);
+    if (s->queue == NULL || s->inq == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory for the search of %lu points",
+                        (unsigned long)m);
+    memset(s->inq, 0, m);
+    qc__tsp_queue_all(s);
+    QC__TRY(qc__tsp_local_search(s, 0, &delta));
+    QC__TRY(qc__tsp_uncross(s));
+    if (method == QC_TSP_METHOD_2OPT)
+        return QC_OK;
+    qc__tsp_queue_all(s);
+    QC__TRY(qc__tsp_local_search(s, 1, &delta));
+    QC__TRY(qc__tsp_perturb(s, params ? params->perturb_iterations : 0,
+                            params ? params->seed : 0));
+    return qc__tsp_uncross(s);
+}
+
+int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
+           qc_order *out)
+{
+    int method = params ? params->method : QC_TSP_METHOD_OROPT;
+    int neighbours = params ? params->neighbours : 0;
+    qc__tsp s;
+    size_t i;
+    int rc;
+
+    if (out == NULL)
+        return qc__fail(ctx, QC_EINVAL, "tsp: NULL output");
+    if (method < QC_TSP_METHOD_GREEDY || method > QC_TSP_METHOD_OROPT)
+        return qc__fail(ctx, QC_EINVAL, "tsp: unknown method %d", method);
+    if (neighbours < 0)
+        return qc__fail(ctx, QC_EINVAL, "tsp: %d neighbours", neighbours);
+    QC__TRY(check(ctx, p, n));
+    if (QC__RESERVE(ctx, out->i, out->cap, out->n + n) < 0)
+        return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory for a tour of %lu points",
+                        (unsigned long)n);
+    if (n <= 3) {
+        for (i = 0; i < n; i++)
+            out->i[out->n++] = (uint32_t)i;
+        return QC_OK;
+    }
+    memset(&s, 0, sizeof s);
+    s.ctx = ctx;
+    s.p = p;
+    s.n = n;
+    rc = solve(&s, method, neighbours, params);
+    if (rc == QC_OK)
+        emit(&s, out);
+    release(&s);
+    return rc;
+}
+
+double qc_tour_length(const qc_vec2 *p, const uint32_t *order, size_t m, int closed)
+{
+    double len = 0.0;
+    size_t i;
+
+    for (i = 1; i < m; i++)
+        len += qc_hypot(p[order[i]].x - p[order[i - 1]].x, p[order[i]].y - p[order[i - 1]].y);
+    if (closed && m > 1)
+        len += qc_hypot(p[order[0]].x - p[order[m - 1]].x, p[order[0]].y - p[order[m - 1]].y);
+    return len;
+}
