@@ -154,6 +154,8 @@ static void rounded_rect_should_lose_the_corners(void)
 
     TEST_ASSERT_DOUBLE_WITHIN(perim * 0.06, want, a);
     TEST_ASSERT_TRUE(a < 800 - 1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, a, one_ring_area(DOC("<rect x=\"10\" y=\"10\" width=\"40\" height=\"20\" "
+                                                          "rx=\"auto\" ry=\"5\"/>")));
     /* ry alone is both radii, each clamped to half its side: an ellipse */
     a = one_ring_area(DOC("<rect width=\"40\" height=\"20\" ry=\"50\"/>"));
     TEST_ASSERT_DOUBLE_WITHIN(2 * QC_PI * 20 * 0.06, QC_PI * 20 * 10, a);
@@ -643,6 +645,7 @@ static void malformed_xml_should_fail_with_where(void)
     expect_fail_str("<svg xmlns=\"http://www.w3.org/1999/xhtml\"/>", QC_EFORMAT, "not <svg>");
     expect_fail_str("<!-- only a comment -->", QC_EFORMAT, "no root element");
     expect_fail_str("<svg>\n\n<rect x='1' \x01/></svg>", QC_EFORMAT, "svg line 3 (byte 19): control character 0x01");
+    expect_fail("\xFF\xFE<\0s\0v\0g\0/\0>\0", 14, QC_EFORMAT, QC_EFORMAT, "UTF-16");
 }
 
 static void bad_path_data_should_name_the_character(void)
@@ -659,6 +662,8 @@ static void bad_path_data_should_name_the_character(void)
     expect_fail_str(DOC("<path d=\"M0 0 L NaN 5\"/>"), QC_EFORMAT, "found \"NaN 5\"");
     expect_fail_str(DOC("<path d=\"M0 0 L 1e 5\"/>"), QC_EFORMAT, "expected a number, found \"e 5\"");
     expect_fail_str(DOC("\n<polygon points=\"1 2 3\"/>"), QC_EFORMAT, "svg line 2, <polygon points>");
+    expect_fail_str(DOC("\n<rect width='1' height='1'/><g>\n</g>\n<rect\nwidth='x'/>"), QC_EFORMAT,
+                    "svg line 4, <rect width> char 1: expected a length");
     expect_fail_str(DOC("<rect width=\"10em\" height=\"1\"/>"), QC_EFORMAT, "expected a unit");
     expect_fail_str(DOC("<rect width=\"1\" height=\"1\" transform=\"rotate(1 2)\"/>"), QC_EFORMAT,
                     "wrong number of arguments");
@@ -734,6 +739,18 @@ static void limits_should_hold(void)
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_io_read_svg_path(&ctx, big, strlen(big), &o, &p));
         TEST_ASSERT_EQUAL_size_t(5, p.ncmd);
         qc_path_free(&ctx, &p);
+    }
+    /* too many namespace declarations in scope */
+    {
+        char *buf = (char *)malloc(130 * 24 + 64);
+
+        TEST_ASSERT_NOT_NULL(buf);
+        n = (size_t)sprintf(buf, "<svg");
+        for (k = 0; k < 130; k++)
+            n += (size_t)sprintf(buf + n, " xmlns:p%lu='urn:x'", (unsigned long)k);
+        n += (size_t)sprintf(buf + n, "/>");
+        expect_fail(buf, n, QC_ELIMIT, QC_ELIMIT, "more than 128 namespace declarations");
+        free(buf);
     }
     /* too many attributes on one element */
     {

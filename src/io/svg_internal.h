@@ -13,6 +13,7 @@
 
 #define QC__XML_MAX_DEPTH 256 /* deeper nesting is QC_ELIMIT */
 #define QC__XML_MAX_ATTRS 256 /* attributes per element */
+#define QC__XML_MAX_NS 128    /* namespace declarations in scope */
 
 typedef struct qc__xml_attr {
     const char *name;  /* qualified name, in the document (not NUL-terminated) */
@@ -53,6 +54,8 @@ typedef struct qc__xml {
     size_t text_len, text_cap;
     qc__xml_ns *ns;
     size_t nns, ns_cap;
+    size_t line_pos;             /* qc__xml_line_at's cache: line_no at line_pos */
+    unsigned long line_no;
 } qc__xml;
 
 enum { QC__XML_DONE = 0, QC__XML_OPEN = 1, QC__XML_CLOSE = 2 };
@@ -65,8 +68,11 @@ QC__HIDDEN void qc__xml_free(qc__xml *x);
  * processing instructions and white space followed; or QC_EFORMAT,
  * QC_ELIMIT, QC_ENOMEM. */
 QC__HIDDEN int qc__xml_next(qc__xml *x);
-/* 1-based line number of byte offset at. */
+/* 1-based line number of byte offset at (counts from the start: for errors). */
 QC__HIDDEN unsigned long qc__xml_line(const qc__xml *x, size_t at);
+/* The same, counting on from the previous call when at has not gone back,
+ * so asking for every element in document order stays linear. */
+QC__HIDDEN unsigned long qc__xml_line_at(qc__xml *x, size_t at);
 /* The unprefixed attribute name of the current element, or NULL. */
 QC__HIDDEN const qc__xml_attr *qc__xml_attr_get(const qc__xml *x, const char *name);
 

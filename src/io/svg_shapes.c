@@ -216,9 +216,11 @@ static int length(walker *k, const char *name, int axis, double *v, int *given)
     const qc__xml_attr *a = qc__xml_attr_get(&k->x, name);
 
     if (given != NULL)
-        *given = a != NULL;
-    if (a == NULL)
-        return QC_OK;
+        *given = 0;
+    if (a == NULL || value_is(a->value, a->value_len, "auto"))
+        return QC_OK; /* SVG 2's auto: as if absent */
+    if (given != NULL)
+        *given = 1;
     k->w.attr = name;
     return qc__svg_length(&k->w, a->value, a->value_len, axis, k->vp_w, k->vp_h, v);
 }
@@ -460,7 +462,7 @@ static int open_element(walker *k)
 
     memcpy(k->elem, k->x.local, ln);
     k->elem[ln] = '\0';
-    k->w.line = qc__xml_line(&k->x, k->x.at);
+    k->w.line = qc__xml_line_at(&k->x, k->x.at);
     k->w.elem = k->elem;
     k->w.attr = "";
     *f = *parent;

@@ -46,6 +46,23 @@ unsigned long qc__xml_line(const qc__xml *x, size_t at)
     return line;
 }
 
+unsigned long qc__xml_line_at(qc__xml *x, size_t at)
+{
+    size_t i;
+
+    if (at > x->len)
+        at = x->len;
+    if (x->line_no == 0 || at < x->line_pos) {
+        x->line_pos = 0;
+        x->line_no = 1;
+    }
+    for (i = x->line_pos; i < at; i++)
+        if (x->buf[i] == '\n')
+            x->line_no++;
+    x->line_pos = at;
+    return x->line_no;
+}
+
 static int is_space(char c)
 {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r';
@@ -90,6 +107,9 @@ static int fail_at(const qc__xml *x, size_t at, const char *what)
 static int check_bytes(const qc__xml *x)
 {
     size_t i;
+
+    if (starts(x, 0, "\xFF\xFE") || starts(x, 0, "\xFE\xFF"))
+        return qc__fail(x->ctx, QC_EFORMAT, "svg: UTF-16 text is not supported: save as UTF-8");
 
     for (i = 0; i < x->len; i++) {
         unsigned char c = (unsigned char)x->buf[i];
@@ -278,6 +298,10 @@ static int push_ns(qc__xml *x, const char *prefix, size_t plen, const char *uri,
 {
     qc__xml_ns *b;
 
+    if (x->nns >= QC__XML_MAX_NS)
+        return qc__fail(x->ctx, QC_ELIMIT,
+                        "svg line %lu: more than %d namespace declarations in scope",
+                        qc__xml_line(x, x->at), QC__XML_MAX_NS);
     QC__TRY(QC__RESERVE(x->ctx, x->ns, x->ns_cap, x->nns + 1));
     b = &x->ns[x->nns++];
     b->prefix = prefix;
