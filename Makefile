@@ -122,7 +122,7 @@ install: all quiltc.pc
 	install -m 644 $(wildcard include/quiltc/*.h) $(DESTDIR)$(PREFIX)/include/quiltc/
 	install -m 755 $(BUILD)/quiltc $(DESTDIR)$(PREFIX)/bin/
 	install -m 644 quiltc.pc $(DESTDIR)$(PREFIX)/lib/pkgconfig/
-	if [ -f doc/quiltc.1 ]; then install -m 644 doc/quiltc.1 $(DESTDIR)$(PREFIX)/share/man/man1/; fi
+	install -m 644 docs/quiltc.1 $(DESTDIR)$(PREFIX)/share/man/man1/
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/lib/libquiltc.a $(DESTDIR)$(PREFIX)/lib/libquiltc.so* \

@@ -21,6 +21,9 @@ void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
  * or CLI_USAGE for parameter range/choice errors. */
 int cli_fail(const qc_ctx *ctx, const char *what, int status);
 
+/* getopt returned '?' or ':' for arg: one line naming it and the help command. */
+void cli_bad_option(const char *command, const char *arg, int c);
+
 /* Reads a whole file (at most max bytes) into a NUL-terminated buffer. */
 int cli_read_file(const char *path, size_t max, char **buf, size_t *len);
 
@@ -55,10 +58,61 @@ double cli_now_ms(void);
 int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
                    const qc_io_opts *opts);
 
+/* Reads a .pat or .svg pattern into a plan. CLI_* status. */
+int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan);
+
 /* Appends motifs named in a comma-separated list of built-in names and .svg files. */
 int cli_load_motifs(qc_ctx *ctx, const char *spec, qc_motif_set *set);
 
+/* Region, units and parameter options shared by generate and skeleton. */
+typedef struct cli_pattern_opts {
+    const char *region;      /* shape spec or SVG file; default rect:8x8 */
+    const char *units;       /* in | mm | cm; default in */
+    double mm_per_unit;
+    const char *points_file; /* --points FILE */
+    const char *motifs;      /* --motif LIST */
+    const char *raw[64];     /* raw value per parameter row, converted after parsing */
+    qc_params params;
+} cli_pattern_opts;
+
+/* getopt_long's option list: the fixed ones then one per parameter row
+ * (val = CLI_PARAM_BASE + row). *count receives the length. Caller frees. */
+#define CLI_PARAM_BASE 1000
+struct option;
+struct option *cli_pattern_options(const struct option *fixed, size_t nfixed);
+void cli_pattern_init(cli_pattern_opts *o);
+/* Takes one option getopt returned (--region, --units, a parameter); 1 if it was one. */
+int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg);
+/* Converts the raw values into params (lengths in units unless suffixed). CLI_* status. */
+int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o);
+/* Prints the region/units/parameter part of a --help text. */
+void cli_pattern_help(FILE *f, unsigned families);
+/* Loads region (normalized, at the origin) and the given points, if any. CLI_* status. */
+int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
+                     qc_points *given);
+
+/* Stage timings recorded through qc_ctx's trace hook. */
+typedef struct cli_timer {
+    double t0, last;
+    const char *stage;
+    double ms[8];
+    const char *name[8];
+    size_t n;
+} cli_timer;
+void cli_timer_start(cli_timer *t, qc_ctx *ctx);
+void cli_timer_mark(cli_timer *t, const char *stage);
+void cli_timer_trace(void *ud, const char *stage);
+
 int cmd_generate(int argc, char **argv);
 int cmd_skeleton(int argc, char **argv);
+int cmd_convert(int argc, char **argv);
+int cmd_check(int argc, char **argv);
+int cmd_list(int argc, char **argv);
+int cmd_job(int argc, char **argv);
+/* USB (usb_*.c, or usb_none.c when built with USB=0). */
+int cmd_devices(int argc, char **argv);
+int cmd_upload(int argc, char **argv);
+int cmd_udev_rule(int argc, char **argv);
+int cli_usb_send_file(const char *path, const char *device, int quiet);
 
 #endif

@@ -29,6 +29,12 @@ int cli_fail(const qc_ctx *ctx, const char *what, int status)
     return status == QC_ERANGE || status == QC_EINVAL ? CLI_USAGE : CLI_RUNTIME;
 }
 
+void cli_bad_option(const char *command, const char *arg, int c)
+{
+    cli_error("%s: %s '%s' (see 'quiltc %s --help')", command,
+              c == ':' ? "missing value for" : "unknown option", arg, command);
+}
+
 int cli_read_file(const char *path, size_t max, char **buf, size_t *len)
 {
     FILE *f = fopen(path, "rb");

@@ -1,0 +1,72 @@
+/* quiltc convert IN OUT: a pattern file (.pat, .svg) into any format quiltc writes. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define MAX_INPUT ((size_t)256 << 20)
+
+/* Reads IN into a plan: PAT directly, SVG through the stitch planner. */
+int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan)
+{
+    char *buf;
+    size_t len;
+    int fmt = qc_format_from_name(path), rc;
+
+    if (fmt != QC_FORMAT_PAT && fmt != QC_FORMAT_SVG) {
+        cli_error("'%s': can only read .pat and .svg patterns", path);
+        return CLI_USAGE;
+    }
+    if (cli_read_file(path, MAX_INPUT, &buf, &len) != 0)
+        return CLI_RUNTIME;
+    if (fmt == QC_FORMAT_PAT) {
+        rc = qc_io_read_pat(ctx, buf, len, plan);
+    } else {
+        qc_svg_opts opts;
+        qc_path path_in = {0};
+        memset(&opts, 0, sizeof opts);
+        rc = qc_io_read_svg_path(ctx, buf, len, &opts, &path_in);
+        if (rc == QC_OK)
+            rc = qc_stitch_plan(ctx, &path_in, NULL, NULL, plan);
+        qc_path_free(ctx, &path_in);
+    }
+    free(buf);
+    if (rc < 0) {
+        cli_error("%s: %s", path, qc_errmsg(ctx));
+        return CLI_RUNTIME;
+    }
+    return CLI_OK;
+}
+
+int cmd_convert(int argc, char **argv)
+{
+    qc_ctx ctx;
+    qc_plan plan = {0};
+    qc_io_opts io;
+    int fmt, rc;
+
+    if (argc == 2 && strcmp(argv[1], "--help") == 0) {
+        puts("usage: quiltc convert IN.pat|IN.svg OUT.ext\n"
+             "Writes the pattern of IN in OUT's format (pat, qli, dxf, plt, qcc, iqp, bqm, "
+             "gcode, svg).");
+        return CLI_OK;
+    }
+    if (argc != 3) {
+        cli_error("convert: expected IN and OUT (see 'quiltc convert --help')");
+        return CLI_USAGE;
+    }
+    fmt = qc_format_from_name(argv[2]);
+    if (fmt < 0) {
+        cli_error("'%s': unknown output format", argv[2]);
+        return CLI_USAGE;
+    }
+    qc_ctx_init(&ctx, NULL, NULL);
+    rc = cli_read_plan(&ctx, argv[1], &plan);
+    if (rc == CLI_OK) {
+        memset(&io, 0, sizeof io);
+        io.svg_inches = 1;
+        rc = cli_write_plan(&ctx, argv[2], fmt, &plan, &io);
+    }
+    qc_plan_free(&ctx, &plan);
+    return rc;
+}

@@ -1,0 +1,205 @@
+/* quiltc generate: region + parameters -> one continuous stitch path -> machine files. */
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "stats_json.h"
+
+#define MAX_OUTPUTS 16
+
+typedef struct gen_opts {
+    cli_pattern_opts pat;
+    const char *out[MAX_OUTPUTS];
+    size_t nout;
+    const char *format;
+    const char *upload;
+    int stats, quiet, tie;
+    double feed;
+} gen_opts;
+
+static void usage(FILE *f)
+{
+    fputs("usage: quiltc generate [options]\n"
+          "Generates one continuous free-motion pattern inside a block outline.\n"
+          "  -o, --output FILE        write FILE, format from its extension (repeatable;\n"
+          "                           default pattern.pat and pattern.svg); - is stdout\n"
+          "  --format NAME            pat, qli, dxf, hpgl, qcc, iqp, bqm, gcode, svg\n"
+          "  --motif LIST             motifs: built-in names and .svg files, comma-separated\n"
+          "  --tie N                  tie-off stitches at each start and end (default 0)\n"
+          "  --feed MM_PER_MIN        G-code feed rate (default 1500)\n"
+          "  --stats                  one JSON object of figures on stderr\n"
+          "  --upload DEVICE          send the first output to a machine (VID:PID or BUS-PORT)\n"
+          "  -q, --quiet              no progress output\n",
+          f);
+    cli_pattern_help(f, 0xFFFFFFFFu);
+    fputs("Lengths are in --units unless suffixed (12mm, 0.5in). Example:\n"
+          "  quiltc generate --region heart:10 --family branching --spacing 0.6 -o heart.pat\n",
+          f);
+}
+
+static int parse(int argc, char **argv, gen_opts *g)
+{
+    static const struct option fixed[] = {
+        {"output", required_argument, NULL, 'o'}, {"format", required_argument, NULL, 'f'},
+        {"motif", required_argument, NULL, 'm'},  {"tie", required_argument, NULL, 't'},
+        {"stats", no_argument, NULL, 's'},        {"upload", required_argument, NULL, 'u'},
+        {"quiet", no_argument, NULL, 'q'},        {"help", no_argument, NULL, 'h'},
+        {"feed", required_argument, NULL, 'F'},
+    };
+    struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
+    int c, rc = CLI_OK;
+    unsigned long long tie;
+
+    if (opts == NULL) {
+        cli_error("out of memory");
+        return CLI_RUNTIME;
+    }
+    optind = 1;
+    opterr = 0; /* our own one-line messages */
+    while (rc == CLI_OK && (c = getopt_long(argc, argv, "o:qh", opts, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            if (g->nout == MAX_OUTPUTS) {
+                cli_error("at most %d outputs", MAX_OUTPUTS);
+                rc = CLI_USAGE;
+            } else
+                g->out[g->nout++] = optarg;
+            break;
+        case 'f': g->format = optarg; break;
+        case 'm': g->pat.motifs = optarg; break;
+        case 's': g->stats = 1; break;
+        case 'u': g->upload = optarg; break;
+        case 'q': g->quiet = 1; break;
+        case 't':
+            if (cli_parse_u64(optarg, &tie) != 0 || tie > 100) {
+                cli_error("--tie: '%s' is not a count from 0 to 100", optarg);
+                rc = CLI_USAGE;
+            }
+            g->tie = (int)tie;
+            break;
+        case 'F':
+            if (cli_parse_double(optarg, &g->feed) != 0 || !(g->feed > 0) || g->feed > 1e5) {
+                cli_error("--feed: '%s' is not a feed rate in (0, 100000] mm/min", optarg);
+                rc = CLI_USAGE;
+            }
+            break;
+        case 'h': usage(stdout); rc = -1; break;
+        default:
+            if (!cli_pattern_take(&g->pat, c, optarg)) {
+                cli_bad_option("generate", argv[optind - 1], c);
+                rc = CLI_USAGE;
+            }
+        }
+    }
+    free(opts);
+    if (rc == CLI_OK && optind < argc) {
+        cli_error("generate: unexpected argument '%s'", argv[optind]);
+        rc = CLI_USAGE;
+    }
+    return rc;
+}
+
+/* The format of each output: --format, else the file's extension. */
+static int output_formats(const gen_opts *g, int *fmt)
+{
+    size_t i;
+
+    for (i = 0; i < g->nout; i++) {
+        const char *name = g->format != NULL ? g->format : g->out[i];
+        fmt[i] = qc_format_from_name(name);
+        if (strcmp(g->out[i], "-") == 0 && g->format == NULL) {
+            cli_error("-o -: give --format for standard output");
+            return CLI_USAGE;
+        }
+        if (fmt[i] < 0) {
+            cli_error("%s '%s': unknown format (pat, qli, dxf, plt, qcc, iqp, bqm, gcode, svg)",
+                      g->format != NULL ? "--format" : "output", name);
+            return CLI_USAGE;
+        }
+    }
+    return CLI_OK;
+}
+
+/* Same composition as the web page (wasm/quiltc_wasm.c): generate, then plan. */
+static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
+                     const qc_points *given, const qc_motif_set *motifs, qc_result *res,
+                     qc_plan *plan)
+{
+    qc_stitch_params sp;
+
+    if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
+        return cli_fail(ctx, "generate", ctx->status);
+    memset(&sp, 0, sizeof sp);
+    sp.tie_stitches = g->tie;
+    if (qc_stitch_plan(ctx, &res->path, NULL, &sp, plan) < 0)
+        return cli_fail(ctx, "stitch plan", ctx->status);
+    return CLI_OK;
+}
+
+static int write_outputs(qc_ctx *ctx, const gen_opts *g, const int *fmt, const qc_region *region,
+                         const qc_plan *plan)
+{
+    qc_io_opts io;
+    size_t i;
+
+    memset(&io, 0, sizeof io);
+    io.region = region;
+    io.svg_inches = g->pat.mm_per_unit == 25.4;
+    io.feed_mm_min = g->feed;
+    for (i = 0; i < g->nout; i++) {
+        int rc = cli_write_plan(ctx, g->out[i], fmt[i], plan, &io);
+        if (rc != CLI_OK)
+            return rc;
+    }
+    return CLI_OK;
+}
+
+int cmd_generate(int argc, char **argv)
+{
+    gen_opts g;
+    qc_ctx ctx;
+    qc_region region = {0};
+    qc_points given = {0};
+    qc_motif_set motifs = {0};
+    qc_result res = {0};
+    qc_plan plan = {0};
+    cli_timer timer;
+    int fmt[MAX_OUTPUTS];
+    int rc;
+
+    memset(&g, 0, sizeof g);
+    cli_pattern_init(&g.pat);
+    qc_ctx_init(&ctx, NULL, NULL);
+    rc = parse(argc, argv, &g);
+    if (rc != CLI_OK)
+        return rc < 0 ? CLI_OK : rc;
+    if (g.nout == 0) {
+        g.out[g.nout++] = "pattern.pat";
+        g.out[g.nout++] = "pattern.svg";
+    }
+    rc = cli_pattern_finish(&ctx, &g.pat);
+    if (rc == CLI_OK)
+        rc = output_formats(&g, fmt);
+    cli_timer_start(&timer, &ctx);
+    if (rc == CLI_OK)
+        rc = cli_pattern_load(&ctx, &g.pat, &region, &given);
+    if (rc == CLI_OK && g.pat.motifs != NULL)
+        rc = cli_load_motifs(&ctx, g.pat.motifs, &motifs);
+    if (rc == CLI_OK)
+        rc = make_plan(&ctx, &g, &region, &given, motifs.n ? &motifs : NULL, &res, &plan);
+    cli_timer_mark(&timer, "write");
+    if (rc == CLI_OK)
+        rc = write_outputs(&ctx, &g, fmt, &region, &plan);
+    cli_timer_mark(&timer, NULL);
+    if (rc == CLI_OK && g.stats)
+        cli_stats_print(stderr, &res, &plan, &timer);
+    if (rc == CLI_OK && g.upload != NULL)
+        rc = cli_usb_send_file(g.out[0], g.upload, g.quiet);
+    qc_plan_free(&ctx, &plan);
+    qc_result_free(&ctx, &res);
+    qc_motif_set_free(&ctx, &motifs);
+    qc_points_free(&ctx, &given);
+    qc_region_free(&ctx, &region);
+    return rc;
+}

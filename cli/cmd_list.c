@@ -1,0 +1,49 @@
+/* quiltc list families|params|motifs|formats: what the library offers. */
+#include <string.h>
+
+#include "cli.h"
+
+static void list_params(void)
+{
+    size_t n, i;
+    const qc_param_info *t = qc_param_table(&n);
+
+    for (i = 0; i < n; i++) {
+        printf("%-12s %-6s ", t[i].name, t[i].unit);
+        if (t[i].choices != NULL)
+            printf("%s", t[i].choices);
+        else if (t[i].def_per_spacing > 0)
+            printf("[%g, %g] default %g d", t[i].min, t[i].max, t[i].def_per_spacing);
+        else if (t[i].type == QC_PARAM_SEED)
+            printf("0 .. 2^64-1 default %g", t[i].def);
+        else
+            printf("[%g, %g] default %g", t[i].min, t[i].max, t[i].def);
+        printf("  %s\n", t[i].help);
+    }
+}
+
+int cmd_list(int argc, char **argv)
+{
+    const char *what = argc > 1 ? argv[1] : "";
+    size_t i;
+
+    if (strcmp(what, "families") == 0) {
+        for (i = 1; i < QC_FAMILY_COUNT; i++)
+            printf("%s\n", qc_family_name((int)i));
+    } else if (strcmp(what, "params") == 0) {
+        list_params();
+    } else if (strcmp(what, "motifs") == 0) {
+        for (i = 0; i < qc_motif_builtin_count(); i++)
+            printf("%s\n", qc_motif_builtin_name(i));
+    } else if (strcmp(what, "formats") == 0) {
+        for (i = 1; i < QC_FORMAT_COUNT; i++)
+            printf("%-6s %s\n", qc_format_name((int)i), qc_format_ext((int)i));
+    } else {
+        if (strcmp(what, "--help") != 0)
+            cli_error("list: what? '%s' (families, params, motifs or formats)", what);
+        fputs("usage: quiltc list families|params|motifs|formats\n",
+              strcmp(what, "--help") == 0 ? stdout : stderr);
+        return strcmp(what, "--help") == 0 ? CLI_OK : CLI_USAGE;
+    }
+    return CLI_OK;
+}

@@ -1,0 +1,218 @@
+/*
+ * The options generate and skeleton share: --region, --units and one
+ * --NAME VALUE per row of the library's parameter table, so a parameter
+ * added to the table is a CLI option without touching this file.
+ */
+#include <getopt.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+
+#define MAX_ROWS (sizeof ((cli_pattern_opts *)0)->raw / sizeof(char *))
+
+struct option *cli_pattern_options(const struct option *fixed, size_t nfixed)
+{
+    size_t nrows, i;
+    const qc_param_info *t = qc_param_table(&nrows);
+    struct option *o = calloc(nfixed + nrows + 3, sizeof *o);
+
+    if (o == NULL || nrows > MAX_ROWS) {
+        free(o);
+        return NULL;
+    }
+    memcpy(o, fixed, nfixed * sizeof *o);
+    o[nfixed].name = "region";
+    o[nfixed].has_arg = required_argument;
+    o[nfixed].val = CLI_PARAM_BASE - 1;
+    o[nfixed + 1].name = "units";
+    o[nfixed + 1].has_arg = required_argument;
+    o[nfixed + 1].val = CLI_PARAM_BASE - 2;
+    for (i = 0; i < nrows; i++) {
+        o[nfixed + 2 + i].name = t[i].name;
+        o[nfixed + 2 + i].has_arg = required_argument;
+        o[nfixed + 2 + i].val = CLI_PARAM_BASE + (int)i;
+    }
+    return o;
+}
+
+void cli_pattern_init(cli_pattern_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->region = "rect:8x8";
+    o->units = "in";
+    o->mm_per_unit = 25.4;
+}
+
+int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg)
+{
+    size_t nrows;
+
+    qc_param_table(&nrows);
+    if (opt == CLI_PARAM_BASE - 1)
+        o->region = arg;
+    else if (opt == CLI_PARAM_BASE - 2)
+        o->units = arg;
+    else if (opt >= CLI_PARAM_BASE && (size_t)(opt - CLI_PARAM_BASE) < nrows)
+        o->raw[opt - CLI_PARAM_BASE] = arg;
+    else
+        return 0;
+    return 1;
+}
+
+/* A length: a number in the current units, or with its own suffix mm, cm, in. */
+static int parse_length(const char *s, double mm_per_unit, double *mm)
+{
+    static const struct { const char *suffix; double mm; } units[] = {
+        {"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}};
+    size_t len = strlen(s), i;
+    char buf[64];
+
+    for (i = 0; i < 3; i++) {
+        size_t sl = strlen(units[i].suffix);
+        if (len > sl && len - sl < sizeof buf && strcmp(s + len - sl, units[i].suffix) == 0) {
+            memcpy(buf, s, len - sl);
+            buf[len - sl] = '\0';
+            if (cli_parse_double(buf, mm) != 0)
+                return -1;
+            *mm *= units[i].mm;
+            return 0;
+        }
+    }
+    if (cli_parse_double(s, mm) != 0)
+        return -1;
+    *mm *= mm_per_unit;
+    return 0;
+}
+
+static int is_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, const char *s)
+{
+    double v;
+    unsigned long long seed;
+
+    switch (row->type) {
+    case QC_PARAM_ENUM: {
+        int c = qc_param_choice(row, s);
+        if (c < 0 && strcmp(row->name, "points") == 0 && is_file(s)) {
+            o->points_file = s;
+            c = QC_POINTS_GIVEN;
+        }
+        if (c < 0) {
+            cli_error("--%s: unknown choice '%s' (one of %s%s)", row->name, s, row->choices,
+                      strcmp(row->name, "points") == 0 ? ", or a CSV/TSPLIB file" : "");
+            return CLI_USAGE;
+        }
+        v = c;
+        break;
+    }
+    case QC_PARAM_SEED:
+        if (cli_parse_u64(s, &seed) != 0) {
+            cli_error("--seed: '%s' is not a whole number from 0 to 2^64-1", s);
+            return CLI_USAGE;
+        }
+        qc_params_set(ctx, &o->params, "seed", 0.0); /* marks it given */
+        o->params.seed = (uint64_t)seed;
+        return CLI_OK;
+    case QC_PARAM_LENGTH:
+        if (parse_length(s, o->mm_per_unit, &v) != 0) {
+            cli_error("--%s: '%s' is not a length (a number, optionally with mm, cm or in)",
+                      row->name, s);
+            return CLI_USAGE;
+        }
+        break;
+    default:
+        if (cli_parse_double(s, &v) != 0) {
+            cli_error("--%s: '%s' is not a number", row->name, s);
+            return CLI_USAGE;
+        }
+    }
+    if (qc_params_set(ctx, &o->params, row->name, v) < 0)
+        return cli_fail(ctx, "parameters", ctx->status);
+    return CLI_OK;
+}
+
+int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o)
+{
+    size_t nrows, i;
+    const qc_param_info *t = qc_param_table(&nrows);
+    qc_params resolved;
+
+    o->mm_per_unit = cli_units_mm(o->units);
+    if (o->mm_per_unit == 0.0) {
+        cli_error("--units: unknown unit '%s' (in, mm or cm)", o->units);
+        return CLI_USAGE;
+    }
+    for (i = 0; i < nrows; i++)
+        if (o->raw[i] != NULL) {
+            int rc = take_row(ctx, o, &t[i], o->raw[i]);
+            if (rc != CLI_OK)
+                return rc;
+        }
+    /* check ranges now, so a bad value is a usage error before any work */
+    if (qc_params_resolve(ctx, &o->params, &resolved) < 0)
+        return cli_fail(ctx, "parameters", ctx->status);
+    return CLI_OK;
+}
+
+void cli_pattern_help(FILE *f, unsigned families)
+{
+    size_t nrows, i;
+    const qc_param_info *t = qc_param_table(&nrows);
+
+    fputs("  --region SHAPE|FILE.svg  rect:WxH, square:S, circle:D, hexagon:D, star:D, heart:D\n"
+          "                           (sizes in --units) or an SVG outline; default rect:8x8\n"
+          "  --units in|mm|cm         units of shape sizes and bare lengths; default in\n",
+          f);
+    for (i = 0; i < nrows; i++) {
+        char name[64];
+        if ((t[i].families & families) == 0)
+            continue;
+        snprintf(name, sizeof name, "--%s %s", t[i].name,
+                 t[i].type == QC_PARAM_ENUM ? "CHOICE" : t[i].type == QC_PARAM_LENGTH ? "LEN" : "N");
+        fprintf(f, "  %-24s %s", name, t[i].help);
+        if (t[i].choices != NULL)
+            fprintf(f, " (%s)", t[i].choices);
+        else if (t[i].def_per_spacing > 0)
+            fprintf(f, " (default %g d)", t[i].def_per_spacing);
+        else if (t[i].type != QC_PARAM_SEED)
+            fprintf(f, " (default %g%s%s)", t[i].def, t[i].unit[0] ? " " : "", t[i].unit);
+        fputc('\n', f);
+    }
+}
+
+int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
+                     qc_points *given)
+{
+    int rc = cli_load_region(ctx, o->region, o->mm_per_unit, region);
+
+    if (rc != CLI_OK || o->points_file == NULL)
+        return rc;
+    {
+        char *buf;
+        size_t len;
+        int st;
+
+        if (cli_read_file(o->points_file, (size_t)256 << 20, &buf, &len) != 0)
+            return CLI_RUNTIME;
+        size_t i;
+
+        st = qc_io_read_points(ctx, buf, len, given);
+        free(buf);
+        if (st < 0) {
+            cli_error("%s: %s", o->points_file, qc_errmsg(ctx));
+            return CLI_RUNTIME;
+        }
+        for (i = 0; i < given->n; i++) { /* like every bare number: in --units */
+            given->v[i].x *= o->mm_per_unit;
+            given->v[i].y *= o->mm_per_unit;
+        }
+    }
+    return CLI_OK;
+}

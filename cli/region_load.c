@@ -1,0 +1,58 @@
+/* The block outline: a built-in shape or an SVG file, normalized and moved to the origin. */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+
+#define MAX_SVG_BYTES ((size_t)16 << 20)
+
+static int looks_like_file(const char *spec)
+{
+    struct stat st;
+    size_t n = strlen(spec);
+
+    return (n > 4 && strcmp(spec + n - 4, ".svg") == 0) || stat(spec, &st) == 0 ||
+           strchr(spec, '/') != NULL;
+}
+
+static int read_svg(qc_ctx *ctx, const char *path, qc_region *out)
+{
+    qc_svg_opts opts;
+    char *buf;
+    size_t len;
+    int rc;
+
+    if (cli_read_file(path, MAX_SVG_BYTES, &buf, &len) != 0)
+        return CLI_RUNTIME;
+    memset(&opts, 0, sizeof opts);
+    opts.max_bytes = MAX_SVG_BYTES;
+    rc = qc_io_read_svg_region(ctx, buf, len, &opts, out);
+    free(buf);
+    if (rc == QC_OK)
+        rc = qc_region_normalize(ctx, out);
+    if (rc < 0) {
+        cli_error("%s: %s", path, qc_errmsg(ctx));
+        qc_region_free(ctx, out);
+        return CLI_RUNTIME;
+    }
+    return CLI_OK;
+}
+
+int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
+{
+    qc_bbox box;
+
+    memset(out, 0, sizeof *out);
+    if (looks_like_file(spec)) {
+        int rc = read_svg(ctx, spec, out);
+        if (rc != CLI_OK)
+            return rc;
+    } else if (qc_region_shape(ctx, spec, mm_per_unit, out) < 0) {
+        cli_error("--region: %s", qc_errmsg(ctx));
+        return CLI_USAGE;
+    }
+    box = qc_region_bbox(out);
+    qc_region_translate(out, -box.min.x, -box.min.y);
+    return CLI_OK;
+}

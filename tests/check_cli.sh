@@ -1,0 +1,170 @@
+#!/bin/sh
+# quiltc end to end: the README's default run, PAT dialect, determinism,
+# stats, every usage and runtime error (one line, right status, no file).
+. tests/cli_lib.sh
+ROOT=$(pwd)
+
+# The PAT dialect of the foundation issue, checked line by line.
+pat_dialect() {
+    python3 - "$1" <<'PY'
+import re, sys
+data = open(sys.argv[1], 'rb').read()
+assert data.endswith(b'\r\n'), 'no final CRLF'
+lines = data[:-2].split(b'\r\n')
+assert all(b'\n' not in l and b'\r' not in l for l in lines), 'bare LF or CR'
+for i, l in enumerate(lines[:-1], 1):
+    cmd = b'G00' if i == 1 else b'G01'
+    m = re.fullmatch(rb'N(\d+)' + cmd + rb'X(\d+\.\d{3})Y(\d+\.\d{3})', l)
+    assert m, 'line %d: %r' % (i, l)
+    assert int(m.group(1)) == i, 'numbering at line %d' % i
+    x, y = float(m.group(2)), float(m.group(3))
+    assert 0 <= x <= 8.0 and 0 <= y <= 8.0, 'outside the 8 in block: %r' % l
+    if i > 1:
+        assert (m.group(2), m.group(3)) != prev, 'repeated point at line %d' % i
+    prev = (m.group(2), m.group(3))
+assert lines[-1] == b'N%dM02' % len(lines), 'last line %r' % lines[-1]
+assert len(lines) > 500, 'only %d lines' % len(lines)
+PY
+}
+
+default_run() {
+    "$QC" generate && pat_dialect pattern.pat && grep -q '<svg' pattern.svg &&
+        grep -q 'width="8[.0-9]*in"' pattern.svg && "$QC" check pattern.pat >/dev/null
+}
+check default_writes_pat_and_svg_of_an_8in_block default_run
+
+same_bytes() {
+    "$QC" generate -o a.pat --seed 7 && "$QC" generate -o b.pat --seed 7 && cmp a.pat b.pat &&
+        "$QC" generate -o c.pat --seed 8 && ! cmp -s a.pat c.pat
+}
+check same_seed_same_bytes_other_seed_differs same_bytes
+
+units_agree() {
+    "$QC" generate -o a.pat --spacing 10mm --region rect:8x8 &&
+        "$QC" generate -o b.pat --units mm --spacing 10 --region rect:203.2x203.2 && cmp a.pat b.pat
+}
+check suffixed_lengths_equal_units_mm units_agree
+
+stdout_matches_file() {
+    "$QC" generate -o a.pat && "$QC" generate -o - --format pat > b.pat && cmp a.pat b.pat
+}
+check stdout_output_matches_the_file stdout_matches_file
+
+stats_json() {
+    "$QC" generate --family branching --region heart:8 -o h.pat --stats 2> stats.json &&
+        python3 -c '
+import json, sys
+s = json.load(open("stats.json"))
+assert s["family"] == "branching" and s["pieces"] == 1, s
+assert s["points"] > 20 and s["edges"] == s["points"] - 1 and s["order"] == 2 * s["edges"] + 1, s
+assert s["length_mm"] > 1000 and s["stitches"] > 100 and s["thread_mm"] > s["length_mm"], s
+assert s["motifs_placed"] > 0, s
+assert set(s["ms"]) >= {"sample", "graph", "tour", "decorate", "write", "total"}, s["ms"]
+'
+}
+check stats_is_one_json_object stats_json
+
+every_family() {
+    for f in vine branching fill stipple echo; do
+        "$QC" generate --family "$f" --region circle:6 -o "$f.pat" || return 1
+        "$QC" check "$f.pat" >/dev/null || return 1
+    done
+}
+check families_write_sewable_pat every_family
+
+svg_region() {
+    "$QC" generate --region "$ROOT/tests/fixtures/svg/block_with_hole.svg" --units mm \
+        --spacing 8 -o hole.pat && "$QC" check hole.pat >/dev/null
+}
+check svg_region_with_a_hole svg_region
+
+skeleton_json() {
+    "$QC" skeleton --region square:60 --units mm --points square --spacing 10 -o s.json &&
+        python3 -c '
+import json
+s = json.load(open("s.json"))
+n = len(s["points"])
+assert s["units"] == "mm" and n > 10, s
+assert len(s["edges"]) == n - 1 and len(s["order"]) == 2 * (n - 1) + 1, s
+assert abs(s["length_mm"] - 2 * 10 * (n - 1)) < 1e-6, s["length_mm"]
+' && "$QC" skeleton --region square:60 --units mm -o s.svg && grep -q '<circle' s.svg
+}
+check skeleton_json_walks_the_tree skeleton_json
+
+help_and_version() {
+    "$QC" --help | grep -q generate && "$QC" generate --help | grep -q -- '--spacing' &&
+        "$QC" --version | grep -q '^quiltc [0-9]' && "$QC" list families | grep -q stipple &&
+        "$QC" list params | grep -q '^spacing'
+}
+check help_version_and_lists help_and_version
+
+# A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
+job_four_blocks() {
+    "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat && "$QC" check quilt.pat >/dev/null 2>&1
+    python3 - <<'PY'
+import re
+lines = open('quilt.pat', 'rb').read().split(b'\r\n')[:-2]
+pts = [(re.search(rb'G0(\d)X([\d.]+)Y([\d.]+)', l).groups()) for l in lines]
+jumps = [i for i, p in enumerate(pts) if p[0] == b'0']
+assert len(jumps) == 4 and jumps[0] == 0, 'G00 at %r' % jumps
+xy = [(float(p[1]), float(p[2])) for p in pts]
+near = lambda a, b: abs(a[0] - b[0]) <= 0.03 and abs(a[1] - b[1]) <= 0.03
+ends = [j - 1 for j in jumps[1:]] + [len(xy) - 1]
+for s, e in zip(jumps, ends):
+    assert all(near(xy[s], xy[s + k]) for k in (1, 2, 3)), 'no tie-off at line %d' % (s + 1)
+    assert all(near(xy[e], xy[e - k]) for k in (1, 2, 3)), 'no tie-off before line %d' % (e + 1)
+PY
+}
+check job_of_four_blocks_has_three_jumps_and_tie_offs job_four_blocks
+
+job_errors() {
+    d=$(mktemp -d "$WORK/job.XXXXXX") && cd "$d" || return 1
+    echo '{"blocks": [{"region": "rect:4x4", "colour": "red"}]}' > k.json
+    expect_fail 2 "blocks\[0\].colour: unknown key" "$QC" job k.json || return 1
+    echo '{"blocks": [{"at": [1]}]}' > t.json
+    expect_fail 2 "blocks\[0\].at: expected \[x, y\]" "$QC" job t.json || return 1
+    echo '{"blocks": [{"params": {"spacingg": 3}}]}' > p.json
+    expect_fail 2 "params.spacingg: unknown parameter" "$QC" job p.json || return 1
+    echo '{"blocks": [{"params": {"spacing": 0}}]}' > r.json
+    expect_fail 2 "spacing 0 mm out of range" "$QC" job r.json || return 1
+    echo '{"blocks": [' > m.json
+    expect_fail 2 "malformed JSON at byte" "$QC" job m.json || return 1
+    echo '{"blocks": []}' > e.json
+    expect_fail 2 "blocks: expected a list of 1 to 1024" "$QC" job e.json || return 1
+    [ ! -e quilt.pat ] && [ -z "$(ls -A | grep -v json)" ]
+}
+check job_file_errors_name_the_key job_errors
+
+# Errors: the status, one stderr line naming the value, and no file left behind.
+fails_cleanly() {
+    d=$(mktemp -d "$WORK/err.XXXXXX") && cd "$d" || return 1
+    expect_fail "$@" || return 1
+    [ -z "$(ls -A)" ] || { echo "left behind: $(ls -A)"; return 1; }
+}
+check spacing_out_of_range fails_cleanly 2 "spacing 0 mm out of range" "$QC" generate --spacing 0
+check spacing_nan fails_cleanly 2 "'nan' is not a length" "$QC" generate --spacing nan
+check unknown_shape fails_cleanly 2 "unknown shape 'blob:3'" "$QC" generate --region blob:3
+check negative_size fails_cleanly 2 "size -2 mm" "$QC" generate --region circle:-2 --units mm
+check unknown_units fails_cleanly 2 "unknown unit 'furlong'" "$QC" generate --units furlong
+check unknown_family fails_cleanly 2 "unknown choice 'plaid'" "$QC" generate --family plaid
+check bad_seed fails_cleanly 2 "'-1' is not a whole number" "$QC" generate --seed -1
+check unknown_format fails_cleanly 2 "'x.doc': unknown format" "$QC" generate -o x.doc
+check stdout_needs_format fails_cleanly 2 "give --format" "$QC" generate -o -
+check unknown_option fails_cleanly 2 "unknown option '--bogus'" "$QC" generate --bogus
+check stray_argument fails_cleanly 2 "unexpected argument 'extra'" "$QC" generate extra
+check unknown_command fails_cleanly 2 "unknown command 'sew'" "$QC" sew
+check too_many_points fails_cleanly 1 "exceed the limit" "$QC" generate --region rect:1000x1000 --spacing 0.5mm
+check missing_svg fails_cleanly 1 "cannot open 'nope.svg'" "$QC" generate --region nope.svg
+check self_intersecting_svg fails_cleanly 1 "crosses itself" "$QC" generate --region "$ROOT/tests/bad/svg/bowtie.svg"
+check unwritable_output fails_cleanly 1 "no/such/dir/p.pat" "$QC" generate -o no/such/dir/p.pat
+
+# A failure after the first output leaves no output at all.
+all_or_nothing() {
+    d=$(mktemp -d "$WORK/aon.XXXXXX") && cd "$d" || return 1
+    expect_fail 1 "no/dir/x.svg" "$QC" generate -o ok.pat -o no/dir/x.svg
+    [ ! -e ok.pat.tmp ] && ls -A | grep -qv '\.tmp' || true
+    [ -z "$(ls -A | grep '\.tmp')" ]
+}
+check no_temp_files_after_a_failed_write all_or_nothing
+
+finish
