@@ -91,6 +91,26 @@ assert abs(s["length_mm"] - 2 * 10 * (n - 1)) < 1e-6, s["length_mm"]
 }
 check skeleton_json_walks_the_tree skeleton_json
 
+skeleton_golden() {
+    "$QC" skeleton --region square:40 --units mm --points square --spacing 10 --margin 2 -o - |
+        cmp - "$ROOT/tests/golden/skeleton-small.json"
+}
+check skeleton_matches_golden skeleton_golden
+
+# berlin52 (TSPLIB, proven optimum 7542): the built-in tour is within 2 %.
+tsplib_tour() {
+    f="$ROOT/../shared/data/tsplib/berlin52.tsp"
+    [ -f "$f" ] || { echo "no $f: skipped"; return 0; }
+    "$QC" skeleton --points "$f" --units mm --region rect:2000x2000 --path tsp -o b.json &&
+        python3 -c '
+import json
+s = json.load(open("b.json"))
+assert len(s["points"]) == 52 and sorted(s["order"]) == list(range(52)), s["order"]
+assert s["length_mm"] < 7542 * 1.02, s["length_mm"]
+'
+}
+check tsplib_berlin52_tour_near_optimal tsplib_tour
+
 help_and_version() {
     "$QC" --help | grep -q generate && "$QC" generate --help | grep -q -- '--spacing' &&
         "$QC" --version | grep -q '^quiltc [0-9]' && "$QC" list families | grep -q stipple &&
