@@ -21,7 +21,8 @@ int qc__tsp_radix(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n, unsigned 
     if (val != NULL)
         v1 = qc__alloc_array(ctx, n, sizeof *v1);
     if (k1 == NULL || (val != NULL && v1 == NULL)) {
-        qc__free(ctx, k1, k1 ? n * sizeof *k1 : 0);
+        qc__free(ctx, k1, n * sizeof *k1);
+        qc__free(ctx, v1, n * sizeof *v1);
         return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory sorting %lu keys",
                         (unsigned long)n);
     }
@@ -211,6 +212,6 @@ int qc__tsp_prepare(qc__tsp *s)
     }
     s->ustart[m] = (uint32_t)n;
 out:
-    qc__free(s->ctx, key, key ? n * sizeof *key : 0);
+    qc__free(s->ctx, key, n * sizeof *key);
     return rc;
 }
