@@ -651,24 +651,26 @@ static void malformed_xml_should_fail_with_where(void)
 static void bad_path_data_should_name_the_character(void)
 {
     expect_fail_str(DOC("<path d=\"M 10\"/>"), QC_EFORMAT,
-                    "<path d> char 5: expected a number, found the end of the value");
+                    "<path d> char 5 (byte 104): expected a number, found the end of the value");
     expect_fail_str(DOC("<path d=\"M 1 2 L x\"/>"), QC_EFORMAT,
-                    "<path d> char 9: expected a number, found \"x\"");
+                    "<path d> char 9 (byte 108): expected a number, found \"x\"");
     expect_fail_str(DOC("<path d=\"L 1 2\"/>"), QC_EFORMAT, "must start with M or m, found \"L 1 2\"");
     expect_fail_str(DOC("<path d=\"M1 2 X3 4\"/>"), QC_EFORMAT, "expected a path command letter, found \"X3 4\"");
     expect_fail_str(DOC("<path d=\"M1 2 L3 4,\"/>"), QC_EFORMAT, "expected a number after ','");
     expect_fail_str(DOC("<path d=\"M1 2 Z 3 4\"/>"), QC_EFORMAT, "command letter, found \"3 4\"");
     expect_fail_str(DOC("<path d=\"M0 0 A1 1 0 2 0 5 5\"/>"), QC_EFORMAT, "arc flag 0 or 1");
     expect_fail_str(DOC("<path d=\"M0 0 L NaN 5\"/>"), QC_EFORMAT, "found \"NaN 5\"");
+    /* with an entity in the value the document offset is not exact: left out */
+    expect_fail_str(DOC("<path d=\"M0&#32;0 L x\"/>"), QC_EFORMAT, "<path d> char 8: expected a number, found \"x\"");
     expect_fail_str(DOC("<path d=\"M0 0 L 1e 5\"/>"), QC_EFORMAT, "expected a number, found \"e 5\"");
     expect_fail_str(DOC("\n<polygon points=\"1 2 3\"/>"), QC_EFORMAT, "svg line 2, <polygon points>");
     expect_fail_str(DOC("\n<rect width='1' height='1'/><g>\n</g>\n<rect\nwidth='x'/>"), QC_EFORMAT,
-                    "svg line 4, <rect width> char 1: expected a length");
+                    "svg line 4, <rect width> char 1 (byte 142): expected a length");
     expect_fail_str(DOC("<rect width=\"10em\" height=\"1\"/>"), QC_EFORMAT, "expected a unit");
     expect_fail_str(DOC("<rect width=\"1\" height=\"1\" transform=\"rotate(1 2)\"/>"), QC_EFORMAT,
                     "wrong number of arguments");
     expect_fail_str(DOC("<g transform=\"translat(1)\"><rect width=\"1\" height=\"1\"/></g>"), QC_EFORMAT,
-                    "<g transform> char 1: expected matrix");
+                    "<g transform> char 1 (byte 105): expected matrix");
     expect_fail_str(DOC("<g transform=\"scale(1 2\"/>"), QC_EFORMAT, "expected ')'");
     expect_fail_str("<svg viewBox=\"0 0 10\"/>", QC_EFORMAT, "<svg viewBox>");
     expect_fail_str("<svg viewBox=\"0 0 10 10\" preserveAspectRatio=\"xMidYMiddle\"/>", QC_EFORMAT,
@@ -983,7 +985,7 @@ static void files_should_read_with_the_expected_status(void)
         {"tests/fixtures/svg/block_with_hole.svg", QC_OK, QC_OK, NULL},
         {"tests/fixtures/svg/heart.svg", QC_OK, QC_OK, NULL},
         {"tests/fixtures/svg/inkscape_like.svg", QC_OK, QC_OK, NULL},
-        {"tests/bad/svg/bad_path_data.svg", QC_EFORMAT, QC_EFORMAT, "svg line 2, <path d> char 24: expected a number, found the end"},
+        {"tests/bad/svg/bad_path_data.svg", QC_EFORMAT, QC_EFORMAT, "svg line 2, <path d> char 24 (byte 97): expected a number, found the end"},
         {"tests/bad/svg/billion_laughs.svg", QC_EFORMAT, QC_EFORMAT, "declares an entity"},
         {"tests/bad/svg/binary_garbage.svg", QC_EFORMAT, QC_EFORMAT, "control character"},
         {"tests/bad/svg/deep_nesting.svg", QC_ELIMIT, QC_ELIMIT, "nested more than 256"},

@@ -21,6 +21,7 @@ typedef struct qc__xml_attr {
     const char *value; /* entity-decoded, NUL-terminated, in the tokenizer's text buffer */
     size_t value_len;
     size_t at;         /* byte offset of the value's first character */
+    size_t raw_len;    /* bytes of the value in the document (entities undecoded) */
 } qc__xml_attr;
 
 typedef struct qc__xml_ns {
@@ -95,6 +96,7 @@ QC__HIDDEN qc_vec2 qc__svg_mat_apply(const qc__svg_mat *m, qc_vec2 p);
 /* Where a value came from, for error messages: "svg line 12, <path d>". */
 typedef struct qc__svg_where {
     qc_ctx *ctx;
+    const qc__xml *x; /* when set, messages name the document byte too */
     unsigned long line;
     const char *elem; /* element local name, NUL-terminated */
     const char *attr; /* attribute name */

@@ -120,26 +120,62 @@ static int excerpt_len(size_t n, size_t at)
     return (int)(k > 16 ? 16 : k);
 }
 
+/* " (byte B)": where s[at] lies in the document, when s is an attribute
+ * value without entity references (else the offset is not exact: ""). */
+static const char *doc_byte(const qc__svg_where *w, const char *s, size_t at, char buf[32])
+{
+    size_t k;
+
+    if (w->x != NULL)
+        for (k = 0; k < w->x->nattr; k++) {
+            const qc__xml_attr *a = &w->x->attr[k];
+
+            if (a->value == s && a->raw_len == a->value_len) {
+                unsigned long b = (unsigned long)(a->at + at);
+                char digits[24];
+                int nd = 0, i = 0;
+
+                do {
+                    digits[nd++] = (char)('0' + b % 10);
+                    b /= 10;
+                } while (b > 0);
+                memcpy(buf, " (byte ", 7);
+                i = 7;
+                while (nd > 0)
+                    buf[i++] = digits[--nd];
+                buf[i++] = ')';
+                buf[i] = '\0';
+                return buf;
+            }
+        }
+    return "";
+}
+
 int qc__svg_check_number(const qc__svg_where *w, double v, const char *s, size_t n,
                          size_t at)
 {
+    char b[32];
+
     if (fabs(v) <= QC__SVG_MAX_NUMBER)
         return QC_OK;
     return qc__fail(w->ctx, QC_ERANGE,
-                    "svg line %lu, <%s %s> char %lu: number \"%.*s\" is beyond %g user units",
-                    w->line, w->elem, w->attr, (unsigned long)at + 1, excerpt_len(n, at), s + at,
-                    QC__SVG_MAX_NUMBER);
+                    "svg line %lu, <%s %s> char %lu%s: number \"%.*s\" is beyond %g user units",
+                    w->line, w->elem, w->attr, (unsigned long)at + 1, doc_byte(w, s, at, b),
+                    excerpt_len(n, at), s + at, QC__SVG_MAX_NUMBER);
 }
 
 int qc__svg_syntax(const qc__svg_where *w, const char *s, size_t n, size_t at, const char *what)
 {
+    char b[32];
+
     if (at >= n)
         return qc__fail(w->ctx, QC_EFORMAT,
-                        "svg line %lu, <%s %s> char %lu: %s, found the end of the value",
-                        w->line, w->elem, w->attr, (unsigned long)at + 1, what);
-    return qc__fail(w->ctx, QC_EFORMAT, "svg line %lu, <%s %s> char %lu: %s, found \"%.*s\"",
-                    w->line, w->elem, w->attr, (unsigned long)at + 1, what, excerpt_len(n, at),
-                    s + at);
+                        "svg line %lu, <%s %s> char %lu%s: %s, found the end of the value",
+                        w->line, w->elem, w->attr, (unsigned long)at + 1, doc_byte(w, s, at, b),
+                        what);
+    return qc__fail(w->ctx, QC_EFORMAT, "svg line %lu, <%s %s> char %lu%s: %s, found \"%.*s\"",
+                    w->line, w->elem, w->attr, (unsigned long)at + 1, doc_byte(w, s, at, b), what,
+                    excerpt_len(n, at), s + at);
 }
 
 void qc__svg_sincos_deg(double deg, double *s, double *c)

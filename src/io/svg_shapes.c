@@ -516,6 +516,7 @@ int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_shape_fn fn, 
     k.fn = fn;
     k.ud = ud;
     k.w.ctx = ctx;
+    k.w.x = &k.x;
     k.st = (frame *)qc__alloc_array(ctx, QC__XML_MAX_DEPTH + 1, sizeof *k.st);
     if (k.st == NULL)
         return QC_ENOMEM;

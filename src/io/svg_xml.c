@@ -413,6 +413,7 @@ static int attributes(qc__xml *x, int *self_close)
         a->value = NULL;
         a->value_len = x->text_len - 1 - off;
         a->at = vstart;
+        a->raw_len = i - vstart;
         x->nattr++;
         x->pos = i + 1;
     }
