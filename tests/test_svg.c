@@ -546,6 +546,77 @@ static void degenerate_rings_should_be_dropped(void)
     qc_region_free(&ctx, &r);
 }
 
+static void unfilled_open_subpaths_should_be_strokes_only(void)
+{
+    qc_path p;
+
+    expect_fail(DOC("<path fill=\"none\" d=\"M0 0 L10 0 L10 10\"/>"),
+                strlen(DOC("<path fill=\"none\" d=\"M0 0 L10 0 L10 10\"/>")), QC_EEMPTY, QC_OK,
+                "1 unclosed subpaths with fill:none");
+    /* closed with Z or back at the start: kept; open: left out */
+    TEST_ASSERT_EQUAL_size_t(3, rings_of(DOC("<g fill=\"none\"><path d=\"M0 0 L10 0 L10 10 Z M20 20 L30 20 "
+                                             "L30 30 M40 40 L50 40 L50 50 L40 40\"/><rect width=\"1\" "
+                                             "height=\"1\" style=\"fill:none\"/></g>")));
+    /* a fill on the shape overrides the group's none; inherit keeps it */
+    TEST_ASSERT_EQUAL_size_t(2, rings_of(DOC("<g style=\"fill:none\"><path fill=\"red\" d=\"M0 0 L10 0 L10 10 "
+                                             "M20 20 L30 20 L30 30\"/></g>")));
+    TEST_ASSERT_EQUAL_size_t(1, rings_of(DOC("<g fill=\"none\"><path fill=\"inherit\" d=\"M0 0 L10 0 L10 10 "
+                                             "M20 20 L30 20 L30 30 Z\"/></g>")));
+    /* the path reader keeps everything */
+    TEST_ASSERT_EQUAL_INT(QC_OK, path_of(DOC("<path fill=\"none\" d=\"M0 0 L10 0 L10 10\"/>"), &p));
+    TEST_ASSERT_EQUAL_size_t(3, p.ncmd);
+    qc_path_free(&ctx, &p);
+}
+
+static int mem_write(void *ud, const void *data, size_t len)
+{
+    char **m = (char **)ud;
+    size_t n = *m != NULL ? strlen(*m) : 0;
+    char *q = (char *)realloc(*m, n + len + 1);
+
+    if (q == NULL)
+        return -1;
+    memcpy(q + n, data, len);
+    q[n + len] = '\0';
+    *m = q;
+    return 0;
+}
+
+static void our_preview_should_read_back_as_its_region(void)
+{
+    qc_region src = {0}, back;
+    qc_plan plan = {0};
+    qc_io_opts io;
+    qc_vec2 outer[4] = {{0, 0}, {110, 0}, {110, 230}, {0, 230}};
+    qc_vec2 hole[3] = {{40, 100}, {60, 100}, {50, 120}};
+    qc_vec2 pts[4] = {{5, 5}, {100, 10}, {50, 200}, {20, 220}};
+    char *svg = NULL;
+    qc_bbox a, b;
+    size_t i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &src, outer, 4));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &src, hole, 3));
+    for (i = 0; i < 4; i++)
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_plan_push(&ctx, &plan, pts[i], i == 0 || i == 2 ? QC_ST_JUMP : 0));
+    memset(&io, 0, sizeof io);
+    io.region = &src;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_io_write(&ctx, QC_FORMAT_SVG, &plan, &io, mem_write, &svg));
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_of(svg, &back), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(2, back.nrings);
+    TEST_ASSERT_EQUAL_size_t(7, back.nv);
+    a = qc_region_bbox(&src);
+    b = qc_region_bbox(&back);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, a.max.x - a.min.x, b.max.x - b.min.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, a.max.y - a.min.y, b.max.y - b.min.y);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &back));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 110 * 230 - 200, qc_region_area(&back));
+    qc_region_free(&ctx, &back);
+    qc_region_free(&ctx, &src);
+    qc_plan_free(&ctx, &plan);
+    free(svg);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 /* ---- what is skipped ---- */
 
 static void hidden_and_non_rendered_elements_should_be_skipped(void)
@@ -793,7 +864,7 @@ static void empty_and_open_only_documents_should_be_eempty(void)
     expect_fail_str("<svg/>", QC_EEMPTY, "no");
     expect_fail(DOC("<polyline points=\"0,0 10,0 10,10 0,10\"/><line x2=\"5\" y2=\"5\"/>"),
                 strlen(DOC("<polyline points=\"0,0 10,0 10,10 0,10\"/><line x2=\"5\" y2=\"5\"/>")),
-                QC_EEMPTY, QC_OK, "no closed shape with an area (2 open polyline or line shapes ignored)");
+                QC_EEMPTY, QC_OK, "no closed shape with an area (ignored: 2 polyline or line shapes, 0 unclosed");
     TEST_ASSERT_EQUAL_INT(QC_OK, path_of(DOC("<polyline points=\"0,0 10,0 10,10 0,10\"/>"), &p));
     TEST_ASSERT_EQUAL_size_t(4, p.ncmd);
     qc_path_free(&ctx, &p);
@@ -1090,6 +1161,8 @@ int main(void)
     RUN_TEST(square_with_square_hole_should_be_two_rings);
     RUN_TEST(nonzero_should_fill_same_direction_inner_rings);
     RUN_TEST(degenerate_rings_should_be_dropped);
+    RUN_TEST(unfilled_open_subpaths_should_be_strokes_only);
+    RUN_TEST(our_preview_should_read_back_as_its_region);
     RUN_TEST(hidden_and_non_rendered_elements_should_be_skipped);
     RUN_TEST(xml_features_should_be_understood);
     RUN_TEST(the_motif_example_should_read_as_one_closed_piece);

@@ -9,9 +9,11 @@
  *
  * Region: every closed shape (path, rect, circle, ellipse, polygon) gives
  * one ring per subpath, curves flattened to the tolerance; an open subpath
- * is closed, as SVG fills it. polyline and line have no inside and are
- * ignored. Rings with fewer than 3 distinct vertices or no area are
- * dropped. Holes: the region is even-odd by nesting (region.h). A shape
+ * (one not ending at its start) is closed, as SVG fills it, unless the
+ * shape's fill is none: then it is only a stroke and is left out (so
+ * quiltc's own preview reads back as its region layer). polyline and line
+ * have no inside and are ignored. Rings with fewer than 3 distinct
+ * vertices or no area are dropped. Holes: the region is even-odd by nesting (region.h). A shape
  * with fill-rule evenodd keeps all its rings. With nonzero (SVG's default)
  * a ring is kept only where the fill changes across it: the winding number
  * just inside it (the sum of the orientations of the shape's rings that
@@ -50,7 +52,7 @@ typedef struct region_sink {
     size_t ncur, cur_cap;
     signed char *keep;
     size_t keep_cap;
-    size_t open_shapes;
+    size_t open_shapes, stroke_only; /* left out, for the QC_EEMPTY message */
 } region_sink;
 
 static int resolve_opts(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
@@ -240,27 +242,50 @@ static int nonzero_filter(region_sink *s)
     return QC_OK;
 }
 
-static int region_shape(void *ud, const qc_path *shape, int closed, int evenodd)
+/* Whether the subpath starting at command c (a MOVE, point index k) ends
+ * where it starts. */
+static int subpath_closed(const qc_path *shape, size_t c, size_t k)
+{
+    qc_vec2 first = shape->pt[k++], last = first;
+
+    for (c++; c < shape->ncmd && shape->cmd[c] != QC_PATH_MOVE; c++) {
+        k += qc_path_cmd_points(shape->cmd[c]);
+        last = shape->pt[k - 1];
+    }
+    return last.x == first.x && last.y == first.y;
+}
+
+static int region_shape(void *ud, const qc_path *shape, unsigned flags)
 {
     region_sink *s = (region_sink *)ud;
     size_t c, k = 0;
     qc_vec2 cur = {0, 0};
+    int skip = 0;
 
-    if (!closed) {
+    if (!(flags & QC__SVG_CLOSED)) {
         s->open_shapes++;
         return QC_OK;
     }
     s->rings.nv = s->rings.n = 0;
     s->ncur = 0;
     for (c = 0; c < shape->ncmd; c++) {
+        if (shape->cmd[c] == QC_PATH_MOVE) {
+            QC__TRY(ring_done(s));
+            if (!(flags & QC__SVG_FILLED)) {
+                skip = !subpath_closed(shape, c, k);
+                s->stroke_only += (size_t)skip;
+            }
+        }
+        if (skip) {
+            k += qc_path_cmd_points(shape->cmd[c]);
+            continue;
+        }
         if (shape->cmd[c] == QC_PATH_CUBIC) {
             QC__TRY(flatten_cubic(s, cur, shape->pt + k));
             cur = shape->pt[k + 2];
             k += 3;
             continue;
         }
-        if (shape->cmd[c] == QC_PATH_MOVE)
-            QC__TRY(ring_done(s));
         cur = shape->pt[k++];
         QC__TRY(cur_push(s, cur));
     }
@@ -268,7 +293,7 @@ static int region_shape(void *ud, const qc_path *shape, int closed, int evenodd)
     if (s->rings.n == 0)
         return QC_OK;
     QC__TRY(QC__RESERVE(s->ctx, s->keep, s->keep_cap, s->rings.n));
-    if (evenodd || s->rings.n == 1)
+    if ((flags & QC__SVG_EVENODD) || s->rings.n == 1)
         memset(s->keep, 1, s->rings.n);
     else
         QC__TRY(nonzero_filter(s));
@@ -295,9 +320,9 @@ int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg
     rc = qc__svg_walk(ctx, buf, len, region_shape, &s);
     if (rc >= 0 && out->nrings == 0)
         rc = qc__fail(ctx, QC_EEMPTY,
-                      "svg: no closed shape with an area (%lu open polyline or line shapes "
-                      "ignored)",
-                      (unsigned long)s.open_shapes);
+                      "svg: no closed shape with an area (ignored: %lu polyline or line "
+                      "shapes, %lu unclosed subpaths with fill:none)",
+                      (unsigned long)s.open_shapes, (unsigned long)s.stroke_only);
     qc_points_free(ctx, &s.flat);
     qc__free(ctx, s.rings.v, s.rings.v_cap * sizeof *s.rings.v);
     qc__free(ctx, s.rings.end, s.rings.end_cap * sizeof *s.rings.end);
@@ -317,12 +342,11 @@ typedef struct path_sink {
     qc_path *out;
 } path_sink;
 
-static int path_shape(void *ud, const qc_path *shape, int closed, int evenodd)
+static int path_shape(void *ud, const qc_path *shape, unsigned flags)
 {
     path_sink *s = (path_sink *)ud;
 
-    (void)closed;
-    (void)evenodd;
+    (void)flags;
     if (s->out->npt + shape->npt > QC_MAX_POINTS)
         return qc__fail(s->ctx, QC_ELIMIT, "svg: the path has more than %lu points",
                         (unsigned long)QC_MAX_POINTS);

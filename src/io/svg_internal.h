@@ -159,11 +159,15 @@ QC__HIDDEN int qc__svg_nested_viewport(const qc__svg_where *w, const qc__xml *x,
 
 /* ---- document walk (svg_shapes.c) ---- */
 
+/* How a shape is drawn: it has an inside (path, rect, circle, ellipse,
+ * polygon; not polyline, line), its fill-rule is evenodd, its fill is not
+ * none (fill and fill-rule are inherited; style wins over attributes). */
+enum { QC__SVG_CLOSED = 1, QC__SVG_EVENODD = 2, QC__SVG_FILLED = 4 };
+
 /* Receives each shape in document order: its path in mm, y up (already
- * transformed, coordinates checked); closed != 0 for shapes with an
- * inside (path, rect, circle, ellipse, polygon), evenodd for its fill-rule.
- * A negative return stops the walk. */
-typedef int (*qc__svg_shape_fn)(void *ud, const qc_path *shape, int closed, int evenodd);
+ * transformed, coordinates checked) and its QC__SVG_* flags. A negative
+ * return stops the walk. */
+typedef int (*qc__svg_shape_fn)(void *ud, const qc_path *shape, unsigned flags);
 
 /* Parses the document and hands every visible shape to fn. Errors: those
  * of the tokenizer and parsers, QC_ERANGE for a coordinate beyond 1e6 mm

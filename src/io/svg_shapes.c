@@ -5,7 +5,8 @@
  * order. Not drawn and skipped with their whole subtree: display:none,
  * defs, symbol, clipPath, mask, marker, pattern, text, use, image and every
  * other element, and elements outside the SVG namespace (sodipodi:namedview,
- * metadata). fill-rule is inherited (attribute or style, style wins).
+ * metadata). fill and fill-rule are inherited (attribute or style, style
+ * wins).
  */
 #include <math.h>
 #include <string.h>
@@ -15,6 +16,7 @@
 typedef struct frame {
     qc__svg_mat m; /* this element's user units -> mm, y up */
     int evenodd;
+    int unfilled;  /* fill:none */
     int skip;      /* this element and its subtree draw nothing */
 } frame;
 
@@ -447,7 +449,9 @@ static int emit(walker *k, const frame *f, int closed)
                             k->w.line, k->w.elem, p.x, p.y, QC__SVG_MAX_MM);
         k->shape.pt[i] = p;
     }
-    return k->fn(k->ud, &k->shape, closed, f->evenodd);
+    return k->fn(k->ud, &k->shape,
+                 (closed ? QC__SVG_CLOSED : 0u) | (f->evenodd ? QC__SVG_EVENODD : 0u) |
+                     (f->unfilled ? 0u : QC__SVG_FILLED));
 }
 
 static int open_element(walker *k)
@@ -472,6 +476,7 @@ static int open_element(walker *k)
                             k->w.line, (int)(k->x.name_len > 40 ? 40 : k->x.name_len), k->x.name);
         f->skip = 0;
         f->evenodd = 0;
+        f->unfilled = 0;
         QC__TRY(qc__svg_root_viewport(&k->w, &k->x, &f->m, &k->vp_w, &k->vp_h));
     } else if (parent->skip || !k->x.svg || !(is_container(k) || is_shape(k))) {
         f->skip = 1;
@@ -498,6 +503,8 @@ static int open_element(walker *k)
         else if (value_is(v, vn, "nonzero"))
             f->evenodd = 0;
     }
+    if (property(k, "fill", &v, &vn) && !value_is(v, vn, "inherit"))
+        f->unfilled = value_is(v, vn, "none");
     if (!is_shape(k))
         return QC_OK;
     f->skip = 1; /* children of a shape draw nothing */
