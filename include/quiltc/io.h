@@ -83,13 +83,17 @@ typedef struct qc_svg_opts {
 } qc_svg_opts;
 
 /*
- * Reads the closed shapes of an SVG document as a region in mm, y up (the
- * SVG's y axis is flipped), holes from each shape's fill-rule. Supports
+ * Reads the closed shapes of an SVG document as a region in mm, y up
+ * (y_mm = page height - y, so the page's bottom-left corner is (0, 0)),
+ * holes from each shape's fill-rule (evenodd keeps every ring; nonzero keeps
+ * a ring only where the fill changes across it). Shapes with fill:none are
+ * strokes and left out. Supports
  * path (all commands, arcs), rect (rounded), circle, ellipse, polygon,
  * polyline, transform and nested g, viewBox with width/height in mm, cm, in,
  * pt, px. Not normalized: call qc_region_normalize. Errors: QC_EFORMAT
  * (malformed XML or path data; the message says where), QC_EEMPTY (no
- * closed shape), QC_ERANGE (NaN/inf/huge numbers), QC_ELIMIT (too large).
+ * closed shape), QC_ERANGE (NaN/inf/huge numbers), QC_ELIMIT (too large),
+ * QC_EINVAL (bad options), QC_ENOMEM.
  */
 int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len,
                           const qc_svg_opts *opts, qc_region *out);
