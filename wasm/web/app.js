@@ -1,16 +1,28 @@
 // The page: controls built from the library's parameter table, generation in
-// a Web Worker, an SVG preview to scale with a ruler, a sew animation and
-// downloads that are byte-identical to the quiltc CLI's.
+// a Web Worker (worker.js), an SVG preview to scale with a ruler, a sew
+// animation, and downloads byte-identical to `quiltc generate` with the same
+// settings (the equivalent command line is shown under the stats).
+// Test hooks: body[data-state] is loading | busy | ready | error;
+// #preview[data-generation] counts drawn results; 'quiltc:drawn' and
+// 'quiltc:error' events fire on document.
 const $ = (id) => document.getElementById(id);
-const FORMATS = ['pat', 'qli', 'dxf', 'plt', 'qcc', 'iqp', 'bqm', 'gcode', 'svg'];
-const FAMILY_IGNORES = new Set(['family', 'seed', 'points', 'start-x', 'start-y', 'tsp-time']);
-const worker = new Worker('worker.js', { type: 'module' });
+const FORMATS = [
+  ['pat', 'pat', 'Innova AutoPilot'], ['qli', 'qli', 'Statler Stitcher'], ['bqm', 'bqm', 'Bernina Q-matic'],
+  ['iqp', 'iqp', 'IntelliQuilter'], ['qcc', 'qcc', 'QuiltEZ'], ['plt', 'plt', 'HPGL plotters'],
+  ['dxf', 'dxf', 'CAD / most long-arm software'], ['gcode', 'gcode', 'G-code (mm)'], ['svg', 'svg', 'drawing'],
+];
+const HIDDEN_ROWS = new Set(['family', 'seed']);
+const MM_PER = { in: 25.4, mm: 1 };
+
+const worker = new Worker(new URL('worker.js', import.meta.url), { type: 'module' });
 let table = [];
-let regionSvg = null;
-let motifSvg = null;
-let pending = 0;
+let regionSvg = null; // { name, text }
+let motifSvg = null; // { name, svg }
 let latest = null;
 let requestId = 0;
+let busy = false;
+let dirty = false;
+let generation = 0;
 const waiting = new Map();
 
 function send(msg) {
@@ -26,8 +38,13 @@ worker.onmessage = (e) => {
     $('version').textContent = `library ${m.version}`;
     buildFamilies();
     buildParams();
+    buildMotifs(m.motifs);
     buildDownloads();
     regenerate();
+    return;
+  }
+  if (m.type === 'fatal') {
+    fail(m.message);
     return;
   }
   const w = waiting.get(m.id);
@@ -35,27 +52,35 @@ worker.onmessage = (e) => {
   waiting.delete(m.id);
   if (m.type === 'error') w.reject(new Error(m.message)); else w.resolve(m);
 };
+worker.onerror = (e) => { e.preventDefault(); fail(`the generator stopped: ${e.message || 'worker error'}`); };
+window.addEventListener('error', (e) => showError(`page error: ${e.message}`));
+window.addEventListener('unhandledrejection', (e) => showError(`page error: ${e.reason?.message || e.reason}`));
 
 const units = () => $('units').value;
-const mmPerUnit = () => (units() === 'mm' ? 1 : 25.4);
+const mmPerUnit = () => MM_PER[units()];
+const fmt = (v, digits = 6) => String(+Number(v).toPrecision(digits));
+const familyRow = () => table.find((r) => r.name === 'family');
+const familyBit = () => 2 ** (familyRow().choices.split('|').indexOf($('family').value) + 1);
 
 function buildFamilies() {
-  const fam = table.find((r) => r.name === 'family');
-  const names = fam.choices.split('|');
-  $('family').innerHTML = names.map((n, i) => `<option value="${n}"${i + 1 === fam.def ? ' selected' : ''}>${n}</option>`).join('');
+  const fam = familyRow();
+  $('family').innerHTML = fam.choices.split('|')
+    .map((n, i) => `<option value="${n}"${i + 1 === fam.def ? ' selected' : ''}>${n}</option>`).join('');
 }
 
-function familyBit() { return 1 << ($('family').selectedIndex + 1); }
+function unitLabel(row) {
+  if (row.type === 'length') return units();
+  return row.unit === 'count' || row.unit === 'ratio' ? '' : row.unit;
+}
 
-// One control per parameter of the chosen family: ranges and defaults in the page's units.
+// One control per parameter row of the chosen family: ranges and defaults in the page's units.
 function buildParams() {
   const box = $('params');
   const keep = {};
   for (const el of box.querySelectorAll('[data-param]')) keep[el.dataset.param] = el.value;
   box.innerHTML = '';
   for (const row of table) {
-    if (FAMILY_IGNORES.has(row.name) && row.name !== 'points') continue;
-    if (!(row.families & familyBit())) continue;
+    if (HIDDEN_ROWS.has(row.name) || !(row.families & familyBit())) continue;
     const label = document.createElement('label');
     label.className = 'param';
     label.title = row.help;
@@ -63,155 +88,337 @@ function buildParams() {
     if (row.type === 'enum') {
       input = document.createElement('select');
       const choices = row.choices.split('|').filter((c) => c !== 'given');
-      input.innerHTML = `<option value="">default</option>` + choices.map((c) => `<option>${c}</option>`).join('');
+      const def = row.def ? row.choices.split('|')[row.def - 1] : 'default';
+      input.innerHTML = `<option value="">${def === 'default' ? 'default' : `default (${def})`}</option>` +
+        choices.map((c) => `<option value="${c}">${c}</option>`).join('');
     } else {
       input = document.createElement('input');
       input.type = 'number';
+      input.inputMode = 'decimal';
       const scale = row.type === 'length' ? mmPerUnit() : 1;
-      input.min = +(row.min / scale).toPrecision(6);
-      input.max = +(row.max / scale).toPrecision(6);
-      input.step = row.type === 'int' ? 1 : 'any';
-      input.placeholder = row.def_per_spacing ? `${row.def_per_spacing} x spacing` : +(row.def / scale).toPrecision(6);
+      input.min = fmt(row.min / scale, 4);
+      input.max = fmt(row.max / scale, 4);
+      input.step = row.type === 'int' ? '1' : 'any';
+      // a help text naming its own defaults ("default d/5; stipple d/3") is the better hint
+      input.placeholder = /\(default/.test(row.help) ? 'default'
+        : row.def_per_spacing ? `${row.def_per_spacing} × spacing` : fmt(row.def / scale, 4);
     }
     input.dataset.param = row.name;
+    input.setAttribute('aria-label', row.name);
     if (keep[row.name] !== undefined) input.value = keep[row.name];
-    input.addEventListener('input', regenerateSoon);
-    label.append(`${row.name}${row.unit && row.type !== 'length' ? ` (${row.unit})` : row.type === 'length' ? ` (${units()})` : ''} `, input);
+    input.addEventListener(row.type === 'enum' ? 'change' : 'input', regenerateSoon);
+    const unit = unitLabel(row);
+    label.append(`${row.name}${unit ? ` (${unit})` : ''}`, input);
     box.append(label);
   }
+  $('motifBox').hidden = !(sizeRowFamilies() & familyBit());
 }
 
+// Motif families: those the 'size' row applies to.
+function sizeRowFamilies() { return table.find((r) => r.name === 'size')?.families || 0; }
+
+function buildMotifs(names) {
+  $('motifList').innerHTML = names.map((n) =>
+    `<label class="check"><input type="checkbox" value="${n}"> ${n}</label>`).join('');
+  for (const c of $('motifList').querySelectorAll('input')) c.addEventListener('change', regenerateSoon);
+}
+
+function regionSpec() {
+  const w = $('shapeW').value.trim();
+  const shape = $('shape').value;
+  return shape === 'rect' ? `rect:${w}x${$('shapeH').value.trim()}` : `${shape}:${w}`;
+}
+
+// The settings for the worker; throws on a field that is not a number.
 function settings() {
   const params = { family: $('family').value };
   for (const el of $('params').querySelectorAll('[data-param]')) {
-    if (el.value !== '') params[el.dataset.param] = el.tagName === 'SELECT' ? el.value : Number(el.value);
+    if (el.validity?.badInput) throw new Error(`${el.dataset.param}: not a number`);
+    if (el.value.trim() !== '') params[el.dataset.param] = el.value.trim();
   }
-  const region = regionSvg !== null ? { svg: regionSvg }
-    : { shape: $('shape').value === 'rect' ? `rect:${$('shapeSize').value}x${$('shapeSize').value}` : `${$('shape').value}:${$('shapeSize').value}` };
-  const s = { type: 'generate', units: units(), region, params, seed: $('seed').value || '0' };
-  if ($('motifs').value.trim()) s.motifs = $('motifs').value.trim();
-  if (motifSvg) s.motifSvg = motifSvg;
-  return s;
+  for (const id of ['shapeW', 'shapeH', 'tie']) {
+    if ($(id).validity.badInput || $(id).value.trim() === '') {
+      if (id !== 'shapeH' || $('shape').value === 'rect') throw new Error(`${$(id).closest('label').firstChild.textContent.trim()}: enter a number`);
+    }
+  }
+  const motifs = [];
+  if (sizeRowFamilies() & familyBit()) { // only the motif families take motifs
+    motifs.push(...[...$('motifList').querySelectorAll('input:checked')].map((c) => c.value));
+    if (motifSvg) motifs.push(motifSvg);
+  }
+  const tie = Number($('tie').value);
+  if (!Number.isInteger(tie) || tie < 0 || tie > 100) throw new Error(`tie-off stitches: ${$('tie').value} is not a count from 0 to 100`);
+  return {
+    type: 'generate',
+    units: units(),
+    region: regionSvg ? { svg: regionSvg.text, name: regionSvg.name } : { shape: regionSpec() },
+    params,
+    seed: $('seed').value.trim() || '0',
+    motifs,
+    tie,
+  };
 }
+
+// The same settings as a quiltc command line.
+function commandLine(s) {
+  const q = (v) => (/^[\w.,:/+-]+$/.test(v) ? v : `'${v.replace(/'/g, "'\\''")}'`);
+  const a = ['quiltc', 'generate', '--region', q(regionSvg ? regionSvg.name : s.region.shape), '--units', s.units];
+  for (const [k, v] of Object.entries(s.params)) a.push(`--${k}`, q(String(v)));
+  a.push('--seed', s.seed);
+  if (s.motifs.length) a.push('--motif', q(s.motifs.map((m) => (typeof m === 'string' ? m : m.name)).join(',')));
+  if (s.tie) a.push('--tie', String(s.tie));
+  a.push('-o', 'pattern.pat');
+  return a.join(' ');
+}
+
+function setState(state) { document.body.dataset.state = state; }
 
 function showError(message) {
   $('error').hidden = !message;
   $('error').textContent = message || '';
+  if (message) $('error').dataset.count = Number($('error').dataset.count || 0) + 1;
+  if (message) document.dispatchEvent(new CustomEvent('quiltc:error', { detail: message }));
+}
+
+function fail(message) {
+  setState('error');
+  showError(message);
 }
 
 let timer = null;
-function regenerateSoon() { clearTimeout(timer); timer = setTimeout(regenerate, 60); }
+function regenerateSoon() { clearTimeout(timer); timer = setTimeout(regenerate, 50); }
 
+// One generation in flight; changes made meanwhile trigger one more when it ends.
 async function regenerate() {
-  const mine = ++pending;
+  if (!table.length) return;
+  if (busy) {
+    dirty = true;
+    return;
+  }
+  let s;
   try {
-    const r = await send(settings());
-    if (mine !== pending) return; // a newer request is on its way
-    latest = r;
-    showError('');
-    draw(r);
-    showStats(r);
+    s = settings();
   } catch (err) {
-    if (mine === pending) showError(err.message);
+    fail(err.message);
+    return;
+  }
+  busy = true;
+  dirty = false;
+  setState('busy');
+  const t0 = performance.now();
+  try {
+    const r = await send(s);
+    r.settings = s;
+    const t1 = performance.now();
+    draw(r);
+    latest = r;
+    r.drawMs = performance.now() - t1;
+    r.totalMs = performance.now() - t0;
+    showStats(r);
+    $('cli').textContent = commandLine(s);
+    showError('');
+    setState('ready');
+    document.dispatchEvent(new CustomEvent('quiltc:drawn', { detail: { ms: r.ms, drawMs: r.drawMs, totalMs: r.totalMs, stats: r.stats } }));
+  } catch (err) {
+    fail(err.message); // the last good preview stays on screen under the message
+  } finally {
+    busy = false;
+    if (dirty) regenerate();
   }
 }
 
-function pathData(xy, flags, count) {
-  let d = '';
-  for (let i = 0; i < count; i++) {
-    d += `${flags[i] & 1 ? 'M' : 'L'}${xy[2 * i].toFixed(2)} ${xy[2 * i + 1].toFixed(2)}`;
+function pathData(xy, flags) {
+  const n = flags.length;
+  const parts = new Array(n);
+  for (let i = 0; i < n; i++) {
+    parts[i] = `${flags[i] & 1 ? 'M' : 'L'}${xy[2 * i].toFixed(2)} ${xy[2 * i + 1].toFixed(2)}`;
   }
-  return d;
+  return parts.join('');
 }
 
-function ruler(w, h) {
-  const step = units() === 'mm' ? 10 : 25.4;
-  let ticks = '';
-  for (let x = 0, k = 0; x <= w + 1e-6; x += step, k++) {
-    ticks += `<line x1="${x}" y1="0" x2="${x}" y2="${k % 5 ? -2 : -4}"/>`;
-    if (units() === 'in' || k % 5 === 0) ticks += `<text x="${x}" y="-5" transform="scale(1 -1)" text-anchor="middle">${units() === 'mm' ? k * 10 : k}</text>`;
+// Ticks every inch (quarters) or every 10 mm (5 mm) along the bottom and left edges.
+function ruler(w, h, size) {
+  const mm = mmPerUnit();
+  const major = units() === 'mm' ? 10 : 25.4;
+  const minor = units() === 'mm' ? 5 : 6.35;
+  const every = Math.max(1, Math.ceil((size / major) / 12)); // at most ~12 labels
+  const t = size / 60;
+  const fs = size / 38;
+  let g = '';
+  const label = (x, y, text, anchor) =>
+    `<text transform="translate(${x.toFixed(2)} ${y.toFixed(2)}) scale(1 -1)" text-anchor="${anchor}">${text}</text>`;
+  for (let k = 0; k * minor <= w + 1e-6; k++) {
+    const x = k * minor;
+    const isMajor = Math.abs(x / major - Math.round(x / major)) < 1e-9;
+    g += `<line x1="${x.toFixed(2)}" y1="0" x2="${x.toFixed(2)}" y2="${-(isMajor ? 2 : 1) * t}"/>`;
+    if (isMajor && Math.round(x / major) % every === 0) g += label(x, -2 * t - fs, fmt(x / mm, 4), 'middle');
   }
-  for (let y = 0, k = 0; y <= h + 1e-6; y += step, k++) ticks += `<line x1="0" y1="${y}" x2="${k % 5 ? -2 : -4}" y2="${y}"/>`;
-  return `<g class="ruler" stroke="#888" stroke-width="0.3" font-size="3.5" fill="#666">${ticks}</g>`;
+  for (let k = 0; k * minor <= h + 1e-6; k++) {
+    const y = k * minor;
+    const isMajor = Math.abs(y / major - Math.round(y / major)) < 1e-9;
+    g += `<line x1="0" y1="${y.toFixed(2)}" x2="${-(isMajor ? 2 : 1) * t}" y2="${y.toFixed(2)}"/>`;
+    if (isMajor && Math.round(y / major) % every === 0 && y > 0) g += label(-2.4 * t, y - fs / 3, fmt(y / mm, 4), 'end');
+  }
+  g += label(-2.4 * t, -2 * t - fs, units(), 'end');
+  return `<g class="ruler" font-size="${fs.toFixed(2)}">${g}</g>`;
 }
 
 function draw(r) {
-  let w = 0, h = 0;
+  let w = 0;
+  let h = 0;
   for (const ring of r.rings) for (const [x, y] of ring) { w = Math.max(w, x); h = Math.max(h, y); }
-  const pad = Math.max(w, h) * 0.06 + 4;
+  const size = Math.max(w, h, 1);
+  const padL = size * 0.09;
+  const pad = size * 0.03;
   const svg = $('preview');
-  svg.setAttribute('viewBox', `${-pad} ${-pad} ${w + 2 * pad} ${h + 2 * pad}`);
-  const regionD = r.rings.map((ring) => 'M' + ring.map(([x, y]) => `${x.toFixed(2)} ${y.toFixed(2)}`).join('L') + 'Z').join('');
-  const n = r.xy.length / 2;
-  svg.innerHTML = `<g transform="translate(0 ${h}) scale(1 -1)">${ruler(w, h)}
-    <path id="regionPath" d="${regionD}" fill="#fff" stroke="#1d3557" stroke-width="0.5" fill-rule="evenodd"/>
-    <path id="stitchPath" d="${pathData(r.xy, r.flags, n)}" fill="none" stroke="#c1121f" stroke-width="0.35" stroke-linejoin="round"/>
-    <path id="sewPath" d="" fill="none" stroke="#2a9d8f" stroke-width="0.6"/></g>`;
-  svg.dataset.points = n;
+  svg.setAttribute('viewBox', `${(-padL).toFixed(2)} ${(-pad).toFixed(2)} ${(w + padL + pad).toFixed(2)} ${(h + padL + pad).toFixed(2)}`);
+  const regionD = r.rings.map((ring) => `M${ring.map(([x, y]) => `${x.toFixed(2)} ${y.toFixed(2)}`).join('L')}Z`).join('');
+  const d = pathData(r.xy, r.flags);
+  svg.innerHTML = `<g transform="translate(0 ${h.toFixed(2)}) scale(1 -1)">${ruler(w, h, size)}
+    <path id="regionPath" d="${regionD}" fill-rule="evenodd"/>
+    <path id="stitchPath" d="${d}"/>
+    <path id="sewPath" d="${d}" stroke-width="${(size / 250).toFixed(3)}" visibility="hidden"/>
+    <circle id="needle" r="${(size / 120).toFixed(2)}" visibility="hidden"/></g>`;
+  svg.dataset.points = r.flags.length;
+  svg.dataset.generation = ++generation;
+  stopSew();
+  prepareSew(r);
 }
 
 function showStats(r) {
   const s = r.stats;
-  const len = units() === 'mm' ? `${s.path_length_mm.toFixed(0)} mm` : `${(s.path_length_mm / 25.4).toFixed(1)} in`;
+  const inch = units() === 'in';
+  const len = inch ? `${(s.path_length_mm / 25.4).toFixed(1)} in` : `${(s.path_length_mm / 1000).toFixed(2)} m`;
+  const thread = inch ? `${(s.thread_mm / 914.4).toFixed(1)} yd` : `${(s.thread_mm / 1000).toFixed(1)} m`;
+  const min = Math.floor(s.sew_seconds / 60);
   const rows = [
-    ['points', s.points], ['path length', len], ['stitches (12 SPI)', s.stitches],
-    ['thread', `${(s.thread_mm / 914.4).toFixed(1)} yd`], ['sewing time', `${(s.sew_seconds / 60).toFixed(1)} min`],
-    ['pieces', s.pieces], ['generation', `${r.ms.toFixed(1)} ms`],
+    ['points', s.points], ['path length', len], ['stitches (12 per inch)', s.stitches.toLocaleString('en')],
+    ['thread', thread], ['sewing time', `${min} min ${Math.round(s.sew_seconds - 60 * min)} s`],
+    ['pieces', s.pieces], ['generation', `${r.ms.toFixed(0)} ms`],
   ];
   if (s.motifs_placed) rows.push(['motifs placed', s.motifs_placed]);
   if (s.pebbles) rows.push(['pebbles', s.pebbles]);
-  $('stats').innerHTML = rows.map(([k, v]) => `<dt>${k}</dt><dd data-stat="${k}">${v}</dd>`).join('');
+  if (s.largest_gap_mm) rows.push(['largest gap', inch ? `${(s.largest_gap_mm / 25.4).toFixed(2)} in` : `${s.largest_gap_mm.toFixed(1)} mm`]);
+  $('stats').innerHTML = rows.map(([k, v]) => `<div><dt>${k}</dt><dd data-stat="${k}">${v}</dd></div>`).join('');
 }
 
 function buildDownloads() {
-  $('downloads').innerHTML = FORMATS.map((f) => `<button type="button" data-format="${f}">.${f}</button>`).join('');
-  for (const b of $('downloads').querySelectorAll('button')) {
-    b.addEventListener('click', async () => {
-      try {
-        const r = await send({ type: 'export', format: b.dataset.format });
-        const url = URL.createObjectURL(new Blob([r.bytes], { type: 'application/octet-stream' }));
-        const a = document.createElement('a');
-        a.href = url;
-        a.download = `pattern.${r.format}`;
-        document.body.append(a);
-        a.click();
-        a.remove();
-        setTimeout(() => URL.revokeObjectURL(url), 1000);
-      } catch (err) {
-        showError(err.message);
-      }
-    });
+  $('downloads').innerHTML = FORMATS.map(([f, ext, what]) =>
+    `<button type="button" data-format="${f}" data-ext="${ext}" title="${what}">.${ext}</button>`).join('');
+  for (const b of $('downloads').querySelectorAll('button')) b.addEventListener('click', () => download(b));
+}
+
+async function download(button) {
+  try {
+    if (busy || dirty) throw new Error('the preview is still being generated; try again in a moment');
+    if (!latest) throw new Error('nothing to download yet');
+    const r = await send({ type: 'export', format: button.dataset.format });
+    const s = latest.settings;
+    const name = `quiltc-${s.params.family}-${s.seed}.${button.dataset.ext}`;
+    const url = URL.createObjectURL(new Blob([r.bytes], { type: 'application/octet-stream' }));
+    const a = document.createElement('a');
+    a.href = url;
+    a.download = name;
+    document.body.append(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 10000);
+  } catch (err) {
+    showError(err.message);
   }
 }
 
-// Sew: trace the path in stitching order.
-let sewing = null;
-$('sewBtn').addEventListener('click', () => {
-  if (!latest) return;
-  cancelAnimationFrame(sewing);
-  const n = latest.xy.length / 2;
-  let shown = 0;
-  const step = () => {
-    shown = Math.min(n, shown + Math.max(1, Math.round(n * $('sewSpeed').value / 6000)));
-    $('sewPath').setAttribute('d', pathData(latest.xy, latest.flags, shown));
-    $('sewBtn').dataset.progress = shown;
-    if (shown < n) sewing = requestAnimationFrame(step); else $('sewBtn').dataset.done = '1';
-  };
-  delete $('sewBtn').dataset.done;
-  step();
-});
+// ---- sew: the path traced in stitching order at a chosen multiple of real sewing speed ----
+let sew = null;
 
+function prepareSew(r) {
+  const n = r.flags.length;
+  const cum = new Float64Array(n);
+  for (let i = 1; i < n; i++) {
+    const d = r.flags[i] & 1 ? 0 : Math.hypot(r.xy[2 * i] - r.xy[2 * i - 2], r.xy[2 * i + 1] - r.xy[2 * i - 1]);
+    cum[i] = cum[i - 1] + d;
+  }
+  const total = cum[n - 1] || 1;
+  const p = $('sewPath');
+  p.setAttribute('pathLength', total.toFixed(3));
+  p.setAttribute('stroke-dasharray', `${total.toFixed(3)} ${total.toFixed(3)}`);
+  sew = { r, cum, total, sewn: 0, frame: 0, last: 0 };
+}
+
+const speedFactor = () => 10 ** ($('sewSpeed').value / 25); // 1x .. 10000x real time
+function showSpeed() { $('sewSpeedLabel').textContent = `×${fmt(speedFactor(), 2)}`; }
+
+function stopSew() {
+  if (sew && sew.frame) cancelAnimationFrame(sew.frame);
+  if (sew) sew.frame = 0;
+  $('sewBtn').textContent = 'Sew';
+}
+
+function sewFrame(now) {
+  const dt = Math.min(0.1, (now - sew.last) / 1000);
+  sew.last = now;
+  sew.sewn = Math.min(sew.total, sew.sewn + dt * 25.4 * speedFactor());
+  showSewn();
+  if (sew.sewn < sew.total) {
+    sew.frame = requestAnimationFrame(sewFrame);
+  } else {
+    sew.frame = 0;
+    $('sewBtn').textContent = 'Sew';
+    $('sewBtn').dataset.done = '1';
+  }
+}
+
+function showSewn() {
+  const { r, cum, total, sewn } = sew;
+  $('sewPath').setAttribute('stroke-dashoffset', (total - sewn).toFixed(3));
+  let lo = 0;
+  let hi = cum.length - 1;
+  while (lo < hi) { const mid = (lo + hi + 1) >> 1; if (cum[mid] <= sewn) lo = mid; else hi = mid - 1; }
+  const i = lo;
+  const j = Math.min(i + 1, cum.length - 1);
+  const f = cum[j] > cum[i] ? (sewn - cum[i]) / (cum[j] - cum[i]) : 0;
+  const needle = $('needle');
+  needle.setAttribute('cx', (r.xy[2 * i] + f * (r.xy[2 * j] - r.xy[2 * i])).toFixed(2));
+  needle.setAttribute('cy', (r.xy[2 * i + 1] + f * (r.xy[2 * j + 1] - r.xy[2 * i + 1])).toFixed(2));
+  $('sewBtn').dataset.progress = (sewn / total).toFixed(4);
+}
+
+$('sewBtn').addEventListener('click', () => {
+  if (!sew) return;
+  if (sew.frame) { stopSew(); return; }
+  if (sew.sewn >= sew.total) sew.sewn = 0;
+  delete $('sewBtn').dataset.done;
+  $('sewPath').setAttribute('visibility', 'visible');
+  $('needle').setAttribute('visibility', 'visible');
+  $('sewBtn').textContent = 'Stop';
+  sew.last = performance.now();
+  sew.frame = requestAnimationFrame(sewFrame);
+});
+$('sewSpeed').addEventListener('input', showSpeed);
+showSpeed();
+
+// ---- region and motif files ----
 async function readRegionFile(file) {
-  regionSvg = await file.text();
+  regionSvg = { name: file.name, text: await file.text() };
   $('shape').querySelector('[value=svg]').disabled = false;
   $('shape').value = 'svg';
+  shapeFields();
   regenerate();
+}
+
+function shapeFields() {
+  const shape = $('shape').value;
+  $('sizeW').hidden = shape === 'svg';
+  $('sizeH').hidden = shape !== 'rect';
+  $('sizeW').firstChild.textContent = shape === 'rect' ? 'Width ' : 'Size ';
+  $('regionName').textContent = regionSvg && shape === 'svg' ? regionSvg.name : '';
 }
 
 $('regionFile').addEventListener('change', (e) => e.target.files[0] && readRegionFile(e.target.files[0]));
 $('motifFile').addEventListener('change', async (e) => {
   const f = e.target.files[0];
-  motifSvg = f ? { text: await f.text(), name: f.name } : null;
+  motifSvg = f ? { name: f.name, svg: await f.text() } : null;
+  $('motifName').textContent = motifSvg ? motifSvg.name : '';
   regenerate();
 });
 const drop = $('drop');
@@ -223,19 +430,28 @@ drop.addEventListener('drop', (e) => {
   const f = e.dataTransfer.files[0];
   if (f) readRegionFile(f);
 });
-$('shape').addEventListener('change', () => { if ($('shape').value !== 'svg') regionSvg = null; regenerate(); });
-$('shapeSize').addEventListener('input', regenerateSoon);
+$('shape').addEventListener('change', () => {
+  if ($('shape').value !== 'svg') {
+    regionSvg = null;
+    $('regionFile').value = ''; // choosing the same file again reloads it
+  }
+  shapeFields();
+  regenerate();
+});
+for (const id of ['shapeW', 'shapeH', 'seed', 'tie']) $(id).addEventListener('input', regenerateSoon);
 $('units').addEventListener('change', () => {
   const f = units() === 'mm' ? 25.4 : 1 / 25.4;
-  $('shapeSize').value = +($('shapeSize').value * f).toPrecision(6);
+  for (const id of ['shapeW', 'shapeH']) if ($(id).value !== '') $(id).value = fmt($(id).value * f);
   for (const el of $('params').querySelectorAll('[data-param]')) {
     const row = table.find((r) => r.name === el.dataset.param);
-    if (row.type === 'length' && el.value !== '') el.value = +(el.value * f).toPrecision(6);
+    if (row.type === 'length' && el.value !== '') el.value = fmt(el.value * f);
   }
   buildParams();
   regenerate();
 });
 $('family').addEventListener('change', () => { buildParams(); regenerate(); });
-$('seed').addEventListener('input', regenerateSoon);
-$('motifs').addEventListener('change', regenerate);
-$('shuffle').addEventListener('click', () => { $('seed').value = Math.floor(Math.random() * 1e9); regenerate(); });
+$('shuffle').addEventListener('click', () => {
+  $('seed').value = String(Math.floor(Math.random() * 2 ** 32));
+  regenerate();
+});
+shapeFields();

@@ -52,11 +52,16 @@ export class Quiltc {
     this.withString(text, (p, n) => this.check(this.m._qcw_region_svg(this.job, p, n)));
   }
 
-  // settings.region: { shape: 'rect:8x8' } in settings.units, or { svg: text }.
+  // settings.region: { shape: 'rect:8x8' } in settings.units, or { svg: text, name }.
+  // Errors name the file or the shape, as the CLI's do.
   region(settings) {
     const r = settings.region || { shape: 'rect:8x8' };
-    if (r.svg !== undefined) this.regionSvg(r.svg);
-    else this.regionShape(r.shape, unitScale(settings.units));
+    try {
+      if (r.svg !== undefined) this.regionSvg(r.svg);
+      else this.regionShape(r.shape, unitScale(settings.units));
+    } catch (err) {
+      throw new Error(`${r.svg !== undefined ? r.name || 'SVG outline' : `region ${r.shape}`}: ${err.message}`);
+    }
   }
 
   // The region's rings as arrays of [x, y] in mm (views are fresh: memory may have grown).
@@ -126,8 +131,12 @@ export class Quiltc {
   }
 
   motifSvg(text, name) {
-    this.withString(name, (pn) =>
-      this.withString(text, (p, n) => this.check(this.m._qcw_motif_svg(this.job, p, n, pn))));
+    try {
+      this.withString(name, (pn) =>
+        this.withString(text, (p, n) => this.check(this.m._qcw_motif_svg(this.job, p, n, pn))));
+    } catch (err) {
+      throw new Error(`motif ${name}: ${err.message}`);
+    }
   }
 
   // Generates; returns { xy: Float64Array (mm, x,y pairs), flags: Uint8Array, stats }.
