@@ -15,7 +15,5 @@
                         family);                                              \
     }
 
-QC__STUB(qc_deco_pebbling, "pebbling")
-QC__STUB(qc_deco_packing, "packing")
 QC__STUB(qc_deco_echo, "echo")
 QC__STUB(qc_deco_spiral, "spiral")

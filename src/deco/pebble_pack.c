@@ -1,0 +1,938 @@
+/*
+ * Pebbling, phases 1 and 2 (paper §5.3.1). Phase 1 visits the skeleton in
+ * its order: each point gets the largest circle that touches no pebble
+ * placed before it (at most r_seed d), hanging from its parent's pebble;
+ * where that leaves a gap, a filler fills it (step 3), or the pebble slides
+ * towards its parent until it touches it. Phase 2 grows leaves away from
+ * their parent and pebbles touching two others along the two's common
+ * tangent circles, until they touch one more pebble or the boundary.
+ *
+ * Every growth keeps the pebble tangent to what it hangs from: a circle
+ * (x0 + u s, r0 + s) keeps the point x0 - u r0 and grows nested, so the
+ * first contact with a pebble or an edge has a closed form. Neighbours come
+ * from a uniform grid, so each query is O(1) and the whole run near-linear.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pebble_internal.h"
+
+#define R_MIN 0.1     /* smallest pebble, times d */
+#define GROW_MAX 1.5  /* phase 2 radius cap, times r_seed d */
+#define MOVE_MAX 1.0  /* phase 2: a pebble's centre moves at most this, times d */
+#define TOUCH 1e-6    /* pebbles this close (times d) touch */
+#define OVER_K 0.5    /* overgrow: a centre stays OVER_K r inside */
+#define ARG_BOUND 0xFFFFFFFEu
+
+typedef struct pack {
+    qc_ctx *ctx;
+    qc__pbound *b;
+    qc__pebbles *pb;
+    double x0, y0, h;  /* the pebble grid */
+    uint32_t nx, ny;
+    uint32_t *head;
+    uint32_t *next, *cellof; /* per pebble */
+    double rmax;       /* largest radius so far */
+    double d;
+} pack;
+
+void qc__pebbles_free(qc_ctx *ctx, qc__pebbles *pb)
+{
+    if (pb == NULL)
+        return;
+    qc__free(ctx, pb->c, pb->cap * sizeof *pb->c);
+    qc__free(ctx, pb->r, pb->cap * sizeof *pb->r);
+    qc__free(ctx, pb->parent, pb->cap * sizeof *pb->parent);
+    qc__free(ctx, pb->node, pb->cap * sizeof *pb->node);
+    qc__free(ctx, pb->flags, pb->cap * sizeof *pb->flags);
+    qc__free(ctx, pb->contacts, pb->cap * sizeof *pb->contacts);
+    qc__free(ctx, pb->motif, pb->n * sizeof *pb->motif);
+    qc__free(ctx, pb->xf, pb->n * sizeof *pb->xf);
+    memset(pb, 0, sizeof *pb);
+}
+
+static qc_vec2 v2(double x, double y)
+{
+    qc_vec2 p;
+    p.x = x;
+    p.y = y;
+    return p;
+}
+
+static double dist(qc_vec2 a, qc_vec2 b)
+{
+    double dx = a.x - b.x, dy = a.y - b.y;
+    return sqrt(dx * dx + dy * dy);
+}
+
+/* ---- the pebble grid ---- */
+
+static uint32_t clamp_cell(double c, uint32_t n)
+{
+    return !(c >= 0) ? 0 : c >= (double)(n - 1) ? n - 1 : (uint32_t)c;
+}
+
+static uint32_t cell_of(const pack *P, qc_vec2 p)
+{
+    return clamp_cell((p.y - P->y0) / P->h, P->ny) * P->nx +
+           clamp_cell((p.x - P->x0) / P->h, P->nx);
+}
+
+static void cell_box(const pack *P, qc_vec2 x, double reach, uint32_t r[4])
+{
+    r[0] = clamp_cell((x.x - reach - P->x0) / P->h, P->nx);
+    r[1] = clamp_cell((x.y - reach - P->y0) / P->h, P->ny);
+    r[2] = clamp_cell((x.x + reach - P->x0) / P->h, P->nx);
+    r[3] = clamp_cell((x.y + reach - P->y0) / P->h, P->ny);
+}
+
+static void grid_insert(pack *P, uint32_t i)
+{
+    uint32_t c = cell_of(P, P->pb->c[i]);
+
+    P->cellof[i] = c;
+    P->next[i] = P->head[c];
+    P->head[c] = i;
+}
+
+static void grid_remove(pack *P, uint32_t i)
+{
+    uint32_t *at = &P->head[P->cellof[i]];
+
+    while (*at != i)
+        at = &P->next[*at];
+    *at = P->next[i];
+}
+
+static uint32_t place(pack *P, qc_vec2 c, double r, uint32_t parent, uint32_t node,
+                      unsigned flags)
+{
+    qc__pebbles *pb = P->pb;
+    uint32_t i = (uint32_t)pb->n++;
+
+    pb->c[i] = c;
+    pb->r[i] = r;
+    pb->parent[i] = parent;
+    pb->node[i] = node;
+    pb->flags[i] = (unsigned char)flags;
+    pb->contacts[i] = 0;
+    if (r > P->rmax)
+        P->rmax = r;
+    grid_insert(P, i);
+    return i;
+}
+
+static void move_to(pack *P, uint32_t i, qc_vec2 c, double r)
+{
+    grid_remove(P, i);
+    P->pb->c[i] = c;
+    P->pb->r[i] = r;
+    if (r > P->rmax)
+        P->rmax = r;
+    grid_insert(P, i);
+}
+
+/* ---- queries ---- */
+
+/*
+ * Largest radius (at most cap) of a circle at x touching no pebble (but ex0,
+ * ex1, ex2) and keeping its centre k r from the boundary; *arg receives the
+ * pebble that limits it, ARG_BOUND or QC__PEB_NONE (cap).
+ */
+static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t ex1,
+                        uint32_t ex2, uint32_t *arg)
+{
+    const qc__pebbles *pb = P->pb;
+    double best = cap, db;
+    uint32_t r[4], cx, cy, a = QC__PEB_NONE;
+
+    cell_box(P, x, cap + P->rmax, r);
+    for (cy = r[1]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t j = P->head[cy * P->nx + cx];
+            for (; j != QC__PEB_NONE; j = P->next[j]) {
+                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
+                if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
+                    continue;
+                v = sqrt(dx * dx + dy * dy) - pb->r[j];
+                if (v < best) {
+                    best = v;
+                    a = j;
+                }
+            }
+        }
+    if (best > 0) {
+        db = qc__pbound_dist(P->b, x, pb->k * best) / pb->k;
+        if (db < best) {
+            best = db;
+            a = ARG_BOUND;
+        }
+    }
+    if (arg != NULL)
+        *arg = a;
+    return best;
+}
+
+/* The circle (x0 + u s, r0 + s): the largest s <= cap touching no pebble
+ * (but ex0, ex1) and keeping k (r0 + s) from the boundary. */
+static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_t ex0,
+                  uint32_t ex1)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 xf = v2(x0.x + u.x * cap, x0.y + u.y * cap);
+    double best = cap;
+    uint32_t r[4], cx, cy;
+
+    if (!(cap > 0))
+        return 0;
+    cell_box(P, xf, r0 + cap + P->rmax, r); /* the circles nest in the last one */
+    for (cy = r[1]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t j = P->head[cy * P->nx + cx];
+            for (; j != QC__PEB_NONE; j = P->next[j]) {
+                double ax, ay, bq, num, den;
+                if (j == ex0 || j == ex1)
+                    continue;
+                ax = x0.x - pb->c[j].x;
+                ay = x0.y - pb->c[j].y;
+                bq = pb->r[j] + r0;
+                num = ax * ax + ay * ay - bq * bq;
+                den = bq - (ax * u.x + ay * u.y);
+                if (num <= 0)
+                    return 0;
+                if (den > 0 && num / (2 * den) < best)
+                    best = num / (2 * den);
+            }
+        }
+    return qc__pbound_ray(P->b, x0, r0, u, best, pb->k);
+}
+
+/* Whether q lies on the same side of the boundary as p (p inside). */
+static int same_side(pack *P, qc_vec2 p, qc_vec2 q)
+{
+    return (qc__pbound_crossings(P->b, p, q) & 1) == 0;
+}
+
+/* The pebble whose edge is nearest x (growing square searches). */
+static uint32_t nearest(pack *P, qc_vec2 x)
+{
+    const qc__pebbles *pb = P->pb;
+    double reach = P->h, best = HUGE_VAL;
+    uint32_t a = QC__PEB_NONE;
+
+    for (;;) {
+        uint32_t r[4], cx, cy;
+        cell_box(P, x, reach, r);
+        for (cy = r[1]; cy <= r[3]; cy++)
+            for (cx = r[0]; cx <= r[2]; cx++) {
+                uint32_t j = P->head[cy * P->nx + cx];
+                for (; j != QC__PEB_NONE; j = P->next[j]) {
+                    double v = dist(x, pb->c[j]) - pb->r[j];
+                    if (v < best || (v == best && j < a)) {
+                        best = v;
+                        a = j;
+                    }
+                }
+            }
+        if ((a != QC__PEB_NONE && best <= reach - P->rmax) ||
+            (r[0] == 0 && r[1] == 0 && r[2] == P->nx - 1 && r[3] == P->ny - 1))
+            return a;
+        reach *= 2;
+    }
+}
+
+static qc_vec2 unit_from(qc_vec2 a, qc_vec2 b)
+{
+    double l = dist(a, b);
+    return l > 0 ? v2((b.x - a.x) / l, (b.y - a.y) / l) : v2(1, 0);
+}
+
+#define NEAR 6
+
+/* Up to NEAR pebbles whose edges lie within reach of x, nearest first. */
+static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
+{
+    const qc__pebbles *pb = P->pb;
+    double g[NEAR];
+    uint32_t r[4], cx, cy;
+    size_t n = 0;
+
+    cell_box(P, x, reach + P->rmax, r);
+    for (cy = r[1]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t j = P->head[cy * P->nx + cx];
+            for (; j != QC__PEB_NONE; j = P->next[j]) {
+                double v = dist(x, pb->c[j]) - pb->r[j];
+                size_t k;
+                if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
+                    continue;
+                k = n < NEAR ? n++ : NEAR - 1;
+                while (k > 0 && (g[k - 1] > v || (g[k - 1] == v && out[k - 1] > j))) {
+                    g[k] = g[k - 1];
+                    out[k] = out[k - 1];
+                    k--;
+                }
+                g[k] = v;
+                out[k] = j;
+            }
+        }
+    return n;
+}
+
+/* ---- phase 1: sizes, in the skeleton's order ---- */
+
+/* Skeleton point m (its parent's pebble a, or none): *anchor receives the
+ * pebble its children hang from. */
+static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *anchor)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 x = pts[m], u, x0;
+    double c, len, gap, s;
+    uint32_t q;
+
+    *anchor = a;
+    if (pb->n > 0 ? !same_side(P, pb->c[a != QC__PEB_NONE ? a : 0], x)
+                  : !qc_region_contains(P->b->region, x)) {
+        pb->dropped++; /* outside the region */
+        return;
+    }
+    c = clearance(P, x, pb->r_first, QC__PEB_NONE, QC__PEB_NONE, QC__PEB_NONE, &q);
+    if (pb->n == 0) { /* the root */
+        /* held in by the boundary: the small size of the r_seed pair, so
+         * its children still alternate r_seed d and (1 - r_seed) d */
+        if (c < pb->r_first)
+            c = fmin(c, fmax(pb->r_min, P->d - pb->r_first));
+        if (c >= pb->r_min)
+            *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
+        else
+            pb->dropped++;
+        return;
+    }
+    if (a == QC__PEB_NONE)
+        a = q < ARG_BOUND ? q : nearest(P, x);
+    if (c < pb->r_min) { /* covered already */
+        *anchor = q < ARG_BOUND ? q : a;
+        pb->dropped++;
+        return;
+    }
+    len = dist(x, pb->c[a]);
+    if (c < pb->r_first && len - pb->r_first >= pb->r_min && len - pb->r_first < c)
+        c = len - pb->r_first; /* held in: the small size of the pair, to keep alternating */
+    gap = len - pb->r[a] - c;
+    if (gap <= pb->touch) {
+        *anchor = place(P, x, c, a, m, 0);
+        return;
+    }
+    u = unit_from(pb->c[a], x);
+    x0 = v2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
+    if (pb->k < 1 && !same_side(P, pb->c[a], x0))
+        x0 = pb->c[a]; /* overgrown parent: no room on this side */
+    if (x0.x != pb->c[a].x || x0.y != pb->c[a].y) {
+        /* step 3: a filler tangent to both */
+        if (gap / 2 >= pb->r_min &&
+            ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
+            uint32_t f = place(P, v2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
+                               QC__PEB_NONE, QC__PEB_FILLER);
+            *anchor = place(P, x, c, f, m, 0);
+            return;
+        }
+        /* else slide towards the parent */
+        s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
+        if (s >= pb->r_min) {
+            *anchor = place(P, v2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
+            return;
+        }
+    }
+    /* or from one of the nearest other pebbles, the roomiest */
+    {
+        uint32_t near[NEAR], best = QC__PEB_NONE;
+        double bs = 0;
+        size_t k, nn = nearest_few(P, x, c + 2 * pb->r_first, near);
+        for (k = 0; k < nn; k++) {
+            uint32_t b = near[k];
+            if (b == a)
+                continue;
+            u = unit_from(pb->c[b], x);
+            x0 = v2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+            if (pb->k < 1 && !same_side(P, pb->c[b], x0))
+                continue;
+            s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
+            if (s > bs) {
+                bs = s;
+                best = b;
+            }
+        }
+        if (bs >= pb->r_min) {
+            u = unit_from(pb->c[best], x);
+            x0 = v2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
+            *anchor = place(P, v2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
+            return;
+        }
+        if (nn > 0) {
+            /* hemmed in by pebbles: left for phase 2 rather than crossed */
+            *anchor = near[0];
+            pb->dropped++;
+            return;
+        }
+    }
+    /* cut off from every pebble (another part of the region): a straight stitch */
+    *anchor = place(P, x, c, a, m, QC__PEB_BRIDGE);
+}
+
+static int phase1(pack *P, const qc_skeleton *skel)
+{
+    qc_ctx *ctx = P->ctx;
+    size_t n = skel->n, i;
+    uint32_t *anchor = qc__alloc_array(ctx, n, sizeof *anchor);
+    unsigned char *seen = qc__alloc(ctx, n);
+    int rc = QC_OK;
+
+    if (anchor == NULL || seen == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    memset(seen, 0, n);
+    for (i = 0; i < skel->norder; i++) {
+        uint32_t m = skel->order[i], par;
+        if (seen[m])
+            continue;
+        seen[m] = 1;
+        par = i > 0 ? anchor[skel->order[i - 1]] : QC__PEB_NONE;
+        visit(P, skel->p, m, par, &anchor[m]);
+    }
+    /* points the order missed: the root first, each from its nearest pebble */
+    for (i = 0; i <= n; i++) {
+        uint32_t m = i == 0 ? (skel->root < n ? skel->root : 0) : (uint32_t)(i - 1);
+        if (seen[m])
+            continue;
+        seen[m] = 1;
+        visit(P, skel->p, m, QC__PEB_NONE, &anchor[m]);
+    }
+out:
+    qc__free(ctx, anchor, n * sizeof *anchor);
+    qc__free(ctx, seen, n);
+    return rc;
+}
+
+/* ---- phase 2: growth ---- */
+
+/* Pebbles touching i (up to 3 ids into ids) and whether the boundary does. */
+static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 x = pb->c[i];
+    double ri = pb->r[i];
+    uint32_t r[4], cx, cy;
+    unsigned count = 0;
+
+    cell_box(P, x, ri + P->rmax + pb->touch, r);
+    for (cy = r[1]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t j = P->head[cy * P->nx + cx];
+            for (; j != QC__PEB_NONE; j = P->next[j]) {
+                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
+                if (j == i || dx * dx + dy * dy > far * far)
+                    continue;
+                if (count < 3)
+                    ids[count] = j;
+                count++;
+            }
+        }
+    *bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
+    return count;
+}
+
+/* The centre tangent to pebbles j and k at radius R on side s, or 0. */
+static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, double s,
+                       qc_vec2 *out)
+{
+    qc_vec2 cj = pb->c[j], ck = pb->c[k];
+    double D = dist(cj, ck), a = pb->r[j] + R, b = pb->r[k] + R, along, h2;
+    qc_vec2 e;
+
+    if (!(D > 0))
+        return 0;
+    e = v2((ck.x - cj.x) / D, (ck.y - cj.y) / D);
+    along = (D * D + a * a - b * b) / (2 * D);
+    h2 = a * a - along * along;
+    if (h2 < 0)
+        return 0;
+    h2 = sqrt(h2) * s;
+    *out = v2(cj.x + e.x * along - e.y * h2, cj.y + e.y * along + e.x * h2);
+    return 1;
+}
+
+static int pair_fits(pack *P, uint32_t i, uint32_t j, uint32_t k, double R, double s,
+                     qc_vec2 *at)
+{
+    const qc__pebbles *pb = P->pb;
+
+    if (!pair_centre(pb, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
+        return 0;
+    return clearance(P, *at, R, i, j, k, NULL) >= R;
+}
+
+/*
+ * The first R > r0 at which the circle tangent to j and k on side s (the
+ * sign of cross(ck - cj, centre - cj)) touches the circle (cq, rq): the
+ * three tangencies, differenced, are linear in the centre and R (the
+ * problem of Apollonius), leaving a quadratic in R. HUGE_VAL when it never
+ * does; -1 when the centres are collinear (not solved here).
+ */
+static double apollonius(const qc__pebbles *pb, uint32_t j, uint32_t k, qc_vec2 cq, double rq,
+                         double s, double r0)
+{
+    double rj = pb->r[j], rk = pb->r[k];
+    double ax = pb->c[k].x - pb->c[j].x, ay = pb->c[k].y - pb->c[j].y;
+    double bx = cq.x - pb->c[j].x, by = cq.y - pb->c[j].y;
+    double det = 4 * (ax * by - ay * bx), h0a, h0b, h1a, h1b, y0x, y0y, y1x, y1y;
+    double A, B, C, best = HUGE_VAL, root[2];
+    int nr = 0, m;
+
+    if (!(fabs(det) > 1e-9 * 4 * (ax * ax + ay * ay + bx * bx + by * by)))
+        return -1;
+    h0a = ax * ax + ay * ay + rj * rj - rk * rk;
+    h0b = bx * bx + by * by + rj * rj - rq * rq;
+    h1a = 2 * (rj - rk);
+    h1b = 2 * (rj - rq);
+    /* y = M^-1 h, M = 2 [a; b] */
+    y0x = (2 * by * h0a - 2 * ay * h0b) / det;
+    y0y = (-2 * bx * h0a + 2 * ax * h0b) / det;
+    y1x = (2 * by * h1a - 2 * ay * h1b) / det;
+    y1y = (-2 * bx * h1a + 2 * ax * h1b) / det;
+    A = y1x * y1x + y1y * y1y - 1;
+    B = 2 * (y0x * y1x + y0y * y1y - rj);
+    C = y0x * y0x + y0y * y0y - rj * rj;
+    if (fabs(A) < 1e-12) {
+        if (B != 0)
+            root[nr++] = -C / B;
+    } else {
+        double disc = B * B - 4 * A * C, q;
+        if (disc < 0)
+            return HUGE_VAL;
+        q = -0.5 * (B + (B < 0 ? -sqrt(disc) : sqrt(disc)));
+        if (q != 0) {
+            root[nr++] = q / A;
+            root[nr++] = C / q;
+        } else {
+            root[nr++] = 0;
+        }
+    }
+    for (m = 0; m < nr; m++) {
+        double R = root[m], yx = y0x + R * y1x, yy = y0y + R * y1y;
+        if (R > r0 * (1 + 1e-12) && R < best && (ax * yy - ay * yx) * s > 0)
+            best = R;
+    }
+    return best;
+}
+
+/* The radius at which the centre tangent to j and k has moved MOVE_MAX d, or hi. */
+static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, double hi)
+{
+    const qc__pebbles *pb = P->pb;
+    double lo = pb->r[i];
+    qc_vec2 x;
+    int it;
+
+    if (pair_centre(pb, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+        return hi;
+    for (it = 0; it < 50; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (pair_centre(pb, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Step 2 by small steps and bisection: the general case. */
+static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, qc_vec2 *xout)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 xlo = pb->c[i], xhi;
+    double lo = pb->r[i], hi, span = pb->r_grow - pb->r[i], step = span / 16;
+    int it;
+
+    while (lo < pb->r_grow) {
+        hi = fmin(lo + step, pb->r_grow);
+        if (!pair_centre(pb, j, k, hi, s, &xhi))
+            break;
+        if (dist(xhi, xlo) > 0.5 * pb->r_min && step > span * 1e-6) {
+            step /= 2; /* small moves: no pebble is jumped over */
+            continue;
+        }
+        if (pair_fits(P, i, j, k, hi, s, &xhi)) {
+            lo = hi;
+            xlo = xhi;
+            continue;
+        }
+        for (it = 0; it < 40; it++) {
+            double mid = 0.5 * (lo + hi);
+            qc_vec2 xm;
+            if (pair_fits(P, i, j, k, mid, s, &xm)) {
+                lo = mid;
+                xlo = xm;
+            } else {
+                hi = mid;
+            }
+        }
+        break;
+    }
+    *xout = xlo;
+    return lo;
+}
+
+/* Step 2: grows pebble i along the circles tangent to j and k. The first
+ * pebble met comes in closed form; near the boundary (or in a degenerate
+ * case) a search by steps decides. */
+static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 ci = pb->c[i], cj = pb->c[j], ck = pb->c[k], x;
+    double s = (ck.x - cj.x) * (ci.y - cj.y) - (ck.y - cj.y) * (ci.x - cj.x);
+    double r0 = pb->r[i], R, reach;
+    uint32_t r[4], cx, cy;
+    int general = 0;
+
+    if (!(pb->r_grow > r0))
+        return 0;
+    s = s < 0 ? -1 : 1;
+    R = move_limit(P, i, j, k, s, pb->r_grow);
+    reach = MOVE_MAX * P->d + R + P->rmax;
+    cell_box(P, ci, reach, r);
+    for (cy = r[1]; cy <= r[3] && !general; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t q = P->head[cy * P->nx + cx];
+            for (; q != QC__PEB_NONE; q = P->next[q]) {
+                double dq = dist(pb->c[q], ci), rq;
+                if (q == i || q == j || q == k || dq - pb->r[q] > reach - P->rmax)
+                    continue;
+                rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+                if (rq < 0) {
+                    general = 1;
+                    break;
+                }
+                if (rq < R)
+                    R = rq;
+            }
+        }
+    if (!general) {
+        R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
+        if (pair_centre(pb, j, k, R, s, &x) &&
+            clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12))
+            general = -1; /* done */
+    }
+    if (general != -1)
+        R = pair_search(P, i, j, k, s, &x);
+    if (!(R > r0 * (1 + 1e-9)) || !same_side(P, ci, x))
+        return 0;
+    move_to(P, i, x, R);
+    return 1;
+}
+
+/* Step 1: grows leaf i away from j, the one pebble it touches. */
+static int grow_leaf(pack *P, uint32_t i, uint32_t j)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[j], pb->c[i]), x = pb->c[i];
+    double s = ray(P, x, pb->r[i], u, pb->r_grow - pb->r[i], i, j);
+
+    if (s > MOVE_MAX * P->d)
+        s = MOVE_MAX * P->d;
+    if (!(s > pb->r[i] * 1e-9))
+        return 0;
+    move_to(P, i, v2(x.x + u.x * s, x.y + u.y * s), pb->r[i] + s);
+    return 1;
+}
+
+static int phase2(pack *P)
+{
+    qc_ctx *ctx = P->ctx;
+    qc__pebbles *pb = P->pb;
+    size_t n = pb->n, i;
+    uint32_t *nkid = qc__alloc_array(ctx, n, sizeof *nkid);
+    uint32_t *kid2 = qc__alloc_array(ctx, 2 * n, sizeof *kid2);
+    int step;
+
+    if (nkid == NULL || kid2 == NULL) {
+        qc__free(ctx, nkid, n * sizeof *nkid);
+        qc__free(ctx, kid2, 2 * n * sizeof *kid2);
+        return QC_ENOMEM;
+    }
+    memset(nkid, 0, n * sizeof *nkid);
+    for (i = 0; i < n; i++) { /* tree neighbours: the parent and up to two children kept */
+        uint32_t p = pb->parent[i];
+        if (p == QC__PEB_NONE)
+            continue;
+        if (nkid[p] < 2)
+            kid2[2 * p + nkid[p]] = (uint32_t)i;
+        nkid[p]++;
+        if (pb->flags[i] & QC__PEB_BRIDGE)
+            nkid[p] += 3; /* a bridged pebble's parent stays */
+    }
+    for (step = 1; step <= 2; step++) {
+        for (i = 0; i < n; i++) {
+            uint32_t ids[3], tn[2], ntn = 0, k;
+            int bound;
+            unsigned cnt;
+            if (pb->flags[i] & QC__PEB_BRIDGE)
+                continue;
+            if (pb->parent[i] != QC__PEB_NONE)
+                tn[ntn++] = pb->parent[i];
+            if (nkid[i] > 2 || ntn + nkid[i] > (unsigned)step)
+                continue;
+            for (k = 0; k < nkid[i]; k++)
+                tn[ntn++] = kid2[2 * i + k];
+            cnt = contacts(P, (uint32_t)i, ids, &bound);
+            if (bound || cnt != (unsigned)step)
+                continue;
+            /* the tree neighbours must be among the contacts */
+            for (k = 0; k < ntn; k++)
+                if (tn[k] != ids[0] && (step == 1 || tn[k] != ids[1]))
+                    break;
+            if (k < ntn)
+                continue;
+            if (step == 1 && ntn == 1)
+                pb->grown_leaf += (size_t)grow_leaf(P, (uint32_t)i, ids[0]);
+            else if (step == 2)
+                pb->grown_pair += (size_t)grow_pair(P, (uint32_t)i, ids[0], ids[1]);
+        }
+    }
+    for (i = 0; i < n; i++) {
+        uint32_t ids[3];
+        int bound;
+        unsigned cnt = contacts(P, (uint32_t)i, ids, &bound) + (unsigned)bound;
+        pb->contacts[i] = (unsigned char)(cnt > 255 ? 255 : cnt);
+    }
+    qc__free(ctx, nkid, n * sizeof *nkid);
+    qc__free(ctx, kid2, 2 * n * sizeof *kid2);
+    return QC_OK;
+}
+
+/* ---- the run ---- */
+
+static int alloc_pebbles(qc_ctx *ctx, qc__pebbles *pb, size_t cap)
+{
+    pb->cap = cap;
+    pb->c = qc__alloc_array(ctx, cap, sizeof *pb->c);
+    pb->r = qc__alloc_array(ctx, cap, sizeof *pb->r);
+    pb->parent = qc__alloc_array(ctx, cap, sizeof *pb->parent);
+    pb->node = qc__alloc_array(ctx, cap, sizeof *pb->node);
+    pb->flags = qc__alloc_array(ctx, cap, sizeof *pb->flags);
+    pb->contacts = qc__alloc_array(ctx, cap, sizeof *pb->contacts);
+    if (pb->c == NULL || pb->r == NULL || pb->parent == NULL || pb->node == NULL ||
+        pb->flags == NULL || pb->contacts == NULL)
+        return QC_ENOMEM;
+    return QC_OK;
+}
+
+int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
+                     const qc_params *params, const qc_skeleton *skel, qc__pebbles *pb)
+{
+    pack P;
+    double d = params->spacing, rs = params->r_seed, cells;
+    size_t n = skel->n, i, cap;
+    qc_bbox box;
+    int rc;
+
+    memset(pb, 0, sizeof *pb);
+    memset(&P, 0, sizeof P);
+    if (n == 0)
+        return qc__fail(ctx, QC_EEMPTY, "pebbling needs at least one point");
+    if (!(d > 0) || d > 1e6)
+        return qc__fail(ctx, QC_ERANGE, "spacing %g mm out of range (0, 1e6]", d);
+    if (!(rs >= 0.5 && rs <= 1))
+        return qc__fail(ctx, QC_ERANGE, "r_seed %g out of range [0.5, 1]", rs);
+    if (n > QC_MAX_POINTS)
+        return qc__fail(ctx, QC_ELIMIT, "%lu points exceed the limit of %lu",
+                        (unsigned long)n, (unsigned long)QC_MAX_POINTS);
+    box = qc_region_bbox(region);
+    for (i = 0; i < n; i++) {
+        qc_vec2 p = skel->p[i];
+        if (!(fabs(p.x) <= 1e9 && fabs(p.y) <= 1e9))
+            return qc__fail(ctx, QC_ERANGE, "skeleton point %lu is not finite",
+                            (unsigned long)i);
+        box.min.x = fmin(box.min.x, p.x);
+        box.min.y = fmin(box.min.y, p.y);
+        box.max.x = fmax(box.max.x, p.x);
+        box.max.y = fmax(box.max.y, p.y);
+    }
+    for (i = 0; i < skel->norder; i++)
+        if (skel->order[i] >= n)
+            return qc__fail(ctx, QC_EINVAL, "skeleton order entry %lu is %lu, beyond %lu points",
+                            (unsigned long)i, (unsigned long)skel->order[i], (unsigned long)n);
+    pb->r_first = rs * d;
+    pb->r_grow = GROW_MAX * rs * d;
+    pb->r_min = R_MIN * d;
+    pb->touch = TOUCH * d;
+    pb->k = params->edge == QC_EDGE_OVERGROW ? OVER_K : 1;
+    cap = 2 * n + 1; /* each point adds a pebble and at most one filler */
+    rc = alloc_pebbles(ctx, pb, cap);
+    P.ctx = ctx;
+    P.b = b;
+    P.pb = pb;
+    P.d = d;
+    if (rc == QC_OK) {
+        P.next = qc__alloc_array(ctx, cap, sizeof *P.next);
+        P.cellof = qc__alloc_array(ctx, cap, sizeof *P.cellof);
+        if (P.next == NULL || P.cellof == NULL)
+            rc = QC_ENOMEM;
+    }
+    if (rc == QC_OK) { /* cells of about d, at most about 4 per pebble slot */
+        double pad = pb->r_grow + d, w, h;
+        P.x0 = box.min.x - pad;
+        P.y0 = box.min.y - pad;
+        w = box.max.x - box.min.x + 2 * pad;
+        h = box.max.y - box.min.y + 2 * pad;
+        P.h = d;
+        cells = (w / P.h + 1) * (h / P.h + 1);
+        if (cells > 4.0 * (double)cap + 1024)
+            P.h *= sqrt(cells / (4.0 * (double)cap + 1024)) * 1.01;
+        P.nx = (uint32_t)(w / P.h) + 1;
+        P.ny = (uint32_t)(h / P.h) + 1;
+        P.head = qc__alloc_array(ctx, (size_t)P.nx * P.ny, sizeof *P.head);
+        if (P.head == NULL)
+            rc = QC_ENOMEM;
+        else
+            memset(P.head, 0xFF, (size_t)P.nx * P.ny * sizeof *P.head);
+    }
+    if (rc == QC_OK)
+        rc = phase1(&P, skel);
+    if (rc == QC_OK && pb->n == 0)
+        rc = qc__fail(ctx, QC_EEMPTY, "no pebble of radius %g mm (d/10) fits in the region "
+                      "at any of the %lu points", pb->r_min, (unsigned long)n);
+    if (rc == QC_OK)
+        rc = phase2(&P);
+    qc__free(ctx, P.head, (size_t)P.nx * P.ny * sizeof *P.head);
+    qc__free(ctx, P.next, cap * sizeof *P.next);
+    qc__free(ctx, P.cellof, cap * sizeof *P.cellof);
+    if (rc != QC_OK)
+        qc__pebbles_free(ctx, pb);
+    return rc;
+}
+
+/* ---- after the run ---- */
+
+typedef struct kid_key {
+    uint32_t parent, kid;
+    double key;
+} kid_key;
+
+static int cmp_kid(const void *pa, const void *pb)
+{
+    const kid_key *a = pa, *b = pb;
+
+    if (a->parent != b->parent)
+        return a->parent < b->parent ? -1 : 1;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return a->kid < b->kid ? -1 : a->kid > b->kid;
+}
+
+static double angle_of(qc_vec2 from, qc_vec2 to)
+{
+    return qc_atan2(to.y - from.y, to.x - from.x);
+}
+
+int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_out,
+                         uint32_t **kids_out, double *start_angle)
+{
+    size_t n = pb->n, i, m = 0, g = 0;
+    uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
+    uint32_t *kids = qc__alloc_array(ctx, n, sizeof *kids);
+    kid_key *keys = qc__alloc_array(ctx, n, sizeof *keys);
+    double gap = -1, a0 = -QC_PI / 2;
+
+    *first_out = NULL;
+    *kids_out = NULL;
+    if (first == NULL || kids == NULL || keys == NULL) {
+        qc__free(ctx, first, (n + 1) * sizeof *first);
+        qc__free(ctx, kids, n * sizeof *kids);
+        qc__free(ctx, keys, n * sizeof *keys);
+        return QC_ENOMEM;
+    }
+    for (i = 0; i < n; i++) {
+        uint32_t p = pb->parent[i];
+        double entry, k;
+        if (p == QC__PEB_NONE)
+            continue;
+        /* counter-clockwise from where p's own parent comes in (root: +x) */
+        entry = pb->parent[p] == QC__PEB_NONE ? 0 : angle_of(pb->c[p], pb->c[pb->parent[p]]);
+        k = angle_of(pb->c[p], pb->c[i]) - entry;
+        while (k <= 0)
+            k += 2 * QC_PI;
+        while (k > 2 * QC_PI)
+            k -= 2 * QC_PI;
+        keys[m].parent = p;
+        keys[m].kid = (uint32_t)i;
+        keys[m].key = k;
+        m++;
+    }
+    if (m > 1)
+        qsort(keys, m, sizeof *keys, cmp_kid);
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < m; i++) {
+        kids[i] = keys[i].kid;
+        first[keys[i].parent + 1]++;
+    }
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
+    /* the root starts in the middle of the widest gap between its children,
+     * and meets them counter-clockwise from there */
+    for (i = first[0]; i < first[1]; i++) {
+        double k0 = keys[i].key, k1 = i + 1 < first[1] ? keys[i + 1].key
+                                                       : keys[first[0]].key + 2 * QC_PI;
+        if (k1 - k0 > gap) {
+            gap = k1 - k0;
+            a0 = 0.5 * (k0 + k1);
+            g = i + 1 - first[0];
+        }
+    }
+    for (i = first[0]; i < first[1]; i++) /* rotate: the gap's far side first */
+        kids[i] = keys[first[0] + (i - first[0] + g) % (first[1] - first[0])].kid;
+    *start_angle = a0;
+    qc__free(ctx, keys, n * sizeof *keys);
+    *first_out = first;
+    *kids_out = kids;
+    return QC_OK;
+}
+
+/* Fraction of the disk (c, r) inside the region (c inside), from 64 points. */
+static double inside_fraction(qc__pbound *b, qc_vec2 c, double r)
+{
+    int i, in = 0;
+
+    for (i = 0; i < 64; i++) { /* a sunflower: even over the disk */
+        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332;
+        qc_vec2 q = v2(c.x + rr * qc_cos(a), c.y + rr * qc_sin(a));
+        in += (qc__pbound_crossings(b, c, q) & 1) == 0;
+    }
+    return in / 64.0;
+}
+
+int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound *b, qc_stats *st)
+{
+    size_t i, under = 0;
+    double lo = HUGE_VAL, hi = 0, sum = 0, area = 0, ra = qc_region_area(b->region);
+
+    (void)ctx;
+    for (i = 0; i < pb->n; i++) {
+        double r = pb->r[i], a = QC_PI * r * r;
+        lo = fmin(lo, r);
+        hi = fmax(hi, r);
+        sum += r;
+        under += pb->contacts[i] < 3;
+        if (pb->k < 1 && qc__pbound_dist(b, pb->c[i], r) < r)
+            a *= inside_fraction(b, pb->c[i], r);
+        area += a;
+    }
+    st->pebbles += pb->n;
+    st->pebbles_under3 += under;
+    st->radius_min = pb->n ? lo : 0;
+    st->radius_max = hi;
+    st->radius_mean = pb->n ? sum / (double)pb->n : 0;
+    st->coverage = ra > 0 ? fmin(1, area / ra) : 0;
+    return QC_OK;
+}

@@ -1,0 +1,273 @@
+/*
+ * Trimming an overgrown closed path to its region (paper §5.3.1, Fig. 11
+ * middle): each stretch outside is replaced by the boundary between where
+ * it leaves and where it comes back, so the result stays one piece.
+ * Crossings are decided by exact orientation tests with every zero taken
+ * as negative (a consistent perturbation), so the inside/outside state
+ * flips exactly when the path changes side.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "pebble_internal.h"
+
+typedef struct trim {
+    qc_ctx *ctx;
+    qc__pbound *b;
+    qc_path *out;
+    qc_vec2 ref;
+    int inside;        /* where the path is now */
+    int started;       /* out has this path's first point */
+    int head_open;     /* started outside and not yet in */
+    qc__pcross exit_at, first_at;
+    qc_points stretch; /* the current stretch outside, from its exit */
+    qc_points head;    /* the stretch before the first entry */
+    qc_points cand[2]; /* the two ways round the ring */
+    qc__pcross *cr;
+    size_t cr_cap;
+    size_t jumps;
+} trim;
+
+static int emit(trim *T, qc_vec2 p)
+{
+    if (!T->started) {
+        T->started = 1;
+        if (T->out->ncmd == 0)
+            return qc_path_move_to(T->ctx, T->out, p);
+    }
+    return qc_path_line_to(T->ctx, T->out, p);
+}
+
+/* Winding number of the closed polyline a (then b reversed) round q. */
+static int winding(const qc_points *a, const qc_points *b, qc_vec2 q)
+{
+    size_t na = a->n, nb = b->n, n = na + nb, i;
+    int w = 0;
+
+    for (i = 0; i < n; i++) {
+        size_t j = i + 1 < n ? i + 1 : 0;
+        qc_vec2 p0 = i < na ? a->v[i] : b->v[nb - 1 - (i - na)];
+        qc_vec2 p1 = j < na ? a->v[j] : b->v[nb - 1 - (j - na)];
+        double o = (p1.x - p0.x) * (q.y - p0.y) - (p1.y - p0.y) * (q.x - p0.x);
+        if (p0.y <= q.y && q.y < p1.y && o > 0)
+            w++;
+        else if (p1.y <= q.y && q.y < p0.y && o < 0)
+            w--;
+    }
+    return w;
+}
+
+static double poly_len(const qc_points *p)
+{
+    double l = 0;
+    size_t i;
+
+    for (i = 1; i < p->n; i++)
+        l += qc_hypot(p->v[i].x - p->v[i - 1].x, p->v[i].y - p->v[i - 1].y);
+    return l;
+}
+
+/* Position of x along edge e (0 at its first vertex). */
+static double along(const qc_region *r, uint32_t e, uint32_t nxt, qc_vec2 x)
+{
+    qc_vec2 a = r->v[e], b = r->v[nxt];
+    double ex = b.x - a.x, ey = b.y - a.y, l2 = ex * ex + ey * ey;
+
+    return l2 > 0 ? ((x.x - a.x) * ex + (x.y - a.y) * ey) / l2 : 0;
+}
+
+/* The boundary from exit x1 to entry x2, both ways round their ring. */
+static int ring_ways(trim *T, const qc__pcross *x1, const qc__pcross *x2)
+{
+    const qc_region *r = T->b->region;
+    uint32_t lo, hi, e1 = x1->edge, e2 = x2->edge, k;
+    double t1, t2;
+    int rc = QC_OK;
+
+#define NEXT(v) ((v) + 1 < hi ? (v) + 1 : lo)
+#define PREV(v) ((v) > lo ? (v) - 1 : hi - 1)
+    qc__pbound_ring(r, e1, &lo, &hi);
+    t1 = along(r, e1, NEXT(e1), x1->at);
+    t2 = along(r, e2, NEXT(e2), x2->at);
+    T->cand[0].n = T->cand[1].n = 0;
+    rc = qc_points_push(T->ctx, &T->cand[0], x1->at);
+    if (rc == QC_OK)
+        rc = qc_points_push(T->ctx, &T->cand[1], x1->at);
+    if (rc == QC_OK && !(e1 == e2 && t2 >= t1)) { /* forward */
+        for (k = NEXT(e1);; k = NEXT(k)) {
+            rc = qc_points_push(T->ctx, &T->cand[0], r->v[k]);
+            if (rc != QC_OK || k == e2)
+                break;
+        }
+    }
+    if (rc == QC_OK && !(e1 == e2 && t2 <= t1)) { /* backward */
+        for (k = e1;; k = PREV(k)) {
+            rc = qc_points_push(T->ctx, &T->cand[1], r->v[k]);
+            if (rc != QC_OK || k == NEXT(e2))
+                break;
+        }
+    }
+#undef NEXT
+#undef PREV
+    if (rc == QC_OK)
+        rc = qc_points_push(T->ctx, &T->cand[0], x2->at);
+    if (rc == QC_OK)
+        rc = qc_points_push(T->ctx, &T->cand[1], x2->at);
+    return rc;
+}
+
+/* Replaces the stretch outside (T->stretch, from x1 to x2) by the boundary. */
+static int join(trim *T, const qc__pcross *x1, const qc__pcross *x2)
+{
+    const qc_region *r = T->b->region;
+    uint32_t lo1, hi1, lo2, hi2;
+    const qc_points *pick;
+    size_t i;
+    int w0, w1;
+
+    if (qc__pbound_ring(r, x1->edge, &lo1, &hi1) != qc__pbound_ring(r, x2->edge, &lo2, &hi2)) {
+        T->jumps++; /* out by one ring, in by another: no boundary joins them */
+        return emit(T, x2->at);
+    }
+    QC__TRY(ring_ways(T, x1, x2));
+    w0 = winding(&T->stretch, &T->cand[0], T->ref);
+    w1 = winding(&T->stretch, &T->cand[1], T->ref);
+    if ((w0 == 0) != (w1 == 0))
+        pick = w0 == 0 ? &T->cand[0] : &T->cand[1];
+    else
+        pick = poly_len(&T->cand[0]) <= poly_len(&T->cand[1]) ? &T->cand[0] : &T->cand[1];
+    for (i = 1; i < pick->n; i++)
+        QC__TRY(emit(T, pick->v[i]));
+    return QC_OK;
+}
+
+/* The straight piece a -> b. */
+static int segment(trim *T, qc_vec2 a, qc_vec2 b)
+{
+    size_t ncr = 0, i;
+
+    if (a.x == b.x && a.y == b.y)
+        return QC_OK;
+    QC__TRY(qc__pbound_cross_list(T->ctx, T->b, a, b, &T->cr, &T->cr_cap, &ncr));
+    for (i = 0; i < ncr; i++) {
+        const qc__pcross *x = &T->cr[i];
+        if (T->inside) { /* leaving */
+            QC__TRY(emit(T, x->at));
+            T->exit_at = *x;
+            T->stretch.n = 0;
+            QC__TRY(qc_points_push(T->ctx, &T->stretch, x->at));
+        } else if (T->head_open) { /* in for the first time */
+            QC__TRY(qc_points_push(T->ctx, &T->head, x->at));
+            T->head_open = 0;
+            T->first_at = *x;
+            QC__TRY(emit(T, x->at));
+        } else {
+            QC__TRY(qc_points_push(T->ctx, &T->stretch, x->at));
+            QC__TRY(join(T, &T->exit_at, x));
+        }
+        T->inside = !T->inside;
+    }
+    if (T->inside)
+        return emit(T, b);
+    return qc_points_push(T->ctx, T->head_open ? &T->head : &T->stretch, b);
+}
+
+/* Whether the cubic's control points lie in a disk clear of the boundary. */
+static int cubic_clear(trim *T, const qc_vec2 *q)
+{
+    qc_vec2 m;
+    double rad = 0;
+    int i;
+
+    m.x = (q[0].x + q[1].x + q[2].x + q[3].x) / 4;
+    m.y = (q[0].y + q[1].y + q[2].y + q[3].y) / 4;
+    for (i = 0; i < 4; i++)
+        rad = fmax(rad, qc_hypot(q[i].x - m.x, q[i].y - m.y));
+    rad = rad * (1 + 1e-9) + 1e-9;
+    return qc__pbound_dist(T->b, m, 2 * rad) > rad;
+}
+
+static int run(trim *T, const qc_path *in, double tol, qc_path *one, qc_points *flat)
+{
+    size_t i, k = 0;
+    qc_vec2 cur, start;
+
+    if (in->ncmd == 0)
+        return qc__fail(T->ctx, QC_EEMPTY, "nothing to trim");
+    start = cur = in->pt[0];
+    T->inside = qc_region_contains(T->b->region, start);
+    T->head_open = !T->inside;
+    if (T->inside)
+        QC__TRY(emit(T, start));
+    else
+        QC__TRY(qc_points_push(T->ctx, &T->head, start));
+    k = qc_path_cmd_points(in->cmd[0]);
+    for (i = 1; i < in->ncmd; i++) {
+        const qc_vec2 *p = in->pt + k;
+        k += qc_path_cmd_points(in->cmd[i]);
+        if (in->cmd[i] != QC_PATH_CUBIC) {
+            QC__TRY(segment(T, cur, p[0]));
+            cur = p[0];
+            continue;
+        }
+        {
+            qc_vec2 q[4];
+            size_t j;
+            q[0] = cur;
+            q[1] = p[0];
+            q[2] = p[1];
+            q[3] = p[2];
+            if (T->inside && T->started && cubic_clear(T, q)) {
+                QC__TRY(qc_path_cubic_to(T->ctx, T->out, q[1], q[2], q[3]));
+                cur = q[3];
+                continue;
+            }
+            one->ncmd = one->npt = 0;
+            flat->n = 0;
+            QC__TRY(qc_path_move_to(T->ctx, one, q[0]));
+            QC__TRY(qc_path_cubic_to(T->ctx, one, q[1], q[2], q[3]));
+            QC__TRY(qc_curve_flatten(T->ctx, one, tol, flat, NULL));
+            for (j = 1; j < flat->n; j++) {
+                QC__TRY(segment(T, cur, flat->v[j]));
+                cur = flat->v[j];
+            }
+            QC__TRY(segment(T, cur, q[3]));
+            cur = q[3];
+        }
+    }
+    QC__TRY(segment(T, cur, start)); /* closed: back to the start */
+    if (T->head_open)
+        return qc__fail(T->ctx, QC_EEMPTY, "the pattern lies wholly outside the region");
+    if (!T->inside) { /* the last stretch runs on into the first */
+        for (i = 1; i < T->head.n; i++)
+            QC__TRY(qc_points_push(T->ctx, &T->stretch, T->head.v[i]));
+        QC__TRY(join(T, &T->exit_at, &T->first_at));
+    }
+    return QC_OK;
+}
+
+int qc__path_trim(qc_ctx *ctx, qc__pbound *b, const qc_path *in, qc_vec2 ref, double tol,
+                  qc_path *out, size_t *jumps)
+{
+    trim T;
+    qc_path one = {0};
+    qc_points flat = {0};
+    int rc;
+
+    memset(&T, 0, sizeof T);
+    T.ctx = ctx;
+    T.b = b;
+    T.out = out;
+    T.ref = ref;
+    rc = run(&T, in, tol, &one, &flat);
+    if (jumps != NULL)
+        *jumps += T.jumps;
+    qc_path_free(ctx, &one);
+    qc_points_free(ctx, &flat);
+    qc_points_free(ctx, &T.stretch);
+    qc_points_free(ctx, &T.head);
+    qc_points_free(ctx, &T.cand[0]);
+    qc_points_free(ctx, &T.cand[1]);
+    qc__free(ctx, T.cr, T.cr_cap * sizeof *T.cr);
+    return rc;
+}
