@@ -1,6 +1,209 @@
-/* TSP timings: owned by the tour stage (placeholder until then). */
+/* TSP timings and quality: uniform points 10^3..10^6 against the MST weight
+ * (a lower bound) and 0.7124 sqrt(n A) (the asymptotic optimum), the
+ * perturbation rate, and the gap to the proven optimum of each TSPLIB
+ * instance found in ../shared/data/tsplib/. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
 #include "bench.h"
+
+#define TSPLIB_DIR "../shared/data/tsplib/"
+#define KICKS 20000
+
+/* Counts the library's live and peak bytes. */
+typedef struct meter {
+    size_t live, peak;
+} meter;
+
+static void *meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    meter *m = ud;
+
+    if (new_size == 0) {
+        free(ptr);
+        m->live -= old_size;
+        return NULL;
+    }
+    ptr = realloc(ptr, new_size);
+    if (ptr != NULL) {
+        m->live = m->live - old_size + new_size;
+        if (m->live > m->peak)
+            m->peak = m->live;
+    }
+    return ptr;
+}
+
+/* Best time of reps runs of one method; the tour's length in *len. */
+static double time_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, int method, uint64_t kicks,
+                       int reps, double *len, double (*measure)(const qc_vec2 *, const uint32_t *,
+                                                                size_t))
+{
+    double best = 1e30;
+    int r;
+
+    for (r = 0; r < reps; r++) {
+        qc_tsp_params tp;
+        qc_order o = {0};
+        double t0;
+
+        memset(&tp, 0, sizeof tp);
+        tp.method = method;
+        tp.perturb_iterations = kicks;
+        tp.seed = 1;
+        t0 = bench_now();
+        if (qc_tsp(ctx, p, n, &tp, &o) != QC_OK) {
+            printf("tsp: %s\n", qc_errmsg(ctx));
+            return -1;
+        }
+        best = fmin(best, bench_now() - t0);
+        *len = measure(p, o.i, o.n);
+        qc_order_free(ctx, &o);
+    }
+    return best;
+}
+
+static double euclid_length(const qc_vec2 *p, const uint32_t *t, size_t n)
+{
+    return qc_tour_length(p, t, n, 1);
+}
+
+/* TSPLIB's length: each edge nint(Euclidean distance). */
+static double tsplib_length(const qc_vec2 *p, const uint32_t *t, size_t n)
+{
+    double len = 0;
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = p[t[i]], b = p[t[(i + 1) % n]];
+        len += floor(sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y)) + 0.5);
+    }
+    return len;
+}
+
+static void uniform(size_t n, int reps, int all_methods)
+{
+    static const char *const names[] = {"greedy", "+2-opt", "+Or-opt"};
+    qc_vec2 *p = bench_uniform(n, 1000.0, 7 + n);
+    meter m = {0, 0};
+    qc_edges e = {0};
+    qc_ctx ctx;
+    double w = 0, bhh = 0.7124 * sqrt((double)n * 1e6), len, t;
+    size_t i;
+    int k;
+
+    if (p == NULL)
+        return;
+    qc_ctx_init(&ctx, meter_alloc, &m);
+    if (qc_mst(&ctx, p, n, QC_MST_MODE_DELAUNAY, &e) == QC_OK)
+        for (i = 0; i < e.n; i++)
+            w += qc_hypot(p[e.e[i].a].x - p[e.e[i].b].x, p[e.e[i].a].y - p[e.e[i].b].y);
+    qc_edges_free(&ctx, &e);
+    for (k = all_methods ? 0 : 2; k < 3; k++) {
+        m.peak = 0;
+        t = time_tsp(&ctx, p, n, k, 0, reps, &len, euclid_length);
+        if (t < 0)
+            break;
+        printf("uniform n=%-8lu %-8s %9.2f ms  tour/MST %.4f  tour/(0.7124 sqrt(nA)) %.4f"
+               "  lib peak %5.1f B/pt\n",
+               (unsigned long)n, names[k], t * 1e3, len / w, len / bhh,
+               (double)m.peak / (double)n);
+    }
+    if (n <= 100000) { /* the perturbation's rate, for --tsp-time */
+        double t0 = time_tsp(&ctx, p, n, QC_TSP_METHOD_OROPT, 0, 1, &len, euclid_length);
+        double len1, t1 = time_tsp(&ctx, p, n, QC_TSP_METHOD_OROPT, KICKS, 1, &len1,
+                                   euclid_length);
+        printf("uniform n=%-8lu +%d kicks %7.2f ms (%.0f rounds/ms)  tour/(0.7124 sqrt(nA)) "
+               "%.4f\n",
+               (unsigned long)n, KICKS, (t1 - t0) * 1e3, KICKS / ((t1 - t0) * 1e3), len1 / bhh);
+    }
+    free(p);
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    long n;
+
+    if (f == NULL)
+        return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0) {
+        buf = malloc((size_t)n + 1);
+        if (buf != NULL && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+            free(buf);
+            buf = NULL;
+        }
+        *len = (size_t)n;
+    }
+    fclose(f);
+    return buf;
+}
+
+static void tsplib(void)
+{
+    size_t len;
+    char *list = slurp(TSPLIB_DIR "optima.txt", &len), *line, *save = NULL;
+    double sum[4] = {0, 0, 0, 0};
+    int count = 0;
+
+    if (list == NULL) {
+        printf("tour: no %soptima.txt, TSPLIB skipped\n", TSPLIB_DIR);
+        return;
+    }
+    list[len] = '\0';
+    printf("tsplib: %% above the proven optimum (nint lengths), time of each run (best of 3 up to "
+           "5000 points)\n");
+    for (line = strtok_r(list, "\n", &save); line != NULL; line = strtok_r(NULL, "\n", &save)) {
+        char name[64], path[256];
+        double opt, gap[4], t[4], l;
+        qc_points pts = {0};
+        qc_ctx ctx;
+        char *buf;
+        size_t n;
+        int k;
+
+        if (sscanf(line, "%63s : %lf", name, &opt) != 2)
+            continue;
+        snprintf(path, sizeof path, TSPLIB_DIR "%s.tsp", name);
+        buf = slurp(path, &n);
+        if (buf == NULL)
+            continue;
+        qc_ctx_init(&ctx, NULL, NULL);
+        if (qc_io_read_points(&ctx, buf, n, &pts) != QC_OK) {
+            printf("%s: %s\n", name, qc_errmsg(&ctx));
+            free(buf);
+            continue;
+        }
+        free(buf);
+        for (k = 0; k < 4; k++) {
+            t[k] = time_tsp(&ctx, pts.v, pts.n, k < 3 ? k : 2, k < 3 ? 0 : KICKS,
+                            k < 3 && pts.n <= 5000 ? 3 : 1, &l, tsplib_length);
+            gap[k] = 100 * (l / opt - 1);
+            sum[k] += gap[k];
+        }
+        count++;
+        printf("%-9s n=%-6lu greedy %6.2f%% %7.2f ms  2-opt %5.2f%% %7.2f ms  Or-opt %5.2f%% "
+               "%7.2f ms  +%d kicks %5.2f%% %7.2f ms\n",
+               name, (unsigned long)pts.n, gap[0], t[0] * 1e3, gap[1], t[1] * 1e3, gap[2],
+               t[2] * 1e3, KICKS, gap[3], t[3] * 1e3);
+        qc_points_free(&ctx, &pts);
+    }
+    if (count > 0)
+        printf("tsplib mean of %d: greedy %.2f%%  2-opt %.2f%%  Or-opt %.2f%%  +%d kicks "
+               "%.2f%%\n",
+               count, sum[0] / count, sum[1] / count, sum[2] / count, KICKS, sum[3] / count);
+    free(list);
+}
 
 void bench_tour(void)
 {
+    printf("tour: best of a few runs; each method includes the ones before it\n");
+    uniform(1000, 5, 1);
+    uniform(10000, 3, 1);
+    uniform(100000, 2, 1);
+    uniform(1000000, 1, 0);
+    tsplib();
+    printf("tour: process peak RSS %.1f MB\n", (double)bench_peak_rss() / 1e6);
 }

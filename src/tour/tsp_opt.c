@@ -104,6 +104,18 @@ void qc__tsp_queue_all(qc__tsp *s)
 
 /* ---- 2-opt ---- */
 
+/* Moves whose shorter side is longer than this are skipped by the local
+ * search (never by the uncrossing): at 10^6 points they cost a fifth of
+ * the time for 0.2% of length; below 10^5 points no move is that long. */
+#define MAX_REVERSAL 50000
+
+/* Whether reversing between a and c (either side) costs too much. */
+static int too_far(const qc__tsp *s, uint32_t a, uint32_t c)
+{
+    uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
+    return d > MAX_REVERSAL && s->m - d > MAX_REVERSAL;
+}
+
 /* The best 2-opt move removing an edge at a; applies it. 1 if moved. */
 static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 {
@@ -124,7 +136,7 @@ static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
             if (dac >= dab)
                 break;
             d = dir ? qc__tsp_prev(s, c) : qc__tsp_next(s, c);
-            if (c == b || d == a)
+            if (c == b || d == a || too_far(s, a, c))
                 continue;
             g = dac + qc__tsp_dist(s, b, d) - dab - qc__tsp_dist(s, c, d);
             if (g < best) {
@@ -183,7 +195,7 @@ static void or_segment(const qc__tsp *s, uint32_t first, uint32_t len, or_move *
 
             if (dce >= g1)
                 break;
-            if (in_segment(s, first, len, c))
+            if (in_segment(s, first, len, c) || too_far(s, e, c))
                 continue;
             /* c, e ... o, next(c) */
             x = qc__tsp_next(s, c);
