@@ -1,44 +1,228 @@
-/* quiltc check FILE.pat: the dialect linter, one finding a line. */
+/*
+ * quiltc check FILE.pat [--region R]: the dialect linter plus the geometry a
+ * quilter cares about, one finding a line; exit 0 only when sewable.
+ */
+#include <getopt.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 
-static void print_finding(void *ud, size_t line, const char *kind, const char *text)
+typedef struct check_opts {
+    const char *file, *region, *units;
+    unsigned long long max_jumps;
+    double min_seg, max_seg; /* mm; max 0 = no limit */
+    int no_crossing;
+} check_opts;
+
+typedef struct tally {
+    size_t findings;
+} tally;
+
+static void finding(tally *t, const char *fmt, double a, double b)
 {
-    size_t *count = ud;
+    printf("finding: ");
+    printf(fmt, a, b);
+    putchar('\n');
+    t->findings++;
+}
+
+static void print_dialect(void *ud, size_t line, const char *kind, const char *text)
+{
     printf("line %lu: %s: %s\n", (unsigned long)line, kind, text);
-    (*count)++;
+    ((tally *)ud)->findings++;
+}
+
+static void usage(FILE *f)
+{
+    fputs("usage: quiltc check FILE.pat [options]\n"
+          "Reports every dialect fault and geometric problem; exit 0 when sewable.\n"
+          "  --max-jumps N       needle-up moves allowed after the start (default 0)\n"
+          "  --min-segment LEN   shorter stitches are faults (default 0.1mm)\n"
+          "  --max-segment LEN   longer stitches are faults (default: no limit)\n"
+          "  --no-crossing       self-crossings are faults (loop motifs cross by design)\n"
+          "  --region R          points outside R are faults; also the largest gap\n"
+          "  --units in|mm|cm    units of R and of bare lengths (default in)\n",
+          f);
+}
+
+static int parse_len(const char *opt, const char *s, double mm_per_unit, double *out)
+{
+    double v;
+    size_t n = strlen(s);
+    double scale = mm_per_unit;
+    char buf[64];
+
+    if (n > 2 && n < sizeof buf && strcmp(s + n - 2, "mm") == 0)
+        scale = 1.0, n -= 2;
+    else if (n > 2 && n < sizeof buf && strcmp(s + n - 2, "in") == 0)
+        scale = 25.4, n -= 2;
+    memcpy(buf, s, n < sizeof buf ? n : sizeof buf - 1);
+    buf[n < sizeof buf ? n : sizeof buf - 1] = '\0';
+    if (cli_parse_double(buf, &v) != 0 || v < 0) {
+        cli_error("--%s: '%s' is not a length", opt, s);
+        return CLI_USAGE;
+    }
+    *out = v * scale;
+    return CLI_OK;
+}
+
+static int parse(int argc, char **argv, check_opts *o)
+{
+    static const struct option opts[] = {
+        {"max-jumps", required_argument, NULL, 'j'}, {"min-segment", required_argument, NULL, 's'},
+        {"max-segment", required_argument, NULL, 'S'}, {"no-crossing", no_argument, NULL, 'x'},
+        {"region", required_argument, NULL, 'r'}, {"units", required_argument, NULL, 'u'},
+        {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    const char *min_s = "0.1mm", *max_s = "0";
+    int c;
+
+    o->units = "in";
+    optind = 1;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'j':
+            if (cli_parse_u64(optarg, &o->max_jumps) != 0) {
+                cli_error("--max-jumps: '%s' is not a count", optarg);
+                return CLI_USAGE;
+            }
+            break;
+        case 's': min_s = optarg; break;
+        case 'S': max_s = optarg; break;
+        case 'x': o->no_crossing = 1; break;
+        case 'r': o->region = optarg; break;
+        case 'u': o->units = optarg; break;
+        case 'h': usage(stdout); return -1;
+        default: cli_bad_option("check", argv[optind - 1], c); return CLI_USAGE;
+        }
+    }
+    if (cli_units_mm(o->units) == 0) {
+        cli_error("--units: unknown unit '%s' (in, mm or cm)", o->units);
+        return CLI_USAGE;
+    }
+    if (parse_len("min-segment", min_s, cli_units_mm(o->units), &o->min_seg) != CLI_OK ||
+        parse_len("max-segment", max_s, cli_units_mm(o->units), &o->max_seg) != CLI_OK)
+        return CLI_USAGE;
+    if (optind != argc - 1) {
+        cli_error("check: expected one FILE.pat (see 'quiltc check --help')");
+        return CLI_USAGE;
+    }
+    o->file = argv[optind];
+    return CLI_OK;
+}
+
+/* Jumps, length, box and segment lengths of the sewn pieces. */
+static void measure(const check_opts *o, const qc_plan *p, tally *t)
+{
+    size_t i, jumps = 0, segs = 0;
+    double len = 0, shortest = HUGE_VAL, longest = 0;
+    qc_bbox b;
+
+    b.min = b.max = p->p[0];
+    for (i = 0; i < p->n; i++) {
+        b.min.x = fmin(b.min.x, p->p[i].x);
+        b.min.y = fmin(b.min.y, p->p[i].y);
+        b.max.x = fmax(b.max.x, p->p[i].x);
+        b.max.y = fmax(b.max.y, p->p[i].y);
+        if (i == 0)
+            continue;
+        if (p->flags[i] & QC_ST_JUMP) {
+            jumps++;
+        } else {
+            double s = hypot(p->p[i].x - p->p[i - 1].x, p->p[i].y - p->p[i - 1].y);
+            len += s;
+            segs++;
+            shortest = fmin(shortest, s);
+            longest = fmax(longest, s);
+            if (s < o->min_seg)
+                finding(t, "stitch of %.3f mm shorter than %.3f mm", s, o->min_seg);
+            if (o->max_seg > 0 && s > o->max_seg)
+                finding(t, "stitch of %.3f mm longer than %.3f mm", s, o->max_seg);
+        }
+    }
+    printf("points: %lu, stitches: %lu, jumps: %lu\n", (unsigned long)p->n, (unsigned long)segs,
+           (unsigned long)jumps);
+    printf("length: %.1f mm (%.2f in)\n", len, len / 25.4);
+    printf("bbox: %.3f %.3f %.3f %.3f in\n", b.min.x / 25.4, b.min.y / 25.4, b.max.x / 25.4,
+           b.max.y / 25.4);
+    if (segs > 0)
+        printf("stitch lengths: %.3f .. %.3f mm\n", shortest, longest);
+    if (jumps > o->max_jumps)
+        finding(t, "%.0f jumps (needle-up moves), more than %.0f allowed", (double)jumps,
+                (double)o->max_jumps);
+}
+
+static int crossings(qc_ctx *ctx, const check_opts *o, const qc_plan *p, tally *t)
+{
+    size_t n = 0;
+
+    if (qc_path_self_crossings(ctx, p->p, p->n, 0, &n) < 0)
+        return cli_fail(ctx, o->file, ctx->status);
+    printf("self-crossings: %lu\n", (unsigned long)n);
+    if (o->no_crossing && n > 0)
+        finding(t, "%.0f self-crossings (--no-crossing)", (double)n, 0);
+    return CLI_OK;
+}
+
+static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, tally *t)
+{
+    qc_region r;
+    size_t i, outside = 0;
+    double gap;
+    int rc = cli_load_region(ctx, o->region, cli_units_mm(o->units), &r);
+
+    if (rc != CLI_OK)
+        return rc;
+    for (i = 0; i < p->n; i++)
+        if (!qc_region_contains(&r, p->p[i]))
+            outside++;
+    if (outside > 0)
+        finding(t, "%.0f points outside the region", (double)outside, 0);
+    gap = qc_largest_gap(ctx, &r, p->p, p->n, 0.5, NULL);
+    qc_region_free(ctx, &r);
+    if (gap < 0)
+        return cli_fail(ctx, o->file, (int)gap);
+    printf("largest unquilted gap: %.1f mm radius\n", gap);
+    return CLI_OK;
 }
 
 int cmd_check(int argc, char **argv)
 {
+    check_opts o;
     qc_ctx ctx;
+    qc_plan plan = {0};
+    tally t = {0};
     char *buf;
-    size_t len, findings = 0;
+    size_t len, dialect = 0;
     int rc;
 
-    if (argc == 2 && strcmp(argv[1], "--help") == 0) {
-        puts("usage: quiltc check FILE.pat\nReports every dialect fault; exit 0 when sewable.");
-        return CLI_OK;
-    }
-    if (argc != 2) {
-        cli_error("check: expected one FILE.pat");
-        return CLI_USAGE;
-    }
-    if (cli_read_file(argv[1], (size_t)256 << 20, &buf, &len) != 0)
+    memset(&o, 0, sizeof o);
+    rc = parse(argc, argv, &o);
+    if (rc != CLI_OK)
+        return rc < 0 ? CLI_OK : rc;
+    if (cli_read_file(o.file, (size_t)256 << 20, &buf, &len) != 0)
         return CLI_RUNTIME;
     qc_ctx_init(&ctx, NULL, NULL);
-    {
-        qc_plan plan = {0};
-        size_t counted = 0;
-        rc = qc_io_check_pat(&ctx, buf, len, print_finding, &findings, &plan, &counted);
-        findings = counted > findings ? counted : findings;
-        qc_plan_free(&ctx, &plan);
-    }
+    rc = qc_io_check_pat(&ctx, buf, len, print_dialect, &t, &plan, &dialect) < 0
+             ? cli_fail(&ctx, o.file, ctx.status)
+             : CLI_OK;
     free(buf);
-    if (rc < 0)
-        return cli_fail(&ctx, argv[1], ctx.status);
-    printf("%s: %lu finding%s\n", argv[1], (unsigned long)findings, findings == 1 ? "" : "s");
-    return findings == 0 ? CLI_OK : CLI_RUNTIME;
+    if (rc == CLI_OK && plan.n > 0) {
+        measure(&o, &plan, &t);
+        rc = crossings(&ctx, &o, &plan, &t);
+        if (rc == CLI_OK && o.region != NULL)
+            rc = against_region(&ctx, &o, &plan, &t);
+    } else if (rc == CLI_OK) {
+        finding(&t, "no stitches in the file", 0, 0);
+    }
+    qc_plan_free(&ctx, &plan);
+    if (rc != CLI_OK)
+        return rc;
+    if (dialect > t.findings)
+        t.findings = dialect;
+    printf("%s: %lu finding%s: %s\n", o.file, (unsigned long)t.findings,
+           t.findings == 1 ? "" : "s", t.findings ? "not sewable" : "sewable");
+    return t.findings == 0 ? CLI_OK : CLI_RUNTIME;
 }

@@ -120,7 +120,8 @@ check help_version_and_lists help_and_version
 
 # A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
 job_four_blocks() {
-    "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat && "$QC" check quilt.pat >/dev/null 2>&1
+    "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat &&
+        "$QC" check quilt.pat --max-jumps 3 | grep -q "jumps: 3" || return 1
     python3 - <<'PY'
 import re
 lines = open('quilt.pat', 'rb').read().split(b'\r\n')[:-2]
@@ -154,6 +155,30 @@ job_errors() {
     [ ! -e quilt.pat ] && [ -z "$(ls -A | grep -v json)" ]
 }
 check job_file_errors_name_the_key job_errors
+
+# quiltc check finds each kind of fault in deliberately broken files.
+check_finds() { # FILE PATTERN: exit 1 and a line matching PATTERN
+    "$QC" check "$ROOT/tests/bad/pat/$1" --region rect:8x8 --no-crossing > out.txt
+    [ $? -eq 1 ] && grep -q -- "$2" out.txt && grep -q "not sewable" out.txt || { cat out.txt; return 1; }
+}
+check check_finds_numbering check_finds numbering.pat "N4 where N3 was expected"
+check check_finds_decimals check_finds decimals.pat "X has 2 and Y 3 decimals"
+check check_finds_lf_endings check_finds lf_endings.pat "expected CRLF"
+check check_finds_unknown_command check_finds unknown_command.pat "unknown command 'G05"
+check check_finds_missing_m02 check_finds missing_m02.pat "missing the final M02"
+check check_finds_jumps check_finds jump.pat "1 jumps (needle-up moves), more than 0"
+check check_finds_short_stitch check_finds short_stitch.pat "stitch of 0.051 mm shorter"
+check check_finds_points_outside check_finds outside.pat "1 points outside the region"
+check check_finds_self_crossing check_finds crossing.pat "1 self-crossings"
+check check_finds_empty_file check_finds empty.pat "no stitches"
+
+# Every format quiltc writes from a PAT reads back; a PAT round trip is exact.
+convert_round_trip() {
+    "$QC" generate -o a.pat --region circle:5 &&
+        for ext in svg dxf plt qli qcc iqp bqm gcode pat; do "$QC" convert a.pat "b.$ext" || return 1; done &&
+        cmp a.pat b.pat && "$QC" convert b.svg c.pat && "$QC" check c.pat >/dev/null
+}
+check convert_pat_to_every_format convert_round_trip
 
 # Errors: the status, one stderr line naming the value, and no file left behind.
 fails_cleanly() {
