@@ -102,7 +102,9 @@ QC__HIDDEN int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound 
  * is replaced by the boundary between where it leaves and where it comes
  * back (the side that, with the stretch, does not wind round the inside
  * point ref; else the shorter). Curves wholly inside are kept, the rest
- * flattened to tol mm. A stretch leaving by one ring and coming back by
+ * flattened to tol mm. Where the path meets the boundary it is drawn
+ * 1e-4 tol inside, so two stretches along the same piece of boundary touch
+ * and never cross. A stretch leaving by one ring and coming back by
  * another is joined straight (counted in *jumps). QC_EEMPTY when nothing
  * is inside.
  */

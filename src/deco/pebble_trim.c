@@ -16,6 +16,7 @@ typedef struct trim {
     qc__pbound *b;
     qc_path *out;
     qc_vec2 ref;
+    double nudge;      /* points on the boundary are drawn this far inside */
     int inside;        /* where the path is now */
     int started;       /* out has this path's first point */
     int head_open;     /* started outside and not yet in */
@@ -36,6 +37,27 @@ static int emit(trim *T, qc_vec2 p)
             return qc_path_move_to(T->ctx, T->out, p);
     }
     return qc_path_line_to(T->ctx, T->out, p);
+}
+
+/* The crossing x moved a hair inside, off its edge: where two stretches of
+ * the path both follow the boundary they then only touch. The region lies
+ * left of every edge (outer rings counter-clockwise, holes clockwise). */
+static qc_vec2 inside_of(const trim *T, const qc__pcross *x)
+{
+    const qc_region *r = T->b->region;
+    uint32_t lo, hi, e = x->edge;
+    qc_vec2 a, b, p = x->at;
+    double len;
+
+    qc__pbound_ring(r, e, &lo, &hi);
+    a = r->v[e];
+    b = r->v[e + 1 < hi ? e + 1 : lo];
+    len = qc_hypot(b.x - a.x, b.y - a.y);
+    if (len > 0) {
+        p.x -= T->nudge * (b.y - a.y) / len;
+        p.y += T->nudge * (b.x - a.x) / len;
+    }
+    return p;
 }
 
 /* Winding number of the closed polyline a (then b reversed) round q. */
@@ -127,7 +149,7 @@ static int join(trim *T, const qc__pcross *x1, const qc__pcross *x2)
 
     if (qc__pbound_ring(r, x1->edge, &lo1, &hi1) != qc__pbound_ring(r, x2->edge, &lo2, &hi2)) {
         T->jumps++; /* out by one ring, in by another: no boundary joins them */
-        return emit(T, x2->at);
+        return emit(T, inside_of(T, x2));
     }
     QC__TRY(ring_ways(T, x1, x2));
     w0 = winding(&T->stretch, &T->cand[0], T->ref);
@@ -136,9 +158,9 @@ static int join(trim *T, const qc__pcross *x1, const qc__pcross *x2)
         pick = w0 == 0 ? &T->cand[0] : &T->cand[1];
     else
         pick = poly_len(&T->cand[0]) <= poly_len(&T->cand[1]) ? &T->cand[0] : &T->cand[1];
-    for (i = 1; i < pick->n; i++)
+    for (i = 1; i + 1 < pick->n; i++)
         QC__TRY(emit(T, pick->v[i]));
-    return QC_OK;
+    return emit(T, inside_of(T, x2));
 }
 
 /* The straight piece a -> b. */
@@ -152,7 +174,7 @@ static int segment(trim *T, qc_vec2 a, qc_vec2 b)
     for (i = 0; i < ncr; i++) {
         const qc__pcross *x = &T->cr[i];
         if (T->inside) { /* leaving */
-            QC__TRY(emit(T, x->at));
+            QC__TRY(emit(T, inside_of(T, x)));
             T->exit_at = *x;
             T->stretch.n = 0;
             QC__TRY(qc_points_push(T->ctx, &T->stretch, x->at));
@@ -160,7 +182,7 @@ static int segment(trim *T, qc_vec2 a, qc_vec2 b)
             QC__TRY(qc_points_push(T->ctx, &T->head, x->at));
             T->head_open = 0;
             T->first_at = *x;
-            QC__TRY(emit(T, x->at));
+            QC__TRY(emit(T, inside_of(T, x)));
         } else {
             QC__TRY(qc_points_push(T->ctx, &T->stretch, x->at));
             QC__TRY(join(T, &T->exit_at, x));
@@ -259,6 +281,7 @@ int qc__path_trim(qc_ctx *ctx, qc__pbound *b, const qc_path *in, qc_vec2 ref, do
     T.b = b;
     T.out = out;
     T.ref = ref;
+    T.nudge = 1e-4 * tol;
     rc = run(&T, in, tol, &one, &flat);
     if (jumps != NULL)
         *jumps += T.jumps;
