@@ -101,6 +101,10 @@ void csv_should_read_points_headers_comments_and_crlf(void)
     TEST_ASSERT_EQUAL_size_t(2, pts.n);
     assert_point(&pts, 1, 30, 40);
     qc_points_free(&ctx, &pts);
+    /* a header starting like a TSPLIB keyword is still a CSV header */
+    TEST_ASSERT_EQUAL_INT(QC_OK, read_str("name,type\n1,1\n", &pts));
+    TEST_ASSERT_EQUAL_size_t(1, pts.n);
+    qc_points_free(&ctx, &pts);
 }
 
 void numbers_should_round_correctly_in_any_locale(void)

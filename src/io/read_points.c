@@ -322,14 +322,19 @@ static const char *const tsplib_keys[] = {
     "CAPACITY", "NODE_COORD_TYPE", "DISPLAY_DATA_TYPE", "EDGE_WEIGHT_FORMAT",
     "EDGE_DATA_FORMAT"};
 
+/* The first line with content is a TSPLIB keyword followed by ':' or by
+ * nothing ("NAME : a280", "NODE_COORD_SECTION"); a CSV header such as
+ * "name,x" is not. */
 static int is_tsplib(const reader *r)
 {
     const char *s = skip_space(r->s, r->e);
     size_t i;
 
     for (i = 0; i < sizeof tsplib_keys / sizeof *tsplib_keys; i++)
-        if (word_is(s, r->e, tsplib_keys[i]))
-            return 1;
+        if (word_is(s, r->e, tsplib_keys[i])) {
+            const char *t = skip_space(s + strlen(tsplib_keys[i]), r->e);
+            return t == r->e || *t == ':';
+        }
     return 0;
 }
 
