@@ -5,8 +5,9 @@
 // the last preview stays, upload and drop an SVG region, download machine
 // files and compare them with the CLI's bytes, run the sew animation, fit a
 // phone-sized screen. Screenshots go to build/web-shots/.
-import { spawnSync } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
+import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -269,6 +270,33 @@ await report.run('phone_screen', async () => {
   assert(box.width > 300 && box.width <= 390, `preview ${box.width} px wide`);
   await shot(page, '08-phone');
   await page.setViewportSize({ width: 1200, height: 900 });
+});
+
+await report.run('python_http_server', async () => {
+  const py = spawnSync('python3', ['--version']);
+  if (py.status !== 0) throw new Skip('python3 not installed');
+  const port = await new Promise((resolve) => {
+    const s = net.createServer().listen(0, '127.0.0.1', () => { const p = s.address().port; s.close(() => resolve(p)); });
+  });
+  const child = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], { cwd: WEB, stdio: 'ignore' });
+  try {
+    const p2 = await context.newPage();
+    p2.on('pageerror', (e) => consoleErrors.push(`python server page: ${e.message}`));
+    for (let i = 0; ; i++) { // until the server listens
+      try {
+        await p2.goto(`http://127.0.0.1:${port}/`);
+        break;
+      } catch (err) {
+        if (i > 50) throw err;
+        await p2.waitForTimeout(100);
+      }
+    }
+    await waitDrawn(p2, 0, 60000);
+    assert(Number(await p2.evaluate(() => document.getElementById('preview').dataset.points)) > 100, 'no preview');
+    await p2.close();
+  } finally {
+    child.kill();
+  }
 });
 
 await report.run('no_console_errors', async () => {

@@ -277,7 +277,7 @@ function draw(r) {
   svg.innerHTML = `<g transform="translate(0 ${h.toFixed(2)}) scale(1 -1)">${ruler(w, h, size)}
     <path id="regionPath" d="${regionD}" fill-rule="evenodd"/>
     <path id="stitchPath" d="${d}"/>
-    <path id="sewPath" d="${d}" stroke-width="${(size / 250).toFixed(3)}" visibility="hidden"/>
+    <path id="sewPath" d="${d}" stroke-width="${(size / 300).toFixed(3)}" visibility="hidden"/>
     <circle id="needle" r="${(size / 120).toFixed(2)}" visibility="hidden"/></g>`;
   svg.dataset.points = r.flags.length;
   svg.dataset.generation = ++generation;
