@@ -161,4 +161,85 @@ QC__HIDDEN int qc__ftree_loop(qc_ctx *ctx, const qc__ftree *t, uint32_t root,
 QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint32_t b,
                               const qc__fstyle *st, qc_points *out);
 
+/* ---- distance grids and offset rings (offset.c) ---- */
+
+/* Distance to a region's boundary sampled on a grid: node (i, j) at
+ * (x0 + i h, y0 + j h), v > 0 inside, < 0 outside; seg: each node's
+ * nearest boundary edge (edge e runs from vertex prev[e] to vertex e;
+ * next[e] is the edge after it); flat: 1 where the nearest point is inside
+ * that edge. The region must outlive the grid. */
+typedef struct qc__sdf {
+    double x0, y0, h;
+    size_t nx, ny;
+    double *v;
+    uint32_t *seg;
+    unsigned char *flat;
+    uint32_t *prev, *next;
+    const qc_region *region;
+} qc__sdf;
+
+/* The signed distance of a normalized region on a grid of spacing about h
+ * (raised so the grid has at most 2^22 nodes) padded by two nodes round its
+ * box: exact distances near the boundary, nearest edges carried by two
+ * raster sweeps elsewhere. Errors: QC_EEMPTY (no outline), QC_ERANGE (h not
+ * > 0), QC_ENOMEM. */
+QC__HIDDEN int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out);
+QC__HIDDEN void qc__sdf_free(qc_ctx *ctx, qc__sdf *s);
+/* Bilinear value at p (the border value outside the grid). */
+QC__HIDDEN double qc__sdf_at(const qc__sdf *s, qc_vec2 p);
+/* Signed distance at p to the nearest of the edges nearest to the four
+ * nodes round p and their neighbours (exact wherever those include the
+ * true nearest edge, which is all but contrived cases); grad (may be NULL)
+ * receives the unit gradient. */
+QC__HIDDEN double qc__sdf_exact(const qc__sdf *s, qc_vec2 p, qc_vec2 *grad);
+/* Grid node of largest value (ties: the lowest index) and its position. */
+QC__HIDDEN double qc__sdf_max(const qc__sdf *s, qc_vec2 *at);
+
+/* Closed rings, ring after ring (closing implicitly). */
+typedef struct qc__rings {
+    qc_points pts;
+    qc_order end;      /* one past each ring's last vertex */
+    qc_order level;    /* each ring's level index k */
+} qc__rings;
+
+/* Appends the iso-contours v = l0 + k step, k = 0 .. max_levels - 1, by
+ * marching squares (saddles by the cell's mean), each with the higher side
+ * on its left (counter-clockwise round the parts above the level). Every
+ * vertex lies on its level (exact field) and every chord within 0.2% of
+ * step of it. Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__sdf_rings(qc_ctx *ctx, const qc__sdf *s, double l0, double step,
+                             size_t max_levels, qc__rings *out);
+QC__HIDDEN void qc__rings_free(qc_ctx *ctx, qc__rings *r);
+
+/* ---- rings joined into one path (echo_join.c) ---- */
+
+typedef struct qc__join_opts {
+    double gap;      /* width of a ladder: two parallel steps gap mm apart */
+    double reach;    /* longest ordinary step, mm */
+    uint32_t start;  /* vertex (index into the rings' points) to start at */
+    int spiral;      /* 1: chain rings by single steps where possible (open path) */
+    const qc__sdf *sdf; /* if not NULL, steps keep sdf >= vmin (the margin) */
+    double vmin;
+} qc__join_opts;
+
+/* What the join did. */
+typedef struct qc__join_info {
+    size_t ladders, spurs, tails; /* links of each kind */
+    size_t jumps;    /* rings reached by a straight jump (no clear step) */
+    size_t low;      /* steps that had to leave the sdf >= vmin zone */
+} qc__join_info;
+
+/* Joins every ring into one path appended to *out (consecutive points are
+ * joined; no closing point is implied). Rings are linked into a tree by
+ * steps along their normals that cross no ring and no other step, chosen
+ * shortest first: ladders (two parallel steps; the walk goes out along
+ * one, round the other ring and back along the other) or, for rings too
+ * small to cut, spurs (one step sewn out and back). With spiral set, a
+ * chain of single steps (each ring sewn round from where the step lands
+ * to just short of it, then on to the next ring) is laid first, so
+ * concentric rings become one spiral. Rings no step reaches are joined by
+ * straight jumps (counted). Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o,
+                              qc_points *out, qc__join_info *info);
+
 #endif
