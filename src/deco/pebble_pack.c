@@ -249,6 +249,7 @@ static qc_vec2 unit_from(qc_vec2 a, qc_vec2 b)
 }
 
 #define NEAR 6
+#define RETRIES 2 /* passes over the hemmed-in points */
 
 /* Up to NEAR pebbles whose edges lie within reach of x, nearest first. */
 static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
@@ -282,9 +283,46 @@ static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
 
 /* ---- phase 1: sizes, in the skeleton's order ---- */
 
+/* Whether the straight stitch from pebble b to the circle (x, c) (between
+ * the two facing points) keeps clear of the boundary and every pebble. */
+static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[b], x), p, q, mid;
+    double half;
+    uint32_t r[4], cx, cy;
+
+    p = v2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+    q = v2(x.x - u.x * c, x.y - u.y * c);
+    if (qc__pbound_crossings(P->b, p, q) != 0)
+        return 0;
+    mid = v2(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
+    half = 0.5 * dist(p, q);
+    cell_box(P, mid, half + P->rmax, r);
+    for (cy = r[1]; cy <= r[3]; cy++)
+        for (cx = r[0]; cx <= r[2]; cx++) {
+            uint32_t j = P->head[cy * P->nx + cx];
+            for (; j != QC__PEB_NONE; j = P->next[j]) {
+                double ex = q.x - p.x, ey = q.y - p.y, l2 = ex * ex + ey * ey, t, dx, dy;
+                if (j == b)
+                    continue;
+                t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
+                t = t < 0 ? 0 : t > 1 ? 1 : t;
+                dx = p.x + t * ex - pb->c[j].x;
+                dy = p.y + t * ey - pb->c[j].y;
+                if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
+                    return 0;
+            }
+        }
+    return 1;
+}
+
 /* Skeleton point m (its parent's pebble a, or none): *anchor receives the
- * pebble its children hang from. */
-static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *anchor)
+ * pebble its children hang from. Returns 1 when m is hemmed in by pebbles
+ * and boundary with room for a pebble but no way in yet (tried again once
+ * every point has been visited; dropped on the last try). */
+static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *anchor,
+                 int last)
 {
     qc__pebbles *pb = P->pb;
     qc_vec2 x = pts[m], u, x0;
@@ -295,7 +333,7 @@ static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t 
     if (pb->n > 0 ? !same_side(P, pb->c[a != QC__PEB_NONE ? a : 0], x)
                   : !qc_region_contains(P->b->region, x)) {
         pb->dropped++; /* outside the region */
-        return;
+        return 0;
     }
     c = clearance(P, x, pb->r_first, QC__PEB_NONE, QC__PEB_NONE, QC__PEB_NONE, &q);
     if (pb->n == 0) { /* the root */
@@ -307,14 +345,14 @@ static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t 
             *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
         else
             pb->dropped++;
-        return;
+        return 0;
     }
     if (a == QC__PEB_NONE)
         a = q < ARG_BOUND ? q : nearest(P, x);
     if (c < pb->r_min) { /* covered already */
         *anchor = q < ARG_BOUND ? q : a;
         pb->dropped++;
-        return;
+        return 0;
     }
     len = dist(x, pb->c[a]);
     if (c < pb->r_first && len - pb->r_first >= pb->r_min && len - pb->r_first < c)
@@ -322,7 +360,7 @@ static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t 
     gap = len - pb->r[a] - c;
     if (gap <= pb->touch) {
         *anchor = place(P, x, c, a, m, 0);
-        return;
+        return 0;
     }
     u = unit_from(pb->c[a], x);
     x0 = v2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
@@ -335,13 +373,13 @@ static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t 
             uint32_t f = place(P, v2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
                                QC__PEB_NONE, QC__PEB_FILLER);
             *anchor = place(P, x, c, f, m, 0);
-            return;
+            return 0;
         }
         /* else slide towards the parent */
         s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
         if (s >= pb->r_min) {
             *anchor = place(P, v2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
-            return;
+            return 0;
         }
     }
     /* or from one of the nearest other pebbles, the roomiest */
@@ -367,23 +405,39 @@ static void visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t 
             u = unit_from(pb->c[best], x);
             x0 = v2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
             *anchor = place(P, v2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
-            return;
+            return 0;
         }
-        if (nn > 0) {
-            /* hemmed in by pebbles: left for phase 2 rather than crossed */
+        /* no tangent way in: a straight stitch (sewn there and back) from
+         * the nearest pebble it reaches crossing nothing */
+        nn = nearest_few(P, x, c + 4 * pb->r_first, near);
+        best = bridge_clear(P, x, c, a) ? a : QC__PEB_NONE;
+        for (k = 0; k < nn; k++) {
+            uint32_t b = near[k];
+            if (b != a && (best == QC__PEB_NONE || dist(x, pb->c[b]) - pb->r[b] <
+                                                   dist(x, pb->c[best]) - pb->r[best]) &&
+                bridge_clear(P, x, c, b))
+                best = b;
+        }
+        if (best != QC__PEB_NONE) {
+            *anchor = place(P, x, c, best, m, QC__PEB_BRIDGE);
+            return 0;
+        }
+        if (nn > 0) { /* hemmed in: later, or left rather than crossed */
             *anchor = near[0];
-            pb->dropped++;
-            return;
+            pb->dropped += (size_t)last;
+            return !last;
         }
     }
     /* cut off from every pebble (another part of the region): a straight stitch */
     *anchor = place(P, x, c, a, m, QC__PEB_BRIDGE);
+    return 0;
 }
 
 static int phase1(pack *P, const qc_skeleton *skel)
 {
     qc_ctx *ctx = P->ctx;
     size_t n = skel->n, i;
+    int pass;
     uint32_t *anchor = qc__alloc_array(ctx, n, sizeof *anchor);
     unsigned char *seen = qc__alloc(ctx, n);
     int rc = QC_OK;
@@ -397,18 +451,22 @@ static int phase1(pack *P, const qc_skeleton *skel)
         uint32_t m = skel->order[i], par;
         if (seen[m])
             continue;
-        seen[m] = 1;
         par = i > 0 ? anchor[skel->order[i - 1]] : QC__PEB_NONE;
-        visit(P, skel->p, m, par, &anchor[m]);
+        seen[m] = (unsigned char)(1 + visit(P, skel->p, m, par, &anchor[m], 0));
     }
     /* points the order missed: the root first, each from its nearest pebble */
     for (i = 0; i <= n; i++) {
         uint32_t m = i == 0 ? (skel->root < n ? skel->root : 0) : (uint32_t)(i - 1);
         if (seen[m])
             continue;
-        seen[m] = 1;
-        visit(P, skel->p, m, QC__PEB_NONE, &anchor[m]);
+        seen[m] = (unsigned char)(1 + visit(P, skel->p, m, QC__PEB_NONE, &anchor[m], 0));
     }
+    /* the hemmed-in points again, now that every other point has its pebble */
+    for (pass = 1; pass <= RETRIES; pass++)
+        for (i = 0; i < n; i++)
+            if (seen[i] == 2)
+                seen[i] = (unsigned char)(1 + visit(P, skel->p, (uint32_t)i, QC__PEB_NONE,
+                                                    &anchor[i], pass == RETRIES));
 out:
     qc__free(ctx, anchor, n * sizeof *anchor);
     qc__free(ctx, seen, n);
