@@ -103,9 +103,12 @@ int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len,
 int qc_io_read_svg_path(qc_ctx *ctx, const char *buf, size_t len,
                         const qc_svg_opts *opts, qc_path *out);
 
-/* Reads points: CSV "x,y" lines (a header line and '#' comments allowed) or
- * TSPLIB (NODE_COORD_SECTION, EDGE_WEIGHT_TYPE EUC_2D). Appends to *out.
- * Errors: QC_EFORMAT naming the line, QC_ERANGE, QC_EEMPTY. */
+/* Reads points: CSV "x,y" lines (comma-separated; a header as the first
+ * content line, '#' comments, a UTF-8 BOM allowed) or TSPLIB
+ * (NODE_COORD_SECTION with ids 1..DIMENSION in order; EUC_2D, CEIL_2D, ATT,
+ * MAX_2D, MAN_2D). Coordinates within 1e9. Appends to *out, which keeps its
+ * contents on error. Errors: QC_EFORMAT naming the line and text, QC_ERANGE,
+ * QC_EEMPTY, QC_ELIMIT, QC_EINVAL, QC_ENOMEM. */
 int qc_io_read_points(qc_ctx *ctx, const char *buf, size_t len, qc_points *out);
 
 #ifdef __cplusplus

@@ -44,8 +44,12 @@ typedef struct qc_tsp_params {
 /*
  * A closed tour through all n points: out receives n indices (appended),
  * starting at index 0; the closing edge back to the start is implicit.
- * With method >= 2OPT the tour has no crossing edges. n <= 3 is returned in
- * index order. Errors: QC_ERANGE (NaN/inf), QC_ENOMEM.
+ * With method >= 2OPT no two edges cross properly (collinear input may
+ * still overlap along its line). Perturbation runs with OROPT only;
+ * neighbours is capped at 32. n <= 3 is returned in index order.
+ * Errors: QC_EINVAL (unknown method, negative neighbours, NULL arrays),
+ * QC_ERANGE (NaN/inf or beyond 1e150), QC_ELIMIT (above 2^28 points),
+ * QC_ENOMEM.
  */
 int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
            qc_order *out);
