@@ -18,8 +18,11 @@ typedef struct gen_opts {
     double feed;
 } gen_opts;
 
-static void usage(FILE *f)
+/* --help after --family F lists only F's parameters. */
+static void usage(FILE *f, const char *family)
 {
+    int fam = family != NULL ? qc_family_from_name(family) : -1;
+
     fputs("usage: quiltc generate [options]\n"
           "Generates one continuous free-motion pattern inside a block outline.\n"
           "  -o, --output FILE        write FILE, format from its extension (repeatable;\n"
@@ -32,7 +35,7 @@ static void usage(FILE *f)
           "  --upload DEVICE          send the first output to a machine (VID:PID or BUS-PORT)\n"
           "  -q, --quiet              no progress output\n",
           f);
-    cli_pattern_help(f, 0xFFFFFFFFu);
+    cli_pattern_help(f, fam > 0 ? 1u << fam : 0xFFFFFFFFu);
     fputs("Lengths are in --units unless suffixed (12mm, 0.5in). Example:\n"
           "  quiltc generate --region heart:10 --family branching --spacing 0.6 -o heart.pat\n",
           f);
@@ -48,7 +51,7 @@ static int parse(int argc, char **argv, gen_opts *g)
         {"feed", required_argument, NULL, 'F'},
     };
     struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
-    int c, rc = CLI_OK;
+    int c, rc = CLI_OK, help = 0;
     unsigned long long tie;
 
     if (opts == NULL) {
@@ -84,7 +87,7 @@ static int parse(int argc, char **argv, gen_opts *g)
                 rc = CLI_USAGE;
             }
             break;
-        case 'h': usage(stdout); rc = -1; break;
+        case 'h': help = 1; break;
         default:
             if (!cli_pattern_take(&g->pat, c, optarg)) {
                 cli_bad_option("generate", argv[optind - 1], c);
@@ -93,6 +96,11 @@ static int parse(int argc, char **argv, gen_opts *g)
         }
     }
     free(opts);
+    if (rc == CLI_OK && help) {
+        size_t n;
+        usage(stdout, g->pat.raw[qc_param_find("family") - qc_param_table(&n)]);
+        return -1;
+    }
     if (rc == CLI_OK && optind < argc) {
         cli_error("generate: unexpected argument '%s'", argv[optind]);
         rc = CLI_USAGE;

@@ -111,6 +111,15 @@ assert s["length_mm"] < 7542 * 1.02, s["length_mm"]
 }
 check tsplib_berlin52_tour_near_optimal tsplib_tour
 
+motif_library() {
+    [ "$("$QC" motifs | wc -l)" -ge 16 ] && "$QC" motifs | grep -q '^loop60 .*two legs' &&
+        "$QC" motifs --svg leaf -o leaf.svg && grep -q '<path' leaf.svg &&
+        expect_fail 2 "unknown motif" "$QC" motifs --svg nosuch &&
+        "$QC" generate --family branching --help | grep -q -- '--angle' &&
+        ! "$QC" generate --family branching --help | grep -q -- '--tangent'
+}
+check motifs_listed_and_drawn_family_help motif_library
+
 help_and_version() {
     "$QC" --help | grep -q generate && "$QC" generate --help | grep -q -- '--spacing' &&
         "$QC" --version | grep -q '^quiltc [0-9]' && "$QC" list families | grep -q stipple &&

@@ -172,15 +172,14 @@ static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
         qc_bbox box = qc_region_bbox(region);
         unsigned cols = prm->repeat_cols >= 1.0 ? (unsigned)prm->repeat_cols : 1u;
         unsigned rows = prm->repeat_rows >= 1.0 ? (unsigned)prm->repeat_rows : 1u;
-
         double h = box.max.y - box.min.y;
-        size_t i;
+        size_t k;
 
         rc = qc_tile_repeat(ctx, &one, exit.x - entry.x, h, cols, rows, &rep);
         /* rows are sewn top down: lift them so the bottom row sits on the
          * tile's own box, keeping every coordinate above the region's corner */
-        for (i = 0; i < rep.npt; i++)
-            rep.pt[i].y += (double)(rows - 1) * h;
+        for (k = 0; k < rep.npt; k++)
+            rep.pt[k].y += (double)(rows - 1) * h;
         if (rc == QC_OK)
             rc = qc_path_append(ctx, out, &rep, 1);
     } else {
