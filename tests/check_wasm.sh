@@ -45,7 +45,9 @@ if ! command -v node >/dev/null 2>&1; then
     case_ignore wasm_node "node not installed"
     finish
 fi
-if make --no-print-directory BUILD="$BUILD" wasm "$BUILD/tests/qcw_native" >"$log/make.log" 2>&1; then
+# in parallel unless a parent make already shares its job slots
+case " $MAKEFLAGS " in *jobserver*|*" -j"*) jobs= ;; *) jobs=-j$(nproc 2>/dev/null || echo 2) ;; esac
+if ${MAKE:-make} --no-print-directory $jobs BUILD="$BUILD" wasm "$BUILD/tests/qcw_native" >"$log/make.log" 2>&1; then
     case_pass make_wasm
 else
     case_fail make_wasm "$(grep -E 'error' "$log/make.log" | head -n 2 | tr '\n' ' ')"

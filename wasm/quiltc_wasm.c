@@ -210,6 +210,44 @@ const char *qcw_params_json(qcw_job *job)
     return finish_json(job, &out);
 }
 
+/* Enum row value k (1-based) as its choice name. */
+static void add_choice(text *t, const char *choices, int k)
+{
+    const char *s = choices;
+
+    while (--k > 0 && s != NULL)
+        s = strchr(s, '|') != NULL ? strchr(s, '|') + 1 : NULL;
+    if (s == NULL) {
+        add(t, "null");
+        return;
+    }
+    add(t, "\"%.*s\"", (int)(strchr(s, '|') != NULL ? (size_t)(strchr(s, '|') - s) : strlen(s)), s);
+}
+
+const char *qcw_resolved_json(qcw_job *job)
+{
+    size_t n, i;
+    const qc_param_info *t = qc_param_table(&n);
+    qc_params r;
+    text out = {0};
+
+    qc_clear_error(&job->ctx);
+    if (qc_params_resolve(&job->ctx, &job->params, &r) < 0)
+        return NULL;
+    add(&out, "{");
+    for (i = 0; i < n; i++) {
+        add(&out, "%s\"%s\":", i ? "," : "", t[i].name);
+        if (t[i].type == QC_PARAM_ENUM)
+            add_choice(&out, t[i].choices, (int)qc_params_get(&r, &t[i]));
+        else if (t[i].type == QC_PARAM_SEED)
+            add(&out, "\"%llu\"", (unsigned long long)r.seed);
+        else
+            add(&out, "%.17g", qc_params_get(&r, &t[i]));
+    }
+    add(&out, "}");
+    return finish_json(job, &out);
+}
+
 const char *qcw_motifs_json(qcw_job *job)
 {
     size_t n = qc_motif_builtin_count(), i;

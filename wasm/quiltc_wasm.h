@@ -26,6 +26,10 @@ const char *qcw_version(void);
  * motif names as a JSON array of strings. */
 const char *qcw_params_json(qcw_job *job);
 const char *qcw_motifs_json(qcw_job *job);
+/* Every parameter as qc_params_resolve fills it from the job's parameters
+ * (lengths in mm, enums by choice name, the seed as a decimal string), as a
+ * JSON object by row name; NULL (and qcw_error) if they do not resolve. */
+const char *qcw_resolved_json(qcw_job *job);
 
 /* The region, normalized and moved so its bounding box starts at (0, 0),
  * exactly as the CLI loads it. On failure the job has no region. */

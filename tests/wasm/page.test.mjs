@@ -32,7 +32,7 @@ const native = path.join(BUILD, 'tests/qcw_native');
 function reference(args, out) {
   const [prog, pre] = cliReady ? [cli, ['generate']] : [native, []];
   const r = spawnSync(prog, [...pre, ...args, '-o', out], { encoding: 'utf8', timeout: 60000 });
-  assert(r.status === 0, `${path.basename(prog)} ${args.join(' ')} failed: ${r.stderr}`);
+  assert(r.status === 0, `${path.basename(prog)} ${args.join(' ')} failed (${r.error?.message || `exit ${r.status}`}): ${r.stderr}`);
   return fs.readFileSync(out);
 }
 
@@ -91,6 +91,11 @@ await report.run('default_preview_drawn', async () => {
   assert(/yd$/.test(await stat(page, 'thread')), 'no thread estimate');
   const ruler = await page.$$eval('.ruler text', (t) => t.map((x) => x.textContent));
   assert(ruler.includes('8') && ruler.includes('in'), `ruler labels ${ruler.join(' ')}`);
+  // empty controls show the library's resolved defaults, in inches
+  assert(await attr(page, '[data-param=spacing]', 'placeholder') === '0.5', 'spacing default');
+  assert(await attr(page, '[data-param=margin]', 'placeholder') === '0.15', 'margin default (0.3 d)');
+  const points = await page.$eval('[data-param=points] option', (o) => o.textContent);
+  assert(points === 'default (poisson)', `points default: ${points}`);
   await shot(page, '01-default');
 });
 

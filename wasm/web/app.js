@@ -215,6 +215,7 @@ async function regenerate() {
     r.drawMs = performance.now() - t1;
     r.totalMs = performance.now() - t0;
     showStats(r);
+    showDefaults(r.resolved);
     $('cli').textContent = commandLine(s);
     showError('');
     setState('ready');
@@ -283,6 +284,17 @@ function draw(r) {
   svg.dataset.generation = ++generation;
   stopSew();
   prepareSew(r);
+}
+
+// Empty controls show the value the library resolved for them.
+function showDefaults(resolved) {
+  for (const el of $('params').querySelectorAll('[data-param]')) {
+    const row = table.find((t) => t.name === el.dataset.param);
+    const v = resolved[row.name];
+    if (v === undefined || v === null) continue;
+    if (row.type === 'enum') el.options[0].textContent = `default (${v})`;
+    else el.placeholder = fmt(row.type === 'length' ? v / mmPerUnit() : v, 4);
+  }
 }
 
 function showStats(r) {

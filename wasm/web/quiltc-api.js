@@ -44,6 +44,14 @@ export class Quiltc {
 
   motifNames() { return this.json(this.m._qcw_motifs_json(this.job)); }
 
+  // The parameters as the library resolves them (defaults filled in): { name: value },
+  // lengths in mm, enums by choice name, the seed as a decimal string.
+  resolved() {
+    const p = this.m._qcw_resolved_json(this.job);
+    if (!p) throw new Error(this.error());
+    return this.json(p);
+  }
+
   regionShape(spec, mmPerUnit) {
     this.withString(spec, (p) => this.check(this.m._qcw_region_shape(this.job, p, mmPerUnit)));
   }

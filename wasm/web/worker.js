@@ -1,6 +1,6 @@
 // Generation off the page's thread, so the page never freezes while the core
 // works. Messages: { type: 'generate', id, units, region, params, seed,
-// motifs, tie } -> { type: 'result', id, rings, xy, flags, stats, ms };
+// motifs, tie } -> { type: 'result', id, rings, resolved, xy, flags, stats, ms };
 // { type: 'export', id, format } -> { type: 'export', id, format, bytes };
 // any failure -> { type: 'error', id, message }.
 import createQuiltc from './quiltc.mjs';
@@ -24,7 +24,7 @@ onmessage = async (e) => {
       const t0 = performance.now();
       const out = api.generate(msg);
       const ms = performance.now() - t0;
-      postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), ...out, ms },
+      postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), resolved: api.resolved(), ...out, ms },
         [out.xy.buffer, out.flags.buffer]);
     } else if (msg.type === 'export') {
       const bytes = api.export(msg.format);
