@@ -595,7 +595,7 @@ static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, 
 
     if (pair_centre(pb, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
         return hi;
-    for (it = 0; it < 50; it++) {
+    for (it = 0; it < 40; it++) {
         double mid = 0.5 * (lo + hi);
         if (pair_centre(pb, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
             lo = mid;
@@ -650,33 +650,49 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
     qc__pebbles *pb = P->pb;
     qc_vec2 ci = pb->c[i], cj = pb->c[j], ck = pb->c[k], x;
     double s = (ck.x - cj.x) * (ci.y - cj.y) - (ck.y - cj.y) * (ci.x - cj.x);
-    double r0 = pb->r[i], R, reach;
-    uint32_t r[4], cx, cy;
+    double r0 = pb->r[i], R = pb->r_grow;
+    uint32_t ring, c0x, c0y, cx, cy, maxring;
     int general = 0;
 
-    if (!(pb->r_grow > r0))
+    if (!(R > r0))
         return 0;
     s = s < 0 ? -1 : 1;
-    R = move_limit(P, i, j, k, s, pb->r_grow);
-    reach = MOVE_MAX * P->d + R + P->rmax;
-    cell_box(P, ci, reach, r);
-    for (cy = r[1]; cy <= r[3] && !general; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t q = P->head[cy * P->nx + cx];
-            for (; q != QC__PEB_NONE; q = P->next[q]) {
-                double dq = dist(pb->c[q], ci), rq;
-                if (q == i || q == j || q == k || dq - pb->r[q] > reach - P->rmax)
-                    continue;
-                rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
-                if (rq < 0) {
-                    general = 1;
-                    break;
-                }
-                if (rq < R)
-                    R = rq;
-            }
+    c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
+    c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
+    maxring = P->nx > P->ny ? P->nx : P->ny;
+    /* rings of cells outwards, until none can hold a pebble the growing
+     * circle (moved at most MOVE_MAX d) reaches before R */
+    for (ring = 0; ring <= maxring && !general; ring++) {
+        double reach = MOVE_MAX * P->d;
+        if (ring >= 2) {
+            if (pair_centre(pb, j, k, R, s, &x))
+                reach = fmin(reach, dist(x, ci));
+            if ((double)(ring - 1) * P->h > reach + R + P->rmax)
+                break;
         }
+        for (cy = c0y >= ring ? c0y - ring : 0; cy <= c0y + ring && cy < P->ny && !general; cy++)
+            for (cx = c0x >= ring ? c0x - ring : 0; cx <= c0x + ring && cx < P->nx; cx++) {
+                uint32_t q;
+                if (cx + ring != c0x && cx != c0x + ring && cy + ring != c0y && cy != c0y + ring)
+                    continue; /* inside the ring: done already */
+                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
+                    double rq;
+                    if (q == i || q == j || q == k)
+                        continue;
+                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+                    if (rq < 0) {
+                        general = 1;
+                        break;
+                    }
+                    if (rq < R)
+                        R = rq;
+                }
+                if (general)
+                    break;
+            }
+    }
     if (!general) {
+        R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
         if (pair_centre(pb, j, k, R, s, &x) &&
             clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12))
