@@ -1,0 +1,242 @@
+/*
+ * The caps of docs/limits.md: a request beyond one is refused with
+ * QC_ELIMIT and a message naming the numbers, before any large allocation
+ * (the counting allocator's peak stays small), so memory stays linear in
+ * what is accepted.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "quiltc.h"
+#include "testalloc.h"
+#include "unity.h"
+
+#define SMALL_PEAK ((size_t)1 << 20) /* 1 MiB: the inputs, nothing more */
+
+static testalloc ta;
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    memset(&ta, 0, sizeof ta);
+    qc_ctx_init(&ctx, testalloc_fn, &ta);
+}
+
+void tearDown(void)
+{
+}
+
+static void assert_msg_has(const char *needle)
+{
+    TEST_ASSERT_NOT_NULL_MESSAGE(strstr(qc_errmsg(&ctx), needle), qc_errmsg(&ctx));
+}
+
+static void assert_clean(void)
+{
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+    TEST_ASSERT_FALSE(ta.size_mismatch);
+}
+
+/* A square 100 m on a side (the largest built-in shape) at the smallest
+ * spacing the table allows would be about 4.6e10 points: every family that
+ * samples refuses before allocating; echo and spiral refuse after a distance
+ * grid that has its own cap. */
+static void test_generate_should_refuse_ten_billion_points_before_allocating(void)
+{
+    int family, refused = 0;
+
+    for (family = 1; family < QC_FAMILY_COUNT; family++) {
+        qc_region r = {0};
+        qc_params p;
+        qc_result res;
+        size_t before;
+        int rc;
+
+        setUp();
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:100000x100000", 1.0, &r));
+        before = ta.peak_bytes;
+        memset(&p, 0, sizeof p);
+        qc_params_set(&ctx, &p, "family", family);
+        qc_params_set(&ctx, &p, "spacing", 0.5);
+        rc = qc_generate(&ctx, &r, &p, NULL, NULL, &res);
+        if (rc == QC_EUNSUPPORTED) {
+            qc_region_free(&ctx, &r);
+            continue;
+        }
+        TEST_ASSERT_EQUAL_INT_MESSAGE(QC_ELIMIT, rc, qc_family_name(family));
+        if (family != QC_FAMILY_ECHO && family != QC_FAMILY_SPIRAL) {
+            TEST_ASSERT_TRUE_MESSAGE(ta.peak_bytes - before < SMALL_PEAK, qc_family_name(family));
+            assert_msg_has("exceed the limit of 4000000");
+        } else { /* these build a distance grid first, itself capped */
+            TEST_ASSERT_TRUE_MESSAGE(ta.peak_bytes - before < ((size_t)64 << 20),
+                                     qc_family_name(family));
+        }
+        refused++;
+        qc_region_free(&ctx, &r);
+        assert_clean();
+    }
+    TEST_ASSERT_TRUE(refused >= 7);
+}
+
+/* Every distribution at about 10^9 points: refused, peak small. */
+static void test_sample_should_refuse_a_billion_points_for_every_kind(void)
+{
+    int kind;
+
+    for (kind = QC_SAMPLE_TRIANGLE; kind <= QC_SAMPLE_POISSON; kind++) {
+        qc_region r = {0};
+        qc_points pts = {0};
+        qc_sample_params sp;
+
+        setUp();
+        /* 31623 mm square at 1 mm: about 1e9 points */
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "square:31623", 1.0, &r));
+        memset(&sp, 0, sizeof sp);
+        sp.kind = kind;
+        sp.spacing = 1.0;
+        TEST_ASSERT_TRUE(qc_sample_estimate(&r, &sp) > 7e8);
+        TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_sample(&ctx, &r, &sp, &pts));
+        TEST_ASSERT_EQUAL_size_t(0, pts.n);
+        TEST_ASSERT_TRUE(ta.peak_bytes < SMALL_PEAK);
+        assert_msg_has("raise the spacing");
+        qc_region_free(&ctx, &r);
+        assert_clean();
+    }
+}
+
+/* A sliver: small area (few points) but a huge box the lattice would walk. */
+static void test_sample_should_refuse_a_sliver_whose_box_is_huge(void)
+{
+    static const qc_vec2 sliver[] = {{0, 0}, {90000, 90000}, {90000, 90000.05}};
+    qc_region r = {0};
+    qc_points pts = {0};
+    qc_sample_params sp;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, sliver, 3));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    memset(&sp, 0, sizeof sp);
+    sp.kind = QC_SAMPLE_SQUARE;
+    sp.spacing = 0.5;
+    TEST_ASSERT_TRUE(qc_sample_estimate(&r, &sp) < 1e5);
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_sample(&ctx, &r, &sp, &pts));
+    assert_msg_has("lattice sites");
+    TEST_ASSERT_TRUE(ta.peak_bytes < SMALL_PEAK);
+    qc_region_free(&ctx, &r);
+    assert_clean();
+}
+
+/* More given points than QC_MAX_POINTS: refused without copying them. */
+static void test_generate_should_refuse_too_many_given_points(void)
+{
+    qc_region r = {0};
+    qc_points given;
+    qc_params p;
+    qc_result res;
+    size_t before;
+
+    given.n = given.cap = (size_t)QC_MAX_POINTS + 1;
+    given.v = calloc(given.n, sizeof *given.v); /* the caller's, not counted */
+    TEST_ASSERT_NOT_NULL(given.v);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:100x100", 1.0, &r));
+    before = ta.peak_bytes;
+    memset(&p, 0, sizeof p);
+    qc_params_set(&ctx, &p, "family", QC_FAMILY_VINE);
+    qc_params_set(&ctx, &p, "points", QC_POINTS_GIVEN);
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_generate(&ctx, &r, &p, &given, NULL, &res));
+    assert_msg_has("4000001 points exceed the limit of 4000000");
+    TEST_ASSERT_TRUE(ta.peak_bytes - before < SMALL_PEAK);
+    free(given.v);
+    qc_region_free(&ctx, &r);
+    assert_clean();
+}
+
+/* An SVG larger than max_bytes (16 MiB by default) is refused unread. */
+static void test_svg_should_refuse_more_than_16_MiB_before_reading(void)
+{
+    size_t n = ((size_t)16 << 20) + 1;
+    char *big = malloc(n);
+    qc_region r = {0};
+    qc_path path = {0};
+    qc_motif_set set = {0};
+    qc_svg_opts o;
+
+    TEST_ASSERT_NOT_NULL(big);
+    memset(big, ' ', n);
+    memcpy(big, "<svg>", 5);
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_io_read_svg_region(&ctx, big, n, NULL, &r));
+    assert_msg_has("16777217 bytes exceed the limit of 16777216");
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_io_read_svg_path(&ctx, big, n, NULL, &path));
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_motif_from_svg(&ctx, big, n, "big", &set));
+    TEST_ASSERT_EQUAL_size_t(0, set.n);
+    memset(&o, 0, sizeof o);
+    o.max_bytes = 1000; /* a caller's own, smaller cap */
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_io_read_svg_region(&ctx, big, 1001, &o, &r));
+    TEST_ASSERT_EQUAL_size_t(0, ta.peak_bytes);
+    free(big);
+    assert_clean();
+}
+
+/* The largest-gap raster is capped at 2^22 cells (9 bytes each), however
+ * fine the resolution asked for. */
+static void test_largest_gap_should_cap_its_raster(void)
+{
+    qc_region r = {0};
+    qc_vec2 pts[2] = {{10, 10}, {900, 900}};
+    double g;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:1000x1000", 1.0, &r));
+    g = qc_largest_gap(&ctx, &r, pts, 2, 1e-6, NULL);
+    TEST_ASSERT_TRUE(g > 0);
+    TEST_ASSERT_TRUE(ta.peak_bytes < ((size_t)9 << 22) + SMALL_PEAK);
+    qc_region_free(&ctx, &r);
+    assert_clean();
+}
+
+/* The complete-graph MST refuses more than 20000 points before its O(n)
+ * arrays; the fuzz-sized limits of the SVG tokenizer are tested in
+ * test_svg.c. */
+static void test_complete_mst_should_refuse_above_twenty_thousand_points(void)
+{
+    size_t n = 20001;
+    qc_vec2 *p = calloc(n, sizeof *p);
+    qc_edges e = {0};
+    size_t i;
+
+    TEST_ASSERT_NOT_NULL(p);
+    for (i = 0; i < n; i++) {
+        p[i].x = (double)(i % 200);
+        p[i].y = (double)(i / 200);
+    }
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_mst(&ctx, p, n, QC_MST_MODE_COMPLETE, &e));
+    TEST_ASSERT_EQUAL_size_t(0, ta.peak_bytes);
+    free(p);
+}
+
+/* Shapes: sizes up to 1e5 mm; circles at most 4096 segments. */
+static void test_shapes_should_cap_size_and_segments(void)
+{
+    qc_region r = {0};
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "circle:100000", 1.0, &r));
+    TEST_ASSERT_TRUE(r.nv <= 4096);
+    qc_region_free(&ctx, &r);
+    memset(&r, 0, sizeof r);
+    TEST_ASSERT_TRUE(qc_region_shape(&ctx, "circle:100001", 1.0, &r) < 0);
+    TEST_ASSERT_TRUE(qc_region_shape(&ctx, "rect:1e300x5", 1.0, &r) < 0);
+    TEST_ASSERT_EQUAL_size_t(0, r.nv);
+    assert_clean();
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_generate_should_refuse_ten_billion_points_before_allocating);
+    RUN_TEST(test_sample_should_refuse_a_billion_points_for_every_kind);
+    RUN_TEST(test_sample_should_refuse_a_sliver_whose_box_is_huge);
+    RUN_TEST(test_generate_should_refuse_too_many_given_points);
+    RUN_TEST(test_svg_should_refuse_more_than_16_MiB_before_reading);
+    RUN_TEST(test_largest_gap_should_cap_its_raster);
+    RUN_TEST(test_complete_mst_should_refuse_above_twenty_thousand_points);
+    RUN_TEST(test_shapes_should_cap_size_and_segments);
+    return UNITY_END();
+}
