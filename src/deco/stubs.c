@@ -15,5 +15,4 @@
                         family);                                              \
     }
 
-QC__STUB(qc_deco_echo, "echo")
 QC__STUB(qc_deco_spiral, "spiral")
