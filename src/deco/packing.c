@@ -16,6 +16,8 @@
 #define FIT 0.999     /* motifs drawn this fraction of their pebble */
 #define SAMPLES 16    /* per cubic when looking for the nearest point */
 #define TRIM_TOL 1e-3 /* flattening where trimmed, times d */
+#define DRAW_IN 0.05  /* motifs kept this many mm inside their pebble and the region ... */
+#define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
 
 static qc_vec2 bez(const qc_vec2 *q, double t)
 {
@@ -107,7 +109,7 @@ static int cmp_att(const void *pa, const void *pb)
 
 /* Per pebble a motif (seeded) and its map: entry turned towards the parent. */
 static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, uint64_t seed,
-                        double a0)
+                        double a0, double inset)
 {
     size_t n = pb->n, i, nchoice = 0;
     uint32_t *choice = qc__alloc_array(ctx, set->n, sizeof *choice);
@@ -141,7 +143,7 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
                                  : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
         have = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
                                                   : -QC_PI / 2;
-        s = FIT * pb->r[i];
+        s = FIT * pb->r[i] - inset;
         co = qc_cos(want - have);
         si = qc_sin(want - have);
         pb->xf[i].a = s * co;
@@ -331,16 +333,18 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     if (rc == QC_OK)
         rc = qc__pebbles_pack(ctx, region, &b, params, skel, &pb);
     n = pb.n;
+    pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
         rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
     if (rc == QC_OK)
-        rc = place_motifs(ctx, &pb, motifs, params->seed, a0);
+        rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)
         rc = attachments(ctx, &pb, motifs, &atts, &first);
     if (rc == QC_OK && pb.k < 1) {
         rc = render(ctx, &pb, motifs, atts, first, &raw);
         if (rc == QC_OK)
-            rc = qc__path_trim(ctx, &b, &raw, pb.c[0], TRIM_TOL * d, out, &pb.trim_jumps);
+            rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
+                               TRIM_TOL * d, out, &pb.trim_jumps);
     } else if (rc == QC_OK) {
         rc = render(ctx, &pb, motifs, atts, first, out);
     }

@@ -65,6 +65,7 @@ typedef struct qc__pebbles {
     size_t trim_jumps;  /* overgrow: trimmed pieces joined by a straight stitch */
     /* the sizes used, mm */
     double r_min, r_first, r_grow, touch, k;
+    double draw_in;     /* circles (and trimmed paths) drawn this far inside */
     /* packing only: per pebble its motif and map (unit frame -> mm) */
     uint32_t *motif;
     qc__xf *xf;
@@ -98,17 +99,19 @@ QC__HIDDEN int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound 
 /* ---- trimming overgrown paths (pebble_trim.c) ---- */
 
 /*
- * Appends the closed path in, cut to region, to out: every stretch outside
- * is replaced by the boundary between where it leaves and where it comes
- * back (the side that, with the stretch, does not wind round the inside
- * point ref; else the shorter). Curves wholly inside are kept, the rest
- * flattened to tol mm. Where the path meets the boundary it is drawn
+ * Appends the closed path in, cut to region moved inset mm inwards (the
+ * region itself when that would change its shape), to out: every stretch
+ * outside is replaced by the boundary between where it leaves and where it
+ * comes back (the side that, with the stretch, does not wind round the
+ * inside point ref; else the shorter). Curves wholly inside are kept, the
+ * rest flattened to tol mm. Where the path meets the boundary it is drawn
  * 1e-4 tol inside, so two stretches along the same piece of boundary touch
  * and never cross. A stretch leaving by one ring and coming back by
- * another is joined straight (counted in *jumps). QC_EEMPTY when nothing
- * is inside.
+ * another is joined straight (counted in *jumps). cell, max_cells: the
+ * edge grid (qc__pbound_init). QC_EEMPTY when nothing is inside.
  */
-QC__HIDDEN int qc__path_trim(qc_ctx *ctx, qc__pbound *b, const qc_path *in, qc_vec2 ref,
+QC__HIDDEN int qc__path_trim(qc_ctx *ctx, const qc_region *region, double cell,
+                             size_t max_cells, double inset, const qc_path *in, qc_vec2 ref,
                              double tol, qc_path *out, size_t *jumps);
 
 /* ---- the families with their pebbles kept (tests) ---- */

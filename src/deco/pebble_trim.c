@@ -268,17 +268,183 @@ static int run(trim *T, const qc_path *in, double tol, qc_path *one, qc_points *
     return QC_OK;
 }
 
-int qc__path_trim(qc_ctx *ctx, qc__pbound *b, const qc_path *in, qc_vec2 ref, double tol,
-                  qc_path *out, size_t *jumps)
+/* Where the offset lines of edges a and b meet (their common point when
+ * they run on in one line). 0 when they are parallel the other way. */
+static int meet(const qc_vec2 *p, const qc_vec2 *e, uint32_t a, uint32_t b, qc_vec2 *at)
+{
+    double den = e[a].x * e[b].y - e[a].y * e[b].x, t;
+
+    if (fabs(den) < 1e-12) {
+        if (e[a].x * e[b].x + e[a].y * e[b].y <= 0)
+            return 0;
+        *at = p[b];
+        return 1;
+    }
+    t = ((p[b].x - p[a].x) * e[b].y - (p[b].y - p[a].y) * e[b].x) / den;
+    at->x = p[a].x + t * e[a].x;
+    at->y = p[a].y + t * e[a].y;
+    return 1;
+}
+
+/*
+ * One ring moved delta inwards (left of every edge): each edge's line
+ * moved, consecutive lines met; an edge whose moved piece turns round (too
+ * short for the move) is dropped and its neighbours met directly, until
+ * none does. Into out (cleared first); 0 when the ring vanishes.
+ */
+static int ring_inset(qc_ctx *ctx, const qc_vec2 *v, uint32_t m, double delta, qc_points *out,
+                      int *ok)
+{
+    qc_vec2 *p = qc__alloc_array(ctx, m, sizeof *p), *e = qc__alloc_array(ctx, m, sizeof *e);
+    uint32_t *prv = qc__alloc_array(ctx, m, sizeof *prv), *nxt = qc__alloc_array(ctx, m, sizeof *nxt);
+    uint32_t *todo = qc__alloc_array(ctx, 2 * (size_t)m, sizeof *todo);
+    unsigned char *gone = qc__alloc(ctx, m);
+    uint32_t i, n = 0, first = 0, live = m;
+    size_t nt = 0;
+    int rc = QC_OK;
+
+    *ok = 0;
+    out->n = 0;
+    if (p == NULL || e == NULL || prv == NULL || nxt == NULL || todo == NULL || gone == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    for (i = 0; i < m; i++) { /* unit directions; repeated vertices give no edge */
+        qc_vec2 a = v[i], b = v[(i + 1) % m];
+        double l = qc_hypot(b.x - a.x, b.y - a.y);
+        gone[i] = !(l > 0);
+        if (l > 0) {
+            e[i].x = (b.x - a.x) / l;
+            e[i].y = (b.y - a.y) / l;
+            p[i].x = a.x - delta * e[i].y;
+            p[i].y = a.y + delta * e[i].x;
+            n++;
+        }
+    }
+    if (n < 3)
+        goto out;
+    live = n;
+    { /* link the edges left */
+        uint32_t last = m;
+        for (i = 0; i < m; i++)
+            if (!gone[i]) {
+                if (last == m)
+                    first = i;
+                else
+                    nxt[last] = i;
+                prv[i] = last;
+                last = i;
+            }
+        nxt[last] = first;
+        prv[first] = last;
+    }
+    for (i = 0; i < m; i++)
+        if (!gone[i])
+            todo[nt++] = i;
+    while (nt > 0 && live >= 3) {
+        uint32_t k = todo[--nt];
+        qc_vec2 s0, s1;
+        if (gone[k])
+            continue;
+        if (!meet(p, e, prv[k], k, &s0) || !meet(p, e, k, nxt[k], &s1))
+            goto out; /* doubles back on itself */
+        if ((s1.x - s0.x) * e[k].x + (s1.y - s0.y) * e[k].y > 0)
+            continue;
+        gone[k] = 1; /* turned round: drop it, look at its neighbours again */
+        live--;
+        nxt[prv[k]] = nxt[k];
+        prv[nxt[k]] = prv[k];
+        if (k == first)
+            first = nxt[k];
+        todo[nt++] = prv[k];
+        todo[nt++] = nxt[k];
+    }
+    if (live < 3)
+        goto out;
+    i = first;
+    do {
+        qc_vec2 s0;
+        if (!meet(p, e, prv[i], i, &s0))
+            goto out;
+        rc = qc_points_push(ctx, out, s0);
+        i = nxt[i];
+    } while (rc == QC_OK && i != first);
+    *ok = rc == QC_OK;
+out:
+    qc__free(ctx, p, m * sizeof *p);
+    qc__free(ctx, e, m * sizeof *e);
+    qc__free(ctx, prv, m * sizeof *prv);
+    qc__free(ctx, nxt, m * sizeof *nxt);
+    qc__free(ctx, todo, 2 * (size_t)m * sizeof *todo);
+    qc__free(ctx, gone, m);
+    return rc;
+}
+
+/* The region with every edge moved delta inwards, or an error when that
+ * changes its shape (a ring vanishing or turning, edges crossing). */
+static int region_inset(qc_ctx *ctx, const qc_region *r, double delta, qc_region *out)
+{
+    qc_points ring = {0};
+    size_t k;
+    int rc = QC_OK;
+
+    memset(out, 0, sizeof *out);
+    for (k = 0; k < r->nrings && rc == QC_OK; k++) {
+        uint32_t lo = k ? r->ring_end[k - 1] : 0, hi = r->ring_end[k], m = hi - lo, i;
+        double a0 = 0, a1 = 0;
+        int ok;
+        rc = ring_inset(ctx, r->v + lo, m, delta, &ring, &ok);
+        if (rc != QC_OK)
+            break;
+        for (i = 0; i < m; i++) { /* keeps its turn; the signed area falls (holes grow) */
+            qc_vec2 v = r->v[lo + i], w = r->v[lo + (i + 1) % m];
+            a0 += v.x * w.y - v.y * w.x;
+        }
+        for (i = 0; i < ring.n; i++) {
+            qc_vec2 v = ring.v[i], w = ring.v[(i + 1) % ring.n];
+            a1 += v.x * w.y - v.y * w.x;
+        }
+        if (!ok || ring.n < 3 || (a0 > 0) != (a1 > 0) || a1 >= a0)
+            rc = qc__fail(ctx, QC_EDEGENERATE, "ring %lu vanishes when inset by %g mm",
+                          (unsigned long)k, delta);
+        else
+            rc = qc_region_add_ring(ctx, out, ring.v, ring.n);
+    }
+    qc_points_free(ctx, &ring);
+    if (rc == QC_OK)
+        rc = qc_region_normalize(ctx, out);
+    if (rc != QC_OK)
+        qc_region_free(ctx, out);
+    return rc;
+}
+
+int qc__path_trim(qc_ctx *ctx, const qc_region *region, double cell, size_t max_cells,
+                  double inset, const qc_path *in, qc_vec2 ref, double tol, qc_path *out,
+                  size_t *jumps)
 {
     trim T;
+    qc_region ins;
+    qc__pbound b;
     qc_path one = {0};
     qc_points flat = {0};
-    int rc;
+    const qc_region *use = region;
+    int rc = inset > 0 ? region_inset(ctx, region, inset, &ins) : QC_EDEGENERATE;
 
+    if (rc == QC_ENOMEM)
+        return rc;
+    if (rc == QC_OK)
+        use = &ins;
+    else if (inset > 0)
+        qc_clear_error(ctx); /* too fine to inset: the region itself */
+    rc = qc__pbound_init(ctx, &b, use, cell, max_cells);
+    if (rc != QC_OK) {
+        if (use == &ins)
+            qc_region_free(ctx, &ins);
+        return rc;
+    }
     memset(&T, 0, sizeof T);
     T.ctx = ctx;
-    T.b = b;
+    T.b = &b;
     T.out = out;
     T.ref = ref;
     T.nudge = 1e-4 * tol;
@@ -292,5 +458,8 @@ int qc__path_trim(qc_ctx *ctx, qc__pbound *b, const qc_path *in, qc_vec2 ref, do
     qc_points_free(ctx, &T.cand[0]);
     qc_points_free(ctx, &T.cand[1]);
     qc__free(ctx, T.cr, T.cr_cap * sizeof *T.cr);
+    qc__pbound_free(ctx, &b);
+    if (use == &ins)
+        qc_region_free(ctx, &ins);
     return rc;
 }

@@ -2,20 +2,23 @@
  * Pebbling (paper §5.3.1), rendering: one continuous path from the root
  * pebble, each circle drawn once counter-clockwise; at the tangent point of
  * each child (met counter-clockwise from where the circle was entered) the
- * path steps over, draws the child the same way and steps back (paper
- * Fig. 11 left). The path is the outline of the union of the pebbles, so it
- * touches itself at tangent points and never crosses. Circles are drawn a
- * hair inside their radius with cubic arcs that stay inside the circle, so
- * drawings of touching pebbles never meet. With edge overgrow the path is
- * then trimmed to the region and joined along the boundary (pebble_trim.c).
+ * path turns onto the child, draws it the same way and comes back to the
+ * same point (paper Fig. 11 left). The path is the outline of the union of
+ * the pebbles, so it touches itself at tangent points and never crosses.
+ * Circles are drawn a little inside their radius (at most 0.05 mm, so
+ * touching pebbles stay apart once stitches are rounded to machine units)
+ * with cubic arcs that stay inside the circle. With edge overgrow the path
+ * is then trimmed to the region, inset by the same amount, and joined along
+ * its boundary (pebble_trim.c).
  */
 #include <math.h>
 #include <string.h>
 
 #include "pebble_internal.h"
 
-#define ARC_K 0.99   /* handle length factor: a cubic arc of <= 90 degrees stays inside */
-#define DRAW_IN 1e-7 /* circles drawn this much (times d) inside their radius */
+#define ARC_K 0.99    /* handle length factor: a cubic arc of <= 90 degrees stays inside */
+#define DRAW_IN 0.05  /* circles drawn this many mm inside their radius ... */
+#define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
 #define TRIM_TOL 1e-3 /* flattening where trimmed, times d */
 
 static qc_vec2 on_circle(qc_vec2 c, double r, double a)
@@ -102,13 +105,16 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
             uint32_t c = kids[f->next++];
             double phi = qc_atan2(pb->c[c].y - pb->c[i].y, pb->c[c].x - pb->c[i].x);
             double key = wrap(phi - f->entry);
-            qc_vec2 ti = on_circle(pb->c[i], ri, phi);
-            qc_vec2 tc = on_circle(pb->c[c], pb->r[c] - eps, phi + QC_PI);
+            qc_vec2 ti = on_circle(pb->c[i], ri, phi), tc = ti;
             rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, key - f->cur, &ti);
             if (key > f->cur)
                 f->cur = key;
-            if (rc == QC_OK)
+            /* a tangent child starts where its parent turns (a cusp the
+             * stitches cannot cross); a bridged one at the end of its stitch */
+            if (rc == QC_OK && (pb->flags[c] & QC__PEB_BRIDGE)) {
+                tc = on_circle(pb->c[c], pb->r[c] - eps, phi + QC_PI);
                 rc = qc_path_line_to(ctx, out, tc);
+            }
             if (rc == QC_OK)
                 rc = QC__RESERVE(ctx, st, cap, sp + 1);
             if (rc == QC_OK) {
@@ -121,10 +127,10 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
                 g->back = ti;
             }
         } else {
-            qc_vec2 back = f->back;
-            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, 2 * QC_PI - f->cur, &f->start);
+            qc_vec2 back = f->back, start = f->start;
+            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, 2 * QC_PI - f->cur, &start);
             sp--;
-            if (rc == QC_OK && sp > 0)
+            if (rc == QC_OK && sp > 0 && (back.x != start.x || back.y != start.y))
                 rc = qc_path_line_to(ctx, out, back);
         }
     }
@@ -152,12 +158,15 @@ int qc__pebbling_run(qc_ctx *ctx, const qc_region *region, const qc_params *para
     if (rc != QC_OK)
         return rc;
     rc = qc__pebbles_pack(ctx, region, &b, params, skel, &pb);
+    if (rc == QC_OK)
+        pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK && pb.k < 1) {
-        rc = render(ctx, &pb, DRAW_IN * d, &raw);
+        rc = render(ctx, &pb, pb.draw_in, &raw);
         if (rc == QC_OK)
-            rc = qc__path_trim(ctx, &b, &raw, pb.c[0], TRIM_TOL * d, out, &pb.trim_jumps);
+            rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
+                               TRIM_TOL * d, out, &pb.trim_jumps);
     } else if (rc == QC_OK) {
-        rc = render(ctx, &pb, DRAW_IN * d, out);
+        rc = render(ctx, &pb, pb.draw_in, out);
     }
     if (rc == QC_OK && stats != NULL)
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
