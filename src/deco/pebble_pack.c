@@ -664,20 +664,20 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
      * circle (moved at most MOVE_MAX d) reaches before R */
     for (ring = 0; ring <= maxring && !general; ring++) {
         double reach = MOVE_MAX * P->d;
-        if (ring >= 2) {
-            if (pair_centre(pb, j, k, R, s, &x))
-                reach = fmin(reach, dist(x, ci));
-            if ((double)(ring - 1) * P->h > reach + R + P->rmax)
-                break;
-        }
+        if (pair_centre(pb, j, k, R, s, &x))
+            reach = fmin(reach, dist(x, ci));
+        reach += R; /* no pebble farther than this from ci is met */
+        if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
+            break;
         for (cy = c0y >= ring ? c0y - ring : 0; cy <= c0y + ring && cy < P->ny && !general; cy++)
             for (cx = c0x >= ring ? c0x - ring : 0; cx <= c0x + ring && cx < P->nx; cx++) {
                 uint32_t q;
                 if (cx + ring != c0x && cx != c0x + ring && cy + ring != c0y && cy != c0y + ring)
                     continue; /* inside the ring: done already */
                 for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
-                    double rq;
-                    if (q == i || q == j || q == k)
+                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
+                    double far = reach + pb->r[q];
+                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
                         continue;
                     rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
                     if (rq < 0) {

@@ -35,21 +35,29 @@ static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double 
                const qc_vec2 *end)
 {
     int i, m = (int)ceil(sweep / (QC_PI / 2) - 1e-9);
-    double th;
+    double th, k, s1, c1;
 
     if (!(sweep > 1e-12))
         return end != NULL ? qc_path_line_to(ctx, out, *end) : QC_OK;
     if (m < 1)
         m = 1;
     th = sweep / m;
+    k = ARC_K * 4.0 / 3.0 * qc_sin(th / 4) / qc_cos(th / 4) * r;
+    s1 = qc_sin(a);
+    c1 = qc_cos(a);
     for (i = 0; i < m; i++) {
-        double a0 = a + th * i, a1 = a0 + th;
-        double k = ARC_K * 4.0 / 3.0 * qc_sin(th / 4) / qc_cos(th / 4) * r;
-        double s0 = qc_sin(a0), c0 = qc_cos(a0), s1 = qc_sin(a1), c1 = qc_cos(a1);
+        double a1 = a + th * (i + 1), s0 = s1, c0 = c1;
         qc_vec2 p0, p1, p2, p3;
+        s1 = qc_sin(a1);
+        c1 = qc_cos(a1);
         p0.x = c.x + r * c0;
         p0.y = c.y + r * s0;
-        p3 = i + 1 == m && end != NULL ? *end : on_circle(c, r, a1);
+        if (i + 1 == m && end != NULL) {
+            p3 = *end;
+        } else {
+            p3.x = c.x + r * c1;
+            p3.y = c.y + r * s1;
+        }
         p1.x = p0.x - k * s0;
         p1.y = p0.y + k * c0;
         p2.x = p3.x + k * s1;
