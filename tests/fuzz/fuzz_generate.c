@@ -93,6 +93,10 @@ static int affordable(const qc_region *r, qc_params *p, qc_params *resolved)
 
     if (area / cell > MAX_EST_POINTS || box / cell > 8 * MAX_EST_POINTS)
         return 0;
+    /* open finding: a tile of one point memcpy's from a NULL edge list */
+    if (fuzz_known("fill-tile-few") && area / cell < 16 && resolved->tile != QC_TILE_NONE &&
+        (resolved->family == QC_FAMILY_FILL || resolved->family == QC_FAMILY_STIPPLE))
+        return 0;
     if (resolved->repeat_cols * resolved->repeat_rows > 6) {
         p->repeat_cols = p->repeat_rows = 1;
         resolved->repeat_cols = resolved->repeat_rows = 1;
@@ -206,6 +210,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             goto out;
         if (resolved.points == QC_POINTS_GIVEN)
             given_points(&in, &region, &given, &ctx);
+        if (fuzz_known("fill-tile-few") && resolved.points == QC_POINTS_GIVEN && given.n < 4 &&
+            resolved.tile != QC_TILE_NONE &&
+            (resolved.family == QC_FAMILY_FILL || resolved.family == QC_FAMILY_STIPPLE))
+            goto out;
     }
     if (oom < 24) /* now and then the k-th allocation from here on fails */
         a.t.fail_at = a.t.allocs + 1 + fuzz_u8(&in);

@@ -1,0 +1,12 @@
+# Fuzz smoke: each libFuzzer target (tests/fuzz/) for FUZZ_SECONDS (40 s by
+# default: 6 targets, about 5 minutes with the build) with a fixed seed, on
+# its seed corpus and regression inputs; open findings of
+# tests/fuzz/known.txt are stepped around. Skipped without clang's libFuzzer.
+set -euo pipefail
+rt=$(clang -print-file-name=libclang_rt.fuzzer-x86_64.a 2>/dev/null || true)
+if ! command -v clang >/dev/null || [ ! -f "$rt" ]; then
+    echo "fuzz smoke skipped: clang with libFuzzer (libclang-rt-14-dev) is not installed"
+    exit 0
+fi
+make -j2 fuzz-build >/dev/null
+FUZZ_FLAGS="-seed=1" make fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-40}"
