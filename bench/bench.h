@@ -8,6 +8,7 @@
 
 void bench_graph(void);
 void bench_tour(void);
+void bench_pebbling(void);
 
 /* Monotonic seconds. */
 double bench_now(void);

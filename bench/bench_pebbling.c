@@ -8,8 +8,6 @@
 
 #include "bench.h"
 
-void bench_pebbling(void);
-
 typedef struct bskel {
     qc_points pts;
     qc_edges edges;

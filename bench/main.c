@@ -5,5 +5,6 @@ int main(void)
 {
     bench_graph();
     bench_tour();
+    bench_pebbling();
     return 0;
 }

@@ -13,7 +13,7 @@
 #define F_ALL 0xFFFFFFFFu
 #define F_TREE (FAM(VINE) | FAM(BRANCHING) | FAM(PEBBLING) | FAM(PACKING) | FAM(FILL) | FAM(STIPPLE))
 #define F_POINTS (F_TREE | FAM(WANDERER))
-#define F_MOTIF (FAM(BRANCHING) | FAM(WANDERER) | FAM(PACKING))
+#define F_MOTIF (FAM(BRANCHING) | FAM(WANDERER))
 #define OFF(field) offsetof(qc_params, field)
 
 static const char family_names[] =
