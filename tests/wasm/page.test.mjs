@@ -129,9 +129,15 @@ await report.run('out_of_range_shows_message', async () => {
   assert(/spacing/.test(msg) && /range/.test(msg), `message: ${msg}`);
   assert(await attr(page, '#stitchPath', 'd') === d, 'the last preview was not kept');
   await shot(page, '03-out-of-range');
+  await change(page, () => page.fill('[data-param=spacing]', '0.3'));
+  assert(await page.isHidden('#error'), 'the message stayed after a good value');
+  e = await errorCount(page);
+  await page.fill('#shapeW', '0');
+  const msg1 = await waitError(page, e);
+  assert(/rect:0x8/.test(msg1) && /size/.test(msg1), `zero width message: ${msg1}`);
+  await change(page, () => page.fill('#shapeW', '8'));
   e = await errorCount(page);
   await page.fill('#seed', 'abc');
-  await page.fill('[data-param=spacing]', '0.3');
   const msg2 = await waitError(page, e);
   assert(/seed/.test(msg2), `bad seed message: ${msg2}`);
   await change(page, () => page.fill('#seed', '5'));
@@ -216,7 +222,7 @@ await report.run('malformed_svg_shows_message', async () => {
   const e = await errorCount(page);
   await page.setInputFiles('#regionFile', path.join(FIX, 'malformed.svg'));
   const msg = await waitError(page, e);
-  assert(/line \d+/.test(msg), `message: ${msg}`);
+  assert(/^malformed\.svg: .*line \d+/.test(msg), `message: ${msg}`);
   assert(await attr(page, '#stitchPath', 'd') === d, 'the last preview was not kept');
   const dl = await page.evaluate(() => document.querySelector('#downloads [data-format=pat]') !== null);
   assert(dl, 'downloads gone');

@@ -61,14 +61,17 @@ export class Quiltc {
   }
 
   // settings.region: { shape: 'rect:8x8' } in settings.units, or { svg: text, name }.
-  // Errors name the file or the shape, as the CLI's do.
+  // SVG errors name the file, as the CLI's do (the library's shape errors name the shape).
   region(settings) {
     const r = settings.region || { shape: 'rect:8x8' };
+    if (r.svg === undefined) {
+      this.regionShape(r.shape, unitScale(settings.units));
+      return;
+    }
     try {
-      if (r.svg !== undefined) this.regionSvg(r.svg);
-      else this.regionShape(r.shape, unitScale(settings.units));
+      this.regionSvg(r.svg);
     } catch (err) {
-      throw new Error(`${r.svg !== undefined ? r.name || 'SVG outline' : `region ${r.shape}`}: ${err.message}`);
+      throw new Error(`${r.name || 'SVG outline'}: ${err.message}`);
     }
   }
 
