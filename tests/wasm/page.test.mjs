@@ -106,6 +106,8 @@ await report.run('family_change_redraws', async () => {
   assert(after !== before && after.length > 500, 'the preview did not change');
   assert(await page.isHidden('#motifBox'), 'vine shows the motif picker');
   assert(await page.$('[data-param=width]') === null, 'vine shows the fill width');
+  await change(page, () => page.selectOption('#family', 'packing'));
+  assert(await page.isVisible('#motifBox'), 'packing lacks the motif picker');
   await change(page, () => page.selectOption('#family', 'fill'));
   assert(await page.$('[data-param=width]') !== null, 'fill lacks its width control');
   await shot(page, '02-fill');

@@ -111,11 +111,12 @@ function buildParams() {
     label.append(`${row.name}${unit ? ` (${unit})` : ''}`, input);
     box.append(label);
   }
-  $('motifBox').hidden = !(sizeRowFamilies() & familyBit());
+  $('motifBox').hidden = !takesMotifs();
 }
 
-// Motif families: those the 'size' row applies to.
-function sizeRowFamilies() { return table.find((r) => r.name === 'size')?.families || 0; }
+// The families that take motifs (docs/motifs.md): Branching, Wanderer, Shape Packing.
+const MOTIF_FAMILIES = ['branching', 'wanderer', 'packing'];
+const takesMotifs = () => MOTIF_FAMILIES.includes($('family').value);
 
 function buildMotifs(names) {
   $('motifList').innerHTML = names.map((n) =>
@@ -142,7 +143,7 @@ function settings() {
     }
   }
   const motifs = [];
-  if (sizeRowFamilies() & familyBit()) { // only the motif families take motifs
+  if (takesMotifs()) { // other families ignore motifs: keep them off the command line
     motifs.push(...[...$('motifList').querySelectorAll('input:checked')].map((c) => c.value));
     if (motifSvg) motifs.push(motifSvg);
   }
