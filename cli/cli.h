@@ -72,6 +72,8 @@ typedef struct cli_pattern_opts {
     const char *points_file; /* --points FILE */
     const char *motifs;      /* --motif LIST */
     const char *raw[64];     /* raw value per parameter row, converted after parsing */
+    char repeat[2][24];      /* --repeat CxR, split into repeat-cols and repeat-rows */
+    int bad;                 /* an option was refused (already reported) */
     qc_params params;
 } cli_pattern_opts;
 

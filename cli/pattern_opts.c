@@ -16,7 +16,7 @@ struct option *cli_pattern_options(const struct option *fixed, size_t nfixed)
 {
     size_t nrows, i;
     const qc_param_info *t = qc_param_table(&nrows);
-    struct option *o = calloc(nfixed + nrows + 3, sizeof *o);
+    struct option *o = calloc(nfixed + nrows + 4, sizeof *o);
 
     if (o == NULL || nrows > MAX_ROWS) {
         free(o);
@@ -29,10 +29,13 @@ struct option *cli_pattern_options(const struct option *fixed, size_t nfixed)
     o[nfixed + 1].name = "units";
     o[nfixed + 1].has_arg = required_argument;
     o[nfixed + 1].val = CLI_PARAM_BASE - 2;
+    o[nfixed + 2].name = "repeat";
+    o[nfixed + 2].has_arg = required_argument;
+    o[nfixed + 2].val = CLI_PARAM_BASE - 3;
     for (i = 0; i < nrows; i++) {
-        o[nfixed + 2 + i].name = t[i].name;
-        o[nfixed + 2 + i].has_arg = required_argument;
-        o[nfixed + 2 + i].val = CLI_PARAM_BASE + (int)i;
+        o[nfixed + 3 + i].name = t[i].name;
+        o[nfixed + 3 + i].has_arg = required_argument;
+        o[nfixed + 3 + i].val = CLI_PARAM_BASE + (int)i;
     }
     return o;
 }
@@ -45,12 +48,35 @@ void cli_pattern_init(cli_pattern_opts *o)
     o->mm_per_unit = 25.4;
 }
 
+/* --repeat CxR: the two counts go to repeat-cols and repeat-rows (checked there). */
+static int take_repeat(cli_pattern_opts *o, const char *arg)
+{
+    const char *x = strchr(arg, 'x');
+    size_t n, cols = (size_t)(qc_param_find("repeat-cols") - qc_param_table(&n));
+    size_t rows = (size_t)(qc_param_find("repeat-rows") - qc_param_table(&n));
+
+    if (x == NULL || x == arg || (size_t)(x - arg) >= sizeof o->repeat[0] ||
+        strlen(x + 1) >= sizeof o->repeat[1] || x[1] == '\0')
+        return 0;
+    memcpy(o->repeat[0], arg, (size_t)(x - arg));
+    o->repeat[0][x - arg] = '\0';
+    strcpy(o->repeat[1], x + 1);
+    o->raw[cols] = o->repeat[0];
+    o->raw[rows] = o->repeat[1];
+    return 1;
+}
+
 int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg)
 {
     size_t nrows;
 
     qc_param_table(&nrows);
-    if (opt == CLI_PARAM_BASE - 1)
+    if (opt == CLI_PARAM_BASE - 3) {
+        if (!take_repeat(o, arg)) {
+            cli_error("--repeat: '%s' is not COLSxROWS (e.g. 3x2)", arg);
+            o->bad = 1;
+        }
+    } else if (opt == CLI_PARAM_BASE - 1)
         o->region = arg;
     else if (opt == CLI_PARAM_BASE - 2)
         o->units = arg;
@@ -144,6 +170,8 @@ int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o)
     const qc_param_info *t = qc_param_table(&nrows);
     qc_params resolved;
 
+    if (o->bad)
+        return CLI_USAGE;
     o->mm_per_unit = cli_units_mm(o->units);
     if (o->mm_per_unit == 0.0) {
         cli_error("--units: unknown unit '%s' (in, mm or cm)", o->units);
@@ -168,7 +196,8 @@ void cli_pattern_help(FILE *f, unsigned families)
 
     fputs("  --region SHAPE|FILE.svg  rect:WxH, square:S, circle:D, hexagon:D, star:D, heart:D\n"
           "                           (sizes in --units) or an SVG outline; default rect:8x8\n"
-          "  --units in|mm|cm         units of shape sizes and bare lengths; default in\n",
+          "  --units in|mm|cm         units of shape sizes and bare lengths; default in\n"
+          "  --repeat CxR             tiles across and down (--repeat-cols, --repeat-rows)\n",
           f);
     for (i = 0; i < nrows; i++) {
         char name[64];

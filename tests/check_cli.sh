@@ -120,6 +120,19 @@ motif_library() {
 }
 check motifs_listed_and_drawn_family_help motif_library
 
+repeat_alias() {
+    "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat 3x2 -o a.pat &&
+        "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat-cols 3 \
+            --repeat-rows 2 -o b.pat && cmp a.pat b.pat && "$QC" check a.pat --region rect:12x8 >/dev/null &&
+        expect_fail 2 "'3by2' is not COLSxROWS" "$QC" generate --repeat 3by2
+}
+check repeat_cxr_equals_cols_and_rows repeat_alias
+
+no_concorde() {
+    PATH=/usr/bin:/bin expect_fail 1 "no 'concorde' program on PATH" "$QC" skeleton --path tsp --tsp concorde
+}
+check concorde_missing_says_how_to_get_it no_concorde
+
 help_and_version() {
     "$QC" --help | grep -q generate && "$QC" generate --help | grep -q -- '--spacing' &&
         "$QC" --version | grep -q '^quiltc [0-9]' && "$QC" list families | grep -q stipple &&
