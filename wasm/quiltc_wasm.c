@@ -366,6 +366,7 @@ int qcw_run(qcw_job *job, int tie_stitches)
 
     drop_result(job);
     qc_clear_error(&job->ctx);
+    job->params.skip_gap_stat = 1; /* a live preview: the path is the same without it */
     rc = qc_generate(&job->ctx, &job->region, &job->params, NULL,
                      job->motifs.n ? &job->motifs : NULL, &job->result);
     if (rc < 0)

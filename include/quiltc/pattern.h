@@ -78,6 +78,10 @@ typedef struct qc_params {
     double repeat_cols; /* tiles across (tiles) */
     double repeat_rows; /* tiles down (tiles) */
     double start_x, start_y; /* where to start: nearest point becomes the root */
+    /* Not in the table: non-zero leaves qc_stats.largest_gap_mm at 0. The
+     * measure never changes the path but costs about a third of a stipple,
+     * so a live preview skips it. */
+    int skip_gap_stat;
 } qc_params;
 
 typedef enum qc_param_type { QC_PARAM_INT, QC_PARAM_ENUM, QC_PARAM_REAL, QC_PARAM_LENGTH, QC_PARAM_SEED } qc_param_type;

@@ -160,7 +160,7 @@ static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
     }
     if (rc < 0)
         goto out;
-    if (stats != NULL) {
+    if (stats != NULL && !prm->skip_gap_stat) {
         double g = qc_path_largest_gap(ctx, region, &one, GAP_RES * d, NULL);
         if (g < 0.0) {
             rc = (int)g;
