@@ -1,4 +1,4 @@
-# Fuzz smoke: each libFuzzer target (tests/fuzz/) for FUZZ_SECONDS (40 s by
+# Fuzz smoke: each libFuzzer target (tests/fuzz/) for FUZZ_SECONDS (35 s by
 # default: 6 targets, about 5 minutes with the build) with a fixed seed, on
 # its seed corpus and regression inputs; open findings of
 # tests/fuzz/known.txt are stepped around. Skipped without clang's libFuzzer.
@@ -9,4 +9,4 @@ if ! command -v clang >/dev/null || [ ! -f "$rt" ]; then
     exit 0
 fi
 make -j2 fuzz-build >/dev/null
-FUZZ_FLAGS="-seed=1" make fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-40}"
+FUZZ_FLAGS="-seed=1" make fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-35}"
