@@ -4,13 +4,16 @@
  * its hull keeps clear of the other motifs, the vine and the boundary
  * (resolution: shrink to s/2, rotate towards the tip up to 60 degrees, flip
  * side, else skip). Each motif is sewn as a detour from its attachment
- * point and back, so the result is one piece.
+ * point and back, so the result is one piece. With a tile mode the region
+ * is a tile: the vine runs from its entry port to its exit port, collision
+ * tests wrap across its edges (branching_tile.c), and the tile is laid out
+ * repeat_cols x repeat_rows.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "deco_internal.h"
+#include "branching_tile.h"
 
 enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 
@@ -110,7 +113,15 @@ typedef struct run {
     size_t nspots, spots_cap;
     qc_rng rng;
     qc__placement *pl;
+    qc__btile *tile;  /* a tile: items are added to the grid wrapped too */
 } run;
+
+static int grid_add(run *r, const qc_vec2 *poly, size_t n, unsigned kind, uint32_t id)
+{
+    if (r->tile != NULL)
+        return qc__btile_grid_add(r->ctx, r->tile, &r->grid, poly, n, kind, id);
+    return qc__cgrid_add(r->ctx, &r->grid, poly, n, kind, id);
+}
 
 /* Tries motif m at a along dir scaled k: places it (1) or not (0). */
 static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint32_t seg,
@@ -134,7 +145,7 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
         return 0;
     *rc = QC__RESERVE(r->ctx, r->spots, r->spots_cap, r->nspots + 1);
     if (*rc == QC_OK)
-        *rc = qc__cgrid_add(r->ctx, &r->grid, full, nf, K_MOTIF, (uint32_t)r->nspots);
+        *rc = grid_add(r, full, nf, K_MOTIF, (uint32_t)r->nspots);
     if (*rc == QC_OK && r->pl != NULL) {
         for (i = 0; i < nf && *rc == QC_OK; i++)
             *rc = qc_points_push(r->ctx, &r->pl->full, full[i]);
@@ -331,15 +342,19 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
 {
     run r;
     qc_motif_set def = {0};
-    qc_path vine = {0};
+    qc_path vine = {0}, one = {0}, *dst = out;
+    qc__btile tile;
+    qc_skeleton tsk;
     qc_points pts = {0};
     qc_stats dummy;
     double s = params->size, gap = params->gap, alpha = params->angle, step, acc = 0;
     size_t i, j, nseg, ring;
     unsigned char *seen = NULL;
     int rc = QC_OK, side = 1, walk;
+    int tiled = params->tile == QC_TILE_EDGE_TO_EDGE || params->tile == QC_TILE_ALL_OVER;
 
     memset(&r, 0, sizeof r);
+    memset(&tile, 0, sizeof tile);
     if (stats == NULL)
         stats = memset(&dummy, 0, sizeof dummy);
     if (skel == NULL || skel->norder == 0)
@@ -348,10 +363,19 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
         return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", s);
     if (!(gap >= 0))
         gap = 0;
+    if (tiled) { /* the ports join the tree; the walk runs from one to the other */
+        rc = qc__btile_make(ctx, region, skel, params->tile == QC_TILE_ALL_OVER, &tile, &tsk);
+        if (rc < 0)
+            return rc;
+        skel = &tsk;
+        r.tile = &tile;
+        dst = &one;
+    }
     if (motifs == NULL || motifs->n == 0) {
         rc = qc_motif_builtin(ctx, "leaf", &def);
         if (rc != QC_OK) {
             qc_motif_set_free(ctx, &def);
+            qc__btile_free(ctx, &tile);
             return rc;
         }
         motifs = &def;
@@ -384,6 +408,8 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
         rc = qc_curve_catmull_rom(ctx, pts.v, pts.n, skel->edges == NULL, &vine);
     if (rc != QC_OK)
         goto out_free;
+    if (tiled)
+        qc__btile_flat_ports(&tile, &vine);
     nseg = vine.ncmd > 0 ? vine.ncmd - 1 : 0;
     for (i = 1; i < vine.ncmd; i++)
         if (vine.cmd[i] != QC_PATH_CUBIC) {
@@ -444,7 +470,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
             qc_vec2 e[2];
             e[0] = prev;
             e[1] = bez(q, (double)k / nk);
-            rc = qc__cgrid_add(ctx, &r.grid, e, 2, K_VINE, (uint32_t)j);
+            rc = grid_add(&r, e, 2, K_VINE, (uint32_t)j);
             if (rc == QC_OK && pl != NULL)
                 rc = qc_points_push(ctx, &pl->vine, prev);
             prev = e[1];
@@ -460,7 +486,9 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     }
     if (rc == QC_OK && skel->edges != NULL && nseg + 1 == pts.n && pts.n >= 3) {
         for (i = 0; i + 1 < pts.n && rc == QC_OK; i++) {
-            int tip = i == 0 ? skel->order[1] == skel->order[pts.n - 2] && pts.n >= 3 &&
+            /* the root is a tip when the walk leaves and returns by one edge;
+             * a tile's walk starts at a port, never a tip */
+            int tip = i == 0 ? !tiled && skel->order[1] == skel->order[pts.n - 2] &&
                                    (pts.n == 3 || skel->order[0] == skel->order[pts.n - 1])
                              : skel->order[i - 1] == skel->order[i + 1];
             qc_vec2 d;
@@ -519,18 +547,18 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     if (rc == QC_OK && r.nspots > 1)
         qsort(r.spots, r.nspots, sizeof *r.spots, cmp_spot);
     if (rc == QC_OK) { /* room for the result at once: vine, splits and motifs */
-        size_t nc = out->ncmd + 1 + nseg + 3 * r.nspots, np = out->npt + 1 + 3 * (nseg + r.nspots) + r.nspots;
+        size_t nc = dst->ncmd + 1 + nseg + 3 * r.nspots, np = dst->npt + 1 + 3 * (nseg + r.nspots) + r.nspots;
         for (i = 0; i < r.nspots; i++) {
             nc += motifs->m[r.spots[i].motif].path.ncmd;
             np += motifs->m[r.spots[i].motif].path.npt;
         }
-        rc = QC__RESERVE(ctx, out->cmd, out->cmd_cap, nc);
+        rc = QC__RESERVE(ctx, dst->cmd, dst->cmd_cap, nc);
         if (rc == QC_OK)
-            rc = QC__RESERVE(ctx, out->pt, out->pt_cap, np);
+            rc = QC__RESERVE(ctx, dst->pt, dst->pt_cap, np);
     }
     if (rc == QC_OK) {
         size_t sp = 0;
-        rc = qc_path_move_to(ctx, out, vine.pt[0]);
+        rc = qc_path_move_to(ctx, dst, vine.pt[0]);
         for (j = 0; j < nseg + (nseg == 0) && rc == QC_OK; j++) {
             qc_vec2 cur[4], l[4], rr[4];
             double t0 = 0;
@@ -540,24 +568,26 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
                 double t = r.spots[sp].t;
                 if (nseg > 0 && t > t0 + 1e-12) {
                     bez_split(cur, (t - t0) / (1 - t0), l, rr);
-                    rc = qc_path_cubic_to(ctx, out, l[1], l[2], l[3]);
+                    rc = qc_path_cubic_to(ctx, dst, l[1], l[2], l[3]);
                     memcpy(cur, rr, sizeof cur);
                     t0 = t;
                 }
                 if (rc == QC_OK) {
                     const qc_motif *m = &motifs->m[r.spots[sp].motif];
                     qc_vec2 at = qc__xf_apply(&r.spots[sp].xf, m->entry), end;
-                    rc = qc__path_append_xf(ctx, out, &m->path, &r.spots[sp].xf);
-                    end = qc_path_last(out);
+                    rc = qc__path_append_xf(ctx, dst, &m->path, &r.spots[sp].xf);
+                    end = qc_path_last(dst);
                     /* an open motif (a Wanderer primitive) comes back in a straight line */
                     if (rc == QC_OK && (end.x != at.x || end.y != at.y))
-                        rc = qc_path_line_to(ctx, out, at);
+                        rc = qc_path_line_to(ctx, dst, at);
                 }
             }
             if (rc == QC_OK && nseg > 0)
-                rc = qc_path_cubic_to(ctx, out, cur[1], cur[2], cur[3]);
+                rc = qc_path_cubic_to(ctx, dst, cur[1], cur[2], cur[3]);
         }
     }
+    if (rc == QC_OK && tiled) /* copies side by side, rows alternating */
+        rc = qc__btile_layout(ctx, &tile, params, &one, out);
 
 out_free:
     qc__free(ctx, seen, seen != NULL ? skel->n : 0);
@@ -569,5 +599,7 @@ out_free:
     qc_path_free(ctx, &vine);
     qc_points_free(ctx, &pts);
     qc_motif_set_free(ctx, &def);
+    qc_path_free(ctx, &one);
+    qc__btile_free(ctx, &tile);
     return rc;
 }
