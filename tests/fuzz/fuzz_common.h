@@ -76,7 +76,8 @@ static inline void fuzz_check_status(const qc_ctx *ctx, int rc, const char *what
     if (rc < 0) {
         const char *m = qc_errmsg(ctx);
         FUZZ_CHECK(m[0] != '\0', "an error without a message");
-        if (!fuzz_known("msg-newline"))
+        /* the open finding quotes SVG attribute text: only those messages */
+        if (!(fuzz_known("msg-newline") && strncmp(m, "svg line", 8) == 0))
             FUZZ_CHECK(strchr(m, '\n') == NULL && strchr(m, '\r') == NULL,
                        "an error message of more than one line");
     }
