@@ -166,15 +166,15 @@ QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint3
 /* Distance to a region's boundary sampled on a grid: node (i, j) at
  * (x0 + i h, y0 + j h), v > 0 inside, < 0 outside; seg: each node's
  * nearest boundary edge (edge e runs from vertex prev[e] to vertex e;
- * next[e] is the edge after it); flat: 1 where the nearest point is inside
- * that edge. The region must outlive the grid. */
+ * next[e] is the edge after it, ring[e] its ring); flat: 1 where the
+ * nearest point is inside that edge. The region must outlive the grid. */
 typedef struct qc__sdf {
     double x0, y0, h;
     size_t nx, ny;
     double *v;
     uint32_t *seg;
     unsigned char *flat;
-    uint32_t *prev, *next;
+    uint32_t *prev, *next, *ring;
     const qc_region *region;
 } qc__sdf;
 

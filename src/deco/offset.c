@@ -35,6 +35,7 @@ void qc__sdf_free(qc_ctx *ctx, qc__sdf *s)
     if (s->region != NULL) {
         qc__free(ctx, s->prev, s->region->nv * sizeof *s->prev);
         qc__free(ctx, s->next, s->region->nv * sizeof *s->next);
+        qc__free(ctx, s->ring, s->region->nv * sizeof *s->ring);
     }
     qc__free(ctx, s->flat, n);
     memset(s, 0, sizeof *s);
@@ -100,53 +101,33 @@ static void descend(const qc__sdf *s, qc_vec2 p, uint32_t *e, double *d2, double
     }
 }
 
-static void relax(const qc__sdf *s, double *d2, size_t k, qc_vec2 p, uint32_t e);
-static qc_vec2 node_at(const qc__sdf *s, size_t i, size_t j);
-
-/* Node k's final edge: the best of its eight neighbours' edges, then
- * descended along its ring (the sweeps miss a few near cusps). */
-static void polish(qc__sdf *s, size_t k, double *t)
-{
-    size_t i = k % s->nx, j = k / s->nx;
-    qc_vec2 p = node_at(s, i, j);
-    int dx, dy;
-
-    for (dy = -1; dy <= 1; dy++)
-        for (dx = -1; dx <= 1; dx++) {
-            size_t q;
-            if ((dx < 0 && i == 0) || (dy < 0 && j == 0) || (dx > 0 && i + 1 == s->nx) ||
-                (dy > 0 && j + 1 == s->ny) || (dx == 0 && dy == 0))
-                continue;
-            q = (size_t)((ptrdiff_t)k + dy * (ptrdiff_t)s->nx + dx);
-            if (s->seg[q] != s->seg[k] && s->seg[q] != NONE)
-                relax(s, s->v, k, p, s->seg[q]);
-        }
-    descend(s, p, &s->seg[k], &s->v[k], t);
-}
-
-/* If edge b follows edge a within SCAN edges along their ring (either
+/* If edge b lies within SCAN edges of edge a along their ring (either
  * way), tries every edge between them for p. */
 #define SCAN 128
 static void scan_between(const qc__sdf *s, qc_vec2 p, uint32_t a, uint32_t b, uint32_t *best,
                          double *bd, double *bt)
 {
-    uint32_t e = a;
-    int n, dir;
+    const qc_region *r = s->region;
+    uint32_t k = s->ring[a], e;
+    size_t start = k ? r->ring_end[k - 1] : 0, len = r->ring_end[k] - start, fwd;
+    int dir;
 
-    for (dir = 0; dir < 2; dir++) {
-        for (e = a, n = 0; n < SCAN && e != b; n++)
-            e = dir ? s->prev[e] : s->next[e];
-        if (e != b)
-            continue;
-        for (e = dir ? s->prev[a] : s->next[a]; e != b; e = dir ? s->prev[e] : s->next[e]) {
-            double t, d2 = edge_d2(s, e, p, &t);
-            if (d2 < *bd || (d2 == *bd && e < *best)) {
-                *bd = d2;
-                *best = e;
-                *bt = t;
-            }
-        }
+    if (s->ring[b] != k)
         return;
+    fwd = ((size_t)b + len - a) % len;
+    if (fwd <= SCAN)
+        dir = 1;
+    else if (len - fwd <= SCAN)
+        dir = -1;
+    else
+        return;
+    for (e = dir > 0 ? s->next[a] : s->prev[a]; e != b; e = dir > 0 ? s->next[e] : s->prev[e]) {
+        double t, d2 = edge_d2(s, e, p, &t);
+        if (d2 < *bd || (d2 == *bd && e < *best)) {
+            *bd = d2;
+            *best = e;
+            *bt = t;
+        }
     }
 }
 
@@ -291,16 +272,18 @@ int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
     out->seg = qc__alloc_array(ctx, n, sizeof *out->seg);
     out->prev = qc__alloc_array(ctx, region->nv, sizeof *out->prev);
     out->next = qc__alloc_array(ctx, region->nv, sizeof *out->next);
+    out->ring = qc__alloc_array(ctx, region->nv, sizeof *out->ring);
     mask = qc__alloc(ctx, n);
     out->flat = qc__alloc(ctx, n);
     if (out->v == NULL || out->seg == NULL || out->prev == NULL || out->next == NULL ||
-        mask == NULL || out->flat == NULL)
+        out->ring == NULL || mask == NULL || out->flat == NULL)
         goto out;
     for (k = 0, e = 0; k < region->nrings; k++) {
         size_t start = e, last = region->ring_end[k] - 1;
         for (; e <= last; e++) {
             out->prev[e] = (uint32_t)(e == start ? last : e - 1);
             out->next[e] = (uint32_t)(e == last ? start : e + 1);
+            out->ring[e] = (uint32_t)k;
         }
     }
     for (k = 0; k < n; k++) {
@@ -315,7 +298,7 @@ int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
     for (k = 0; k < n; k++) {
         double t = 0.0;
 
-        polish(out, k, &t);
+        descend(out, node_at(out, k % out->nx, k / out->nx), &out->seg[k], &out->v[k], &t);
         out->v[k] = mask[k] ? sqrt(out->v[k]) : -sqrt(out->v[k]);
         out->flat[k] = t > 0.0 && t < 1.0;
     }
@@ -896,6 +879,175 @@ static void prune_islands(qc__rings *r, size_t first, double h)
     r->pts.n = w;
 }
 
+/* The level's vertices from b0 on joined by succ (indices relative to
+ * b0): finds the pairs of segments (a, succ[a]), (c, succ[c]) that cross
+ * properly, binned in a grid of about cell mm, and for each pair whose
+ * ends no earlier pair touched, exchanges succ[a] and succ[c] (mark[]
+ * bit 0: touched in this pass, bit 1: ever). *found counts the crossings
+ * seen. */
+static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n, double cell,
+                        unsigned char *mark, size_t *found)
+{
+    size_t k, i, gx, gy, ncell, total = 0;
+    size_t *start = NULL;
+    uint32_t *seg = NULL;
+    qc_bbox box;
+    int rc = QC_ENOMEM;
+
+    *found = 0;
+    box.min = box.max = p[0];
+    for (i = 1; i < n; i++) {
+        box.min.x = p[i].x < box.min.x ? p[i].x : box.min.x;
+        box.min.y = p[i].y < box.min.y ? p[i].y : box.min.y;
+        box.max.x = p[i].x > box.max.x ? p[i].x : box.max.x;
+        box.max.y = p[i].y > box.max.y ? p[i].y : box.max.y;
+    }
+    while (((box.max.x - box.min.x) / cell + 1.0) * ((box.max.y - box.min.y) / cell + 1.0) >
+           2.0 * (double)n + 64.0)
+        cell *= 1.5;
+    gx = (size_t)((box.max.x - box.min.x) / cell) + 1;
+    gy = (size_t)((box.max.y - box.min.y) / cell) + 1;
+    ncell = gx * gy;
+    start = qc__alloc_array(ctx, ncell + 1, sizeof *start);
+    if (start == NULL)
+        return QC_ENOMEM;
+    memset(start, 0, (ncell + 1) * sizeof *start);
+    for (k = 0; k < 2; k++) { /* pass 0 counts, pass 1 fills */
+        for (i = 0; i < n; i++) {
+            qc_vec2 a = p[i], c = p[succ[i]];
+            size_t x0 = (size_t)(((a.x < c.x ? a.x : c.x) - box.min.x) / cell);
+            size_t x1 = (size_t)(((a.x > c.x ? a.x : c.x) - box.min.x) / cell);
+            size_t y0 = (size_t)(((a.y < c.y ? a.y : c.y) - box.min.y) / cell);
+            size_t y1 = (size_t)(((a.y > c.y ? a.y : c.y) - box.min.y) / cell);
+            size_t x, y;
+
+            x1 = x1 < gx ? x1 : gx - 1;
+            y1 = y1 < gy ? y1 : gy - 1;
+            for (y = y0; y <= y1; y++)
+                for (x = x0; x <= x1; x++) {
+                    if (k == 0)
+                        start[y * gx + x + 1]++;
+                    else
+                        seg[start[y * gx + x]++] = (uint32_t)i;
+                }
+        }
+        if (k == 0) {
+            for (i = 0; i < ncell; i++)
+                start[i + 1] += start[i];
+            total = start[ncell];
+            seg = qc__alloc_array(ctx, total ? total : 1, sizeof *seg);
+            if (seg == NULL)
+                goto out;
+        } else {
+            for (i = ncell; i > 0; i--)
+                start[i] = start[i - 1];
+            start[0] = 0;
+        }
+    }
+    for (i = 0; i < n; i++)
+        mark[i] &= 2; /* keep "ever swapped" */
+    for (i = 0; i < ncell; i++) /* every pair in a cell */
+        for (k = start[i]; k < start[i + 1]; k++) {
+            size_t q;
+            for (q = k + 1; q < start[i + 1]; q++) {
+                uint32_t a = seg[k], c = seg[q], an = succ[a], cn = succ[c];
+                if (c == an || a == cn || a == c || !seg_cross(p[a], p[an], p[c], p[cn]))
+                    continue;
+                ++*found;
+                if ((mark[a] | mark[an] | mark[c] | mark[cn]) & 1)
+                    continue;
+                mark[a] = mark[an] = mark[c] = mark[cn] = 3;
+                succ[a] = cn; /* a -> cn and c -> an: uncrossed, directions kept */
+                succ[c] = an;
+            }
+        }
+    rc = QC_OK;
+out:
+    qc__free(ctx, start, (ncell + 1) * sizeof *start);
+    qc__free(ctx, seg, seg != NULL ? (total ? total : 1) * sizeof *seg : 0);
+    return rc;
+}
+
+/* Where a level set is thinner than the grid (a neck near a saddle, a
+ * ridge just above the level) marching squares cannot tell its sides
+ * apart, and once the vertices sit on the exact level its rings may cross.
+ * Each crossing of segments a -> a', c -> c' is undone by joining a -> c'
+ * and c -> a' instead, which cuts a self-crossing ring into two or merges
+ * two rings into one, keeping every vertex and direction (the neck, being
+ * thinner than the grid, is cut or closed). Rings from `first` on. */
+static int untangle(qc_ctx *ctx, qc__rings *r, size_t first, double h)
+{
+    size_t b0, n, k, i, pass, found = 1, w;
+    uint32_t *succ = NULL, lv;
+    unsigned char *mark = NULL;
+    qc_vec2 *tmp = NULL;
+    int rc = QC_ENOMEM;
+
+    if (first >= r->end.n)
+        return QC_OK;
+    b0 = ring_begin(r, first);
+    n = r->pts.n - b0;
+    lv = r->level.i[first];
+    succ = qc__alloc_array(ctx, n, sizeof *succ);
+    mark = qc__alloc(ctx, n);
+    if (succ == NULL || mark == NULL)
+        goto out;
+    for (k = first; k < r->end.n; k++) {
+        size_t b = ring_begin(r, k) - b0, e = r->end.i[k] - b0;
+        for (i = b; i < e; i++)
+            succ[i] = (uint32_t)(i + 1 < e ? i + 1 : b);
+    }
+    memset(mark, 0, n);
+    for (pass = 0; pass < 32 && found > 0; pass++) {
+        rc = uncross_pass(ctx, r->pts.v + b0, succ, n, 2.0 * h, mark, &found);
+        if (rc < 0)
+            goto out;
+    }
+    rc = QC_ENOMEM;
+    if (pass == 1) { /* nothing crossed */
+        rc = QC_OK;
+        goto out;
+    }
+    tmp = qc__alloc_array(ctx, n, sizeof *tmp);
+    if (tmp == NULL)
+        goto out;
+    r->end.n = r->level.n = first;
+    for (i = 0, w = 0; i < n; i++) { /* the cycles, in order of their first vertex */
+        size_t c = i, w0 = w, q;
+        int swapped = 0;
+        double area = 0.0;
+
+        if (mark[i] & 4)
+            continue;
+        do {
+            mark[c] |= 4;
+            swapped |= mark[c] & 2;
+            tmp[w++] = r->pts.v[b0 + c];
+            c = succ[c];
+        } while (!(mark[c] & 4));
+        for (q = w0; q < w; q++) {
+            qc_vec2 u = tmp[q], v = tmp[q + 1 < w ? q + 1 : w0];
+            area += u.x * v.y - v.x * u.y;
+        }
+        /* a sliver cut off a neck thinner than the grid goes */
+        if (w - w0 < 3 || (swapped && fabs(0.5 * area) < h * h)) {
+            w = w0;
+            continue;
+        }
+        if (qc_order_push(ctx, &r->end, (uint32_t)(b0 + w)) < 0 ||
+            qc_order_push(ctx, &r->level, lv) < 0)
+            goto out;
+    }
+    memcpy(r->pts.v + b0, tmp, w * sizeof *tmp);
+    r->pts.n = b0 + w;
+    rc = QC_OK;
+out:
+    qc__free(ctx, succ, n * sizeof *succ);
+    qc__free(ctx, mark, n);
+    qc__free(ctx, tmp, n * sizeof *tmp);
+    return rc;
+}
+
 /* Traces one level's links (indexed) into rings. */
 static int trace_level(qc_ctx *ctx, ms *m, double level, uint32_t lv, unsigned char *done,
                        qc__rings *out)
@@ -983,7 +1135,12 @@ int qc__sdf_rings(qc_ctx *ctx, const qc__sdf *s, double l0, double step, size_t 
         for (t = b; t < e; t++)
             cell_links(&m, cells[t] % s->nx, cells[t] / s->nx, level);
         index_links(&m);
-        rc = trace_level(ctx, &m, level, (uint32_t)lv, done, out);
+        {
+            size_t lv_first = out->end.n;
+            rc = trace_level(ctx, &m, level, (uint32_t)lv, done, out);
+            if (rc == QC_OK)
+                rc = untangle(ctx, out, lv_first, s->h);
+        }
     }
 out:
     qc__free(ctx, count, (max_levels + 1) * sizeof *count);
