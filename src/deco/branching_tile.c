@@ -360,9 +360,18 @@ int qc__btile_layout(qc_ctx *ctx, const qc__btile *t, const qc_params *prm, cons
     unsigned cols = prm->repeat_cols >= 1.0 ? (unsigned)prm->repeat_cols : 1u;
     unsigned rows = prm->repeat_rows >= 1.0 ? (unsigned)prm->repeat_rows : 1u;
     size_t nc = out->ncmd, np = out->npt, k;
-    double lift = (double)(rows - 1) * t->dy;
-    int rc = qc_tile_repeat(ctx, tile, t->dx, t->dy, cols, rows, out);
+    double lift = (double)(rows - 1) * t->dy, copies = (double)cols * rows;
+    int rc = QC_OK;
 
+    /* room for every copy at once: no regrowth of a large path */
+    if (copies * (double)tile->npt + (double)np + rows < (double)SIZE_MAX / 32) {
+        size_t k2 = (size_t)cols * rows;
+        rc = QC__RESERVE(ctx, out->cmd, out->cmd_cap, nc + k2 * tile->ncmd + rows);
+        if (rc == QC_OK)
+            rc = QC__RESERVE(ctx, out->pt, out->pt_cap, np + k2 * tile->npt + rows);
+    }
+    if (rc == QC_OK)
+        rc = qc_tile_repeat(ctx, tile, t->dx, t->dy, cols, rows, out);
     if (rc < 0) {
         out->ncmd = nc;
         out->npt = np;
