@@ -136,6 +136,19 @@ static void math_should_match_libm_closely(void)
     TEST_ASSERT_EQUAL_DOUBLE(5.0, qc_hypot(3.0, 4.0));
 }
 
+/* An error message is one line whatever the quoted input held. */
+static void errors_should_be_one_line(void)
+{
+    qc_region r;
+    const char *m;
+
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_region_shape(&ctx, "blob\nsecond\rthird\tx:1", 1.0, &r));
+    m = qc_errmsg(&ctx);
+    TEST_ASSERT_NOT_NULL(strstr(m, "unknown shape 'blob second third x:1'"));
+    for (; *m; m++)
+        TEST_ASSERT_TRUE((unsigned char)*m >= 0x20);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -145,5 +158,6 @@ int main(void)
     RUN_TEST(path_should_count_points_and_join_pieces);
     RUN_TEST(rng_should_repeat_for_a_seed_and_differ_across_seeds);
     RUN_TEST(math_should_match_libm_closely);
+    RUN_TEST(errors_should_be_one_line);
     return UNITY_END();
 }

@@ -1,4 +1,5 @@
 /* The parameter table and qc_params_resolve. */
+#include <math.h>
 #include <string.h>
 
 #include "quiltc.h"
@@ -115,6 +116,22 @@ static void names_should_map_both_ways(void)
     TEST_ASSERT_EQUAL_INT(-1, qc_param_choice(qc_param_find("points"), "sn"));
 }
 
+/* Enum rows are ints: NaN, inf and huge values are refused when set, by name. */
+static void set_should_refuse_enum_values_no_int_holds(void)
+{
+    qc_params p;
+    static const double bad[] = {NAN, INFINITY, -INFINITY, 1e300, 0.5e10, 0.0, 99.0};
+    size_t i;
+
+    memset(&p, 0, sizeof p);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_params_set(&ctx, &p, "family", bad[i]));
+        TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "is not one of vine|branching"));
+    }
+    TEST_ASSERT_EQUAL_INT(0, p.family);
+    TEST_ASSERT_EQUAL_UINT64(0, p.given);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -124,5 +141,6 @@ int main(void)
     RUN_TEST(set_should_keep_an_explicit_zero);
     RUN_TEST(resolve_should_refuse_out_of_range_values_by_name);
     RUN_TEST(names_should_map_both_ways);
+    RUN_TEST(set_should_refuse_enum_values_no_int_holds);
     return UNITY_END();
 }

@@ -32,6 +32,7 @@ const char *qc_err_name(int status)
 int qc__fail(qc_ctx *ctx, int status, const char *fmt, ...)
 {
     va_list ap;
+    char *p;
 
     if (ctx == NULL)
         return status;
@@ -39,6 +40,10 @@ int qc__fail(qc_ctx *ctx, int status, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(ctx->msg, sizeof ctx->msg, fmt, ap);
     va_end(ap);
+    /* one line, whatever the quoted input held */
+    for (p = ctx->msg; *p != '\0'; p++)
+        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+            *p = ' ';
     return status;
 }
 

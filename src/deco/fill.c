@@ -85,7 +85,8 @@ static int tile_outline(qc_ctx *ctx, const qc_region *region, const qc_params *p
     if (rc < 0)
         goto out;
     memcpy(p, skel->p, n * sizeof *p);
-    memcpy(e, skel->edges, ne * sizeof *e);
+    if (ne > 0) /* a one-point skeleton has no edge array */
+        memcpy(e, skel->edges, ne * sizeof *e);
     p[n] = *entry;
     p[n + 1] = *exit;
     e[ne].a = port_node(skel->p, n, skel->edges, ne, *entry);

@@ -88,9 +88,10 @@ void qc__ftree_free(qc_ctx *ctx, qc__ftree *t)
         return;
     qc__free(ctx, t->off, (t->n + 1) * sizeof *t->off);
     qc__free(ctx, t->rep, t->n * sizeof *t->rep);
-    qc__free(ctx, t->src, t->nh * sizeof *t->src);
-    qc__free(ctx, t->tgt, t->nh * sizeof *t->tgt);
-    qc__free(ctx, t->twin, t->nh * sizeof *t->twin);
+    /* allocated with at least one element (qc__ftree_build) */
+    qc__free(ctx, t->src, (t->nh ? t->nh : 1) * sizeof *t->src);
+    qc__free(ctx, t->tgt, (t->nh ? t->nh : 1) * sizeof *t->tgt);
+    qc__free(ctx, t->twin, (t->nh ? t->nh : 1) * sizeof *t->twin);
     memset(t, 0, sizeof *t);
 }
 

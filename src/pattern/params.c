@@ -176,6 +176,10 @@ int qc_params_set(qc_ctx *ctx, qc_params *p, const char *name, double value)
         if (!(value >= 0.0 && value < 18446744073709551616.0))
             return qc__fail(ctx, QC_ERANGE, "seed %g out of range", value);
     }
+    /* enums are stored as int: refuse what no int holds (NaN, inf, huge) */
+    if (info->type == QC_PARAM_ENUM && !(value >= info->min && value <= info->max))
+        return qc__fail(ctx, QC_EINVAL, "%s %g is not one of %s", info->name, value,
+                        info->choices);
     put(p, info, value);
     p->given |= (uint64_t)1 << row_index(info);
     return QC_OK;

@@ -14,9 +14,10 @@ void qc_plan_estimate_get(const qc_plan *plan, double spi, double speed_mm_s,
     size_t i, pieces = 0;
 
     memset(out, 0, sizeof *out);
-    if (!(spi > 0))
+    /* out-of-range figures (NaN, inf, absurd) mean the defaults */
+    if (!(spi > 0 && spi <= 1000))
         spi = 12;
-    if (!(speed_mm_s > 0))
+    if (!(speed_mm_s > 0 && speed_mm_s <= 1e5))
         speed_mm_s = 25.4;
     for (i = 0; i < plan->n; i++) {
         qc_vec2 p = plan->p[i];
