@@ -65,7 +65,7 @@ assert set(s["ms"]) >= {"sample", "graph", "tour", "decorate", "write", "total"}
 check stats_is_one_json_object stats_json
 
 every_family() {
-    for f in vine branching wanderer fill stipple; do
+    for f in vine branching wanderer pebbling packing fill stipple echo spiral; do
         "$QC" generate --family "$f" --region circle:6 -o "$f.pat" || return 1
         "$QC" check "$f.pat" >/dev/null || return 1
     done

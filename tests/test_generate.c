@@ -34,7 +34,8 @@ static void same_path(const qc_path *a, const qc_path *b)
 /* The preview's shortcut changes nothing but the statistic. */
 static void test_skipping_the_gap_stat_keeps_the_path(void)
 {
-    static const int families[] = {QC_FAMILY_STIPPLE, QC_FAMILY_FILL};
+    static const int families[] = {QC_FAMILY_STIPPLE, QC_FAMILY_FILL, QC_FAMILY_ECHO,
+                                   QC_FAMILY_SPIRAL};
     size_t i;
 
     for (i = 0; i < sizeof families / sizeof families[0]; i++) {

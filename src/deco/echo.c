@@ -108,7 +108,7 @@ int qc_deco_echo(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     rc = qc_path_move_to(ctx, &one, pts.v[0]);
     for (i = 1; i < pts.n && rc == QC_OK; i++)
         rc = qc_path_line_to(ctx, &one, pts.v[i]);
-    if (rc == QC_OK && stats != NULL) {
+    if (rc == QC_OK && stats != NULL && !params->skip_gap_stat) {
         double g = qc_largest_gap(ctx, region, pts.v, pts.n, GAP_RES * d, NULL);
         if (g < 0.0)
             rc = (int)g;

@@ -564,7 +564,7 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
     rc = qc_path_move_to(ctx, &one, line.v[0]);
     for (i = 1; i < line.n && rc == QC_OK; i++)
         rc = qc_path_line_to(ctx, &one, line.v[i]);
-    if (rc == QC_OK && stats != NULL) {
+    if (rc == QC_OK && stats != NULL && !params->skip_gap_stat) {
         double g = qc_largest_gap(ctx, region, line.v, line.n, GAP_RES * d, NULL);
         if (g < 0.0)
             rc = (int)g;
