@@ -124,7 +124,7 @@ int qc_params_resolve(qc_ctx *ctx, const qc_params *in, qc_params *out);
 /* Figures about one generated pattern. */
 typedef struct qc_stats {
     size_t points, edges, order;
-    double length_mm;   /* path length, curves flattened at 0.01 mm */
+    double length_mm;   /* path length, curves flattened at 0.05 mm */
     qc_bbox bbox;
     size_t pieces;      /* separate pieces in the path (1 for a good pattern) */
     /* motif families */

@@ -44,7 +44,8 @@ static double cos_poly(double x) /* |x| <= pi/4 */
 static int reduce(double x, double *r)
 {
     double k = floor(x * (2.0 / QC_PI) + 0.5);
-    long q = (long)fmod(k, 4.0);
+    /* the quadrant k mod 4: two's complement & 3 while k fits, fmod beyond */
+    long q = fabs(k) < 4.0e18 ? (long)((long long)k & 3) : (long)fmod(k, 4.0);
 
     *r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
     return (int)(q < 0 ? q + 4 : q);
@@ -80,11 +81,15 @@ double qc_cos(double x)
 
 static double atan_small(double u) /* |u| <= tan(pi/12) */
 {
+    /* the series' coefficients (-1)^j / (2j + 1), j = 13 down to 1 */
+    static const double c[] = {-1.0 / 27, 1.0 / 25, -1.0 / 23, 1.0 / 21, -1.0 / 19,
+                               1.0 / 17, -1.0 / 15, 1.0 / 13, -1.0 / 11, 1.0 / 9,
+                               -1.0 / 7, 1.0 / 5, -1.0 / 3};
     double u2 = u * u, p = 0.0;
-    int k;
+    size_t i;
 
-    for (k = 27; k >= 3; k -= 2)
-        p = p * u2 + ((k & 2) ? -1.0 : 1.0) / k;
+    for (i = 0; i < sizeof c / sizeof c[0]; i++)
+        p = p * u2 + c[i];
     return u + u * u2 * p;
 }
 

@@ -22,23 +22,30 @@ static size_t cell_index(const pgrid *g, qc_vec2 p)
     return (cy < g->ny ? cy : g->ny - 1) * g->nx + (cx < g->nx ? cx : g->nx - 1);
 }
 
-/* No point of pts closer than d to p (the 5x5 cells round p's cell suffice). */
+/* No point of pts closer than d to p. Cells are d / sqrt 2 wide, so only the
+ * 5x5 cells round p's can hold one, less the corners (at least d away);
+ * nearest first, since a near conflict ends the search. */
 static int is_far(const pgrid *g, const qc_points *pts, qc_vec2 p)
 {
-    size_t c = cell_index(g, p), cx = c % g->nx, cy = c / g->nx;
-    size_t x0 = cx >= 2 ? cx - 2 : 0, y0 = cy >= 2 ? cy - 2 : 0;
-    size_t x1 = cx + 2 < g->nx ? cx + 2 : g->nx - 1, y1 = cy + 2 < g->ny ? cy + 2 : g->ny - 1;
-    size_t x, y;
+    static const signed char off[21][2] = {
+        {0, 0},   {1, 0},   {-1, 0}, {0, 1},  {0, -1}, {1, 1},   {-1, 1},
+        {1, -1},  {-1, -1}, {2, 0},  {-2, 0}, {0, 2},  {0, -2},  {2, 1},
+        {2, -1},  {-2, 1},  {-2, -1}, {1, 2}, {-1, 2}, {1, -2},  {-1, -2}};
+    long cx = (long)((p.x - g->x0) / g->cell), cy = (long)((p.y - g->y0) / g->cell);
+    size_t i;
 
-    for (y = y0; y <= y1; y++)
-        for (x = x0; x <= x1; x++) {
-            uint32_t s = g->slot[y * g->nx + x];
-            if (s != EMPTY) {
-                double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
-                if (dx * dx + dy * dy < g->d2)
-                    return 0;
-            }
+    for (i = 0; i < 21; i++) {
+        long x = cx + off[i][0], y = cy + off[i][1];
+        uint32_t s;
+        if (x < 0 || y < 0 || x >= (long)g->nx || y >= (long)g->ny)
+            continue;
+        s = g->slot[(size_t)y * g->nx + (size_t)x];
+        if (s != EMPTY) {
+            double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
+            if (dx * dx + dy * dy < g->d2)
+                return 0;
         }
+    }
     return 1;
 }
 
