@@ -227,6 +227,52 @@ static void test_shapes_should_cap_size_and_segments(void)
     assert_clean();
 }
 
+/* Generation is linear-memory, so the point cap bounds memory too: peak
+ * bytes per point at about 8000 points stay within twice those at about
+ * 2000, and under 4 KiB (docs/limits.md lists each family's figure). */
+static void test_generate_should_use_memory_linear_in_the_points(void)
+{
+    int family, measured = 0;
+
+    for (family = 1; family < QC_FAMILY_COUNT; family++) {
+        double per_point[2];
+        int k, skip = 0;
+
+        if (family == QC_FAMILY_ECHO || family == QC_FAMILY_SPIRAL)
+            continue; /* no points: their grid is capped on its own */
+        for (k = 0; k < 2 && !skip; k++) {
+            qc_region r = {0};
+            qc_params p;
+            qc_result res;
+            int rc;
+
+            setUp();
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, k ? "square:1000" : "square:500",
+                                                         1.0, &r));
+            memset(&p, 0, sizeof p);
+            qc_params_set(&ctx, &p, "family", family);
+            qc_params_set(&ctx, &p, "spacing", 10);
+            rc = qc_generate(&ctx, &r, &p, NULL, NULL, &res);
+            if (rc == QC_EUNSUPPORTED) {
+                skip = 1;
+            } else {
+                TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, rc, qc_family_name(family));
+                TEST_ASSERT_TRUE(res.points.n > (k ? 6000u : 1500u));
+                per_point[k] = (double)ta.peak_bytes / (double)res.points.n;
+            }
+            qc_result_free(&ctx, &res);
+            qc_region_free(&ctx, &r);
+            assert_clean();
+        }
+        if (skip)
+            continue;
+        TEST_ASSERT_TRUE_MESSAGE(per_point[1] < 2.0 * per_point[0], qc_family_name(family));
+        TEST_ASSERT_TRUE_MESSAGE(per_point[1] < 4096.0, qc_family_name(family));
+        measured++;
+    }
+    TEST_ASSERT_TRUE(measured >= 5);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -238,5 +284,6 @@ int main(void)
     RUN_TEST(test_largest_gap_should_cap_its_raster);
     RUN_TEST(test_complete_mst_should_refuse_above_twenty_thousand_points);
     RUN_TEST(test_shapes_should_cap_size_and_segments);
+    RUN_TEST(test_generate_should_use_memory_linear_in_the_points);
     return UNITY_END();
 }
