@@ -516,6 +516,34 @@ static void tile_should_refuse_a_skeleton_without_a_tree(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* One point: entry, the point, exit. */
+static void tile_of_one_point_should_run_port_to_port(void)
+{
+    ttile t;
+    qc_vec2 one = {40, 50}, in, out;
+    qc_skeleton s;
+    uint32_t root = 0;
+    qc_params par = params(10, QC_TILE_EDGE_TO_EDGE, 2, 1, 0, 1);
+    qc_path p = {0};
+
+    make_tile(60, 40, 30, 1, &t);
+    memset(&s, 0, sizeof s);
+    s.p = &one;
+    s.n = 1;
+    s.order = &root;
+    s.norder = 1;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_ports(&ctx, &t.r, &in, &out));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__branching_run(&ctx, &t.r, &par, &s, NULL, &p, NULL, NULL));
+    TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&p));
+    TEST_ASSERT_EQUAL_MEMORY(&in, &p.pt[0], sizeof in);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, out.x + 60, p.pt[p.npt - 1].x);
+    TEST_ASSERT_EQUAL_DOUBLE(out.y, p.pt[p.npt - 1].y);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, outside(&p, X0, Y0, X0 + 120, Y0 + 40));
+    qc_path_free(&ctx, &p);
+    free_tile(&t);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Through qc_generate: one piece inside the union of the tiles. */
 static void generate_should_lay_out_tiles(void)
 {
@@ -587,6 +615,7 @@ int main(void)
     RUN_TEST(collision_grid_should_wrap);
     RUN_TEST(tile_should_be_deterministic);
     RUN_TEST(tile_should_refuse_a_skeleton_without_a_tree);
+    RUN_TEST(tile_of_one_point_should_run_port_to_port);
     RUN_TEST(generate_should_lay_out_tiles);
     RUN_TEST(tile_should_survive_allocation_failures);
     return UNITY_END();
