@@ -334,10 +334,14 @@ int qc__btile_grid_add(qc_ctx *ctx, qc__btile *t, qc__cgrid *g, const qc_vec2 *p
         return QC_OK;
     b.min = b.max = poly[0];
     for (i = 1; i < n; i++) {
-        b.min.x = fmin(b.min.x, poly[i].x);
-        b.min.y = fmin(b.min.y, poly[i].y);
-        b.max.x = fmax(b.max.x, poly[i].x);
-        b.max.y = fmax(b.max.y, poly[i].y);
+        if (poly[i].x < b.min.x)
+            b.min.x = poly[i].x;
+        if (poly[i].y < b.min.y)
+            b.min.y = poly[i].y;
+        if (poly[i].x > b.max.x)
+            b.max.x = poly[i].x;
+        if (poly[i].y > b.max.y)
+            b.max.y = poly[i].y;
     }
     for (k = 0; k < t->nshift; k++) {
         qc_vec2 s = t->shift[k];
