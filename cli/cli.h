@@ -58,6 +58,11 @@ double cli_now_ms(void);
 int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
                    const qc_io_opts *opts);
 
+/* Writes plan to every path (formats[i]) all or nothing: each is written and
+ * closed under a temporary name, then all are renamed into place. */
+int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
+                    const qc_plan *plan, const qc_io_opts *opts);
+
 /* Reads a .pat or .svg pattern into a plan. CLI_* status. */
 int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan);
 

@@ -149,18 +149,12 @@ static int write_outputs(qc_ctx *ctx, const gen_opts *g, const int *fmt, const q
                          const qc_plan *plan)
 {
     qc_io_opts io;
-    size_t i;
 
     memset(&io, 0, sizeof io);
     io.region = region;
     io.svg_inches = g->pat.mm_per_unit == 25.4;
     io.feed_mm_min = g->feed;
-    for (i = 0; i < g->nout; i++) {
-        int rc = cli_write_plan(ctx, g->out[i], fmt[i], plan, &io);
-        if (rc != CLI_OK)
-            return rc;
-    }
-    return CLI_OK;
+    return cli_write_plans(ctx, g->out, fmt, g->nout, plan, &io);
 }
 
 int cmd_generate(int argc, char **argv)

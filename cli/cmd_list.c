@@ -38,12 +38,11 @@ int cmd_list(int argc, char **argv)
     } else if (strcmp(what, "formats") == 0) {
         for (i = 1; i < QC_FORMAT_COUNT; i++)
             printf("%-6s %s\n", qc_format_name((int)i), qc_format_ext((int)i));
+    } else if (strcmp(what, "--help") == 0) {
+        puts("usage: quiltc list families|params|motifs|formats");
     } else {
-        if (strcmp(what, "--help") != 0)
-            cli_error("list: what? '%s' (families, params, motifs or formats)", what);
-        fputs("usage: quiltc list families|params|motifs|formats\n",
-              strcmp(what, "--help") == 0 ? stdout : stderr);
-        return strcmp(what, "--help") == 0 ? CLI_OK : CLI_USAGE;
+        cli_error("list: unknown list '%s' (families, params, motifs or formats)", what);
+        return CLI_USAGE;
     }
     return CLI_OK;
 }

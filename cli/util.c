@@ -130,7 +130,8 @@ void cli_output_abort(cli_output *out)
     memset(out, 0, sizeof *out);
 }
 
-int cli_output_commit(cli_output *out)
+/* Flushes, syncs and closes; the file is still under its temporary name. */
+static int output_close(cli_output *out)
 {
     const char *name = out->path != NULL ? out->path : "stdout";
     int err = out->failed || fflush(out->f) != 0;
@@ -138,7 +139,6 @@ int cli_output_commit(cli_output *out)
     if (out->f == stdout) {
         if (err)
             cli_error("cannot write to stdout: %s", strerror(errno));
-        memset(out, 0, sizeof *out);
         return err ? -1 : 0;
     }
     if (!err && fsync(fileno(out->f)) != 0 && errno != EINVAL)
@@ -146,10 +146,18 @@ int cli_output_commit(cli_output *out)
     if (fclose(out->f) != 0)
         err = 1;
     out->f = NULL;
-    if (!err && rename(out->tmp, out->path) != 0)
-        err = 1;
-    if (err) {
+    if (err)
         cli_error("cannot write '%s': %s", name, strerror(errno ? errno : EIO));
+    return err ? -1 : 0;
+}
+
+/* Renames a closed output into place. */
+static int output_publish(cli_output *out)
+{
+    int err = out->path != NULL && rename(out->tmp, out->path) != 0;
+
+    if (err) {
+        cli_error("cannot write '%s': %s", out->path, strerror(errno));
         cli_output_abort(out);
         return -1;
     }
@@ -157,6 +165,15 @@ int cli_output_commit(cli_output *out)
     free(out->tmp);
     memset(out, 0, sizeof *out);
     return 0;
+}
+
+int cli_output_commit(cli_output *out)
+{
+    if (output_close(out) != 0) {
+        cli_output_abort(out);
+        return -1;
+    }
+    return output_publish(out);
 }
 
 int cli_parse_double(const char *s, double *out)
@@ -229,4 +246,44 @@ int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *pla
         return CLI_RUNTIME;
     }
     return cli_output_commit(&out) == 0 ? CLI_OK : CLI_RUNTIME;
+}
+
+int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
+                    const qc_plan *plan, const qc_io_opts *opts)
+{
+    cli_output out[16];
+    size_t i, opened = 0;
+    int rc = CLI_OK;
+
+    if (n > sizeof out / sizeof out[0]) {
+        cli_error("at most %lu outputs", (unsigned long)(sizeof out / sizeof out[0]));
+        return CLI_USAGE;
+    }
+    /* every file written and closed under its temporary name first ... */
+    for (i = 0; i < n && rc == CLI_OK; i++) {
+        int st;
+        if (cli_output_open(&out[i], paths[i]) != 0) {
+            rc = CLI_RUNTIME;
+            break;
+        }
+        opened++;
+        st = qc_io_write(ctx, formats[i], plan, opts, cli_output_write, &out[i]);
+        if (st < 0) {
+            if (st == QC_EIO)
+                cli_error("cannot write '%s': %s", paths[i], strerror(errno ? errno : EIO));
+            else
+                cli_error("%s: %s", paths[i], qc_errmsg(ctx));
+            rc = CLI_RUNTIME;
+        } else if (output_close(&out[i]) != 0) {
+            rc = CLI_RUNTIME;
+        }
+    }
+    /* ... then all renamed into place, or none */
+    for (i = 0; i < opened; i++) {
+        if (rc == CLI_OK)
+            rc = output_publish(&out[i]) == 0 ? CLI_OK : CLI_RUNTIME;
+        else
+            cli_output_abort(&out[i]);
+    }
+    return rc;
 }

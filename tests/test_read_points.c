@@ -173,13 +173,13 @@ void tsplib_should_read_the_node_section(void)
 
 void tsplib_files_should_match_their_dimension(void)
 {
-    FILE *f = fopen("../shared/data/tsplib/a280.tsp", "rb");
+    FILE *f = fopen("tests/data/tsplib/a280.tsp", "rb");
     qc_points pts = {0};
     char *buf;
     long len;
 
     if (f == NULL)
-        TEST_IGNORE_MESSAGE("../shared/data/tsplib/a280.tsp is missing");
+        TEST_IGNORE_MESSAGE("tests/data/tsplib/a280.tsp is missing");
     fseek(f, 0, SEEK_END);
     len = ftell(f);
     fseek(f, 0, SEEK_SET);

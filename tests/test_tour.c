@@ -9,7 +9,7 @@
 #include "testalloc.h"
 #include "unity.h"
 
-#define TSPLIB_DIR "../shared/data/tsplib/"
+#define TSPLIB_DIR "tests/data/tsplib/"
 
 static testalloc ta;
 static qc_ctx ctx;
