@@ -29,6 +29,6 @@ for t in "$@" tests/check_*.sh; do
         failed=$((failed + 1))
     fi
 done
-[ "$skipped" -gt 0 ] && echo "($skipped skipped: their tools are not installed)"
+[ "$skipped" -gt 0 ] && echo "($skipped ignored: see the IGNORE lines above)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
