@@ -13,59 +13,7 @@
 
 #include "branching_tile.h"
 
-/* Port stubs: the nearest this many points are tried. */
-#define PORT_CANDIDATES 16
 #define NONE UINT32_MAX
-
-/* Whether the segment a-p[bi] crosses or touches a tree edge not at bi. */
-static int stub_crosses(const qc_vec2 *p, const qc_edge *e, size_t ne, qc_vec2 a, uint32_t bi)
-{
-    qc_vec2 b = p[bi];
-    size_t k;
-
-    for (k = 0; k < ne; k++) {
-        qc_vec2 c = p[e[k].a], d = p[e[k].b];
-        double o1, o2, o3, o4;
-
-        if (e[k].a == bi || e[k].b == bi)
-            continue;
-        o1 = qc_orient2d(a, b, c);
-        o2 = qc_orient2d(a, b, d);
-        o3 = qc_orient2d(c, d, a);
-        o4 = qc_orient2d(c, d, b);
-        if (((o1 >= 0.0 && o2 <= 0.0) || (o1 <= 0.0 && o2 >= 0.0)) &&
-            ((o3 >= 0.0 && o4 <= 0.0) || (o3 <= 0.0 && o4 >= 0.0)))
-            return 1;
-    }
-    return 0;
-}
-
-/* The point a port joins: the nearest whose stub crosses no tree edge (of
- * the PORT_CANDIDATES nearest; the nearest if all cross). Ties: lowest index. */
-static uint32_t port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne, qc_vec2 a)
-{
-    uint32_t best[PORT_CANDIDATES];
-    double bd[PORT_CANDIDATES];
-    size_t m = 0, i, k;
-
-    for (i = 0; i < n; i++) {
-        double dd = (p[i].x - a.x) * (p[i].x - a.x) + (p[i].y - a.y) * (p[i].y - a.y);
-        if (m == PORT_CANDIDATES && dd >= bd[PORT_CANDIDATES - 1])
-            continue;
-        k = m < PORT_CANDIDATES ? m++ : PORT_CANDIDATES - 1;
-        while (k > 0 && bd[k - 1] > dd) {
-            bd[k] = bd[k - 1];
-            best[k] = best[k - 1];
-            k--;
-        }
-        bd[k] = dd;
-        best[k] = (uint32_t)i;
-    }
-    for (k = 0; k < m; k++)
-        if (!stub_crosses(p, e, ne, a, best[k]))
-            return best[k];
-    return best[0];
-}
 
 /* Angle of v - u in [0, 2 pi). */
 static double heading(const qc_vec2 *p, uint32_t u, uint32_t v)
@@ -284,9 +232,9 @@ int qc__btile_make(qc_ctx *ctx, const qc_region *region, const qc_skeleton *skel
         memcpy(t->e, skel->edges, (n - 1) * sizeof *t->e);
     t->p[n] = t->entry;
     t->p[n + 1] = t->exit;
-    t->e[n - 1].a = port_node(skel->p, n, t->e, n - 1, t->entry);
+    t->e[n - 1].a = qc__tile_port_node(skel->p, n, t->e, n - 1, t->entry);
     t->e[n - 1].b = (uint32_t)n;
-    t->e[n].a = port_node(skel->p, n, t->e, n - 1, t->exit);
+    t->e[n].a = qc__tile_port_node(skel->p, n, t->e, n - 1, t->exit);
     t->e[n].b = (uint32_t)(n + 1);
     rc = tile_walk(ctx, t);
     if (rc < 0) {

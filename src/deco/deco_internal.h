@@ -161,6 +161,17 @@ QC__HIDDEN int qc__ftree_loop(qc_ctx *ctx, const qc__ftree *t, uint32_t root,
 QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint32_t b,
                               const qc__fstyle *st, qc_points *out);
 
+/* ---- tiles (tile.c) ---- */
+
+/* Port stubs: the nearest this many points are tried. */
+#define PORT_CANDIDATES 16
+
+/* The tree node a tile port at a joins: the nearest (of the PORT_CANDIDATES
+ * nearest) whose straight stub crosses no tree edge; the nearest if all
+ * cross. Ties: the lowest index. */
+QC__HIDDEN uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne,
+                                       qc_vec2 a);
+
 /* ---- distance grids and offset rings (offset.c) ---- */
 
 /* Distance to a region's boundary sampled on a grid: node (i, j) at

@@ -15,54 +15,6 @@
 /* Largest-gap statistic resolution, times d. */
 #define GAP_RES (1.0 / 6.0)
 
-static int tree_crosses(const qc_vec2 *p, const qc_edge *e, size_t ne, qc_vec2 a, uint32_t bi)
-{
-    qc_vec2 b = p[bi];
-    size_t k;
-
-    for (k = 0; k < ne; k++) {
-        qc_vec2 c = p[e[k].a], d = p[e[k].b];
-        double o1, o2, o3, o4;
-
-        if (e[k].a == bi || e[k].b == bi)
-            continue;
-        o1 = qc_orient2d(a, b, c);
-        o2 = qc_orient2d(a, b, d);
-        o3 = qc_orient2d(c, d, a);
-        o4 = qc_orient2d(c, d, b);
-        if (((o1 >= 0.0 && o2 <= 0.0) || (o1 <= 0.0 && o2 >= 0.0)) &&
-            ((o3 >= 0.0 && o4 <= 0.0) || (o3 <= 0.0 && o4 >= 0.0)))
-            return 1;
-    }
-    return 0;
-}
-
-/* The node a port joins: the nearest whose stub crosses no tree edge (of the 16 nearest). */
-static uint32_t port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne, qc_vec2 a)
-{
-    uint32_t best[16];
-    double bd[16];
-    size_t m = 0, i, k;
-
-    for (i = 0; i < n; i++) {
-        double dd = (p[i].x - a.x) * (p[i].x - a.x) + (p[i].y - a.y) * (p[i].y - a.y);
-        if (m == 16 && dd >= bd[15])
-            continue;
-        k = m < 16 ? m++ : 15;
-        while (k > 0 && bd[k - 1] > dd) {
-            bd[k] = bd[k - 1];
-            best[k] = best[k - 1];
-            k--;
-        }
-        bd[k] = dd;
-        best[k] = (uint32_t)i;
-    }
-    for (k = 0; k < m; k++)
-        if (!tree_crosses(p, e, ne, a, best[k]))
-            return best[k];
-    return best[0];
-}
-
 /* Tile: the outline from the left port to the right port. */
 static int tile_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
                         const qc_skeleton *skel, qc__fstyle *st, qc_points *pts,
@@ -89,9 +41,9 @@ static int tile_outline(qc_ctx *ctx, const qc_region *region, const qc_params *p
         memcpy(e, skel->edges, ne * sizeof *e);
     p[n] = *entry;
     p[n + 1] = *exit;
-    e[ne].a = port_node(skel->p, n, skel->edges, ne, *entry);
+    e[ne].a = qc__tile_port_node(skel->p, n, skel->edges, ne, *entry);
     e[ne].b = (uint32_t)n;
-    e[ne + 1].a = port_node(skel->p, n, skel->edges, ne, *exit);
+    e[ne + 1].a = qc__tile_port_node(skel->p, n, skel->edges, ne, *exit);
     e[ne + 1].b = (uint32_t)(n + 1);
     /* wrap: a tip circle keeps clear of the edges a neighbouring tile shares */
     for (i = 0; i < n + 2; i++) {

@@ -1,7 +1,7 @@
 /* Tiles: the entry and exit ports of a tile and the pantograph layout of copies. */
 #include <math.h>
 
-#include "internal.h"
+#include "deco_internal.h"
 
 int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 *exit)
 {
@@ -111,4 +111,52 @@ int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsig
         }
     }
     return QC_OK;
+}
+
+/* Whether the segment a-p[bi] crosses or touches a tree edge not at bi. */
+static int stub_crosses(const qc_vec2 *p, const qc_edge *e, size_t ne, qc_vec2 a, uint32_t bi)
+{
+    qc_vec2 b = p[bi];
+    size_t k;
+
+    for (k = 0; k < ne; k++) {
+        qc_vec2 c = p[e[k].a], d = p[e[k].b];
+        double o1, o2, o3, o4;
+
+        if (e[k].a == bi || e[k].b == bi)
+            continue;
+        o1 = qc_orient2d(a, b, c);
+        o2 = qc_orient2d(a, b, d);
+        o3 = qc_orient2d(c, d, a);
+        o4 = qc_orient2d(c, d, b);
+        if (((o1 >= 0.0 && o2 <= 0.0) || (o1 <= 0.0 && o2 >= 0.0)) &&
+            ((o3 >= 0.0 && o4 <= 0.0) || (o3 <= 0.0 && o4 >= 0.0)))
+            return 1;
+    }
+    return 0;
+}
+
+uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne, qc_vec2 a)
+{
+    uint32_t best[PORT_CANDIDATES];
+    double bd[PORT_CANDIDATES];
+    size_t m = 0, i, k;
+
+    for (i = 0; i < n; i++) {
+        double dd = (p[i].x - a.x) * (p[i].x - a.x) + (p[i].y - a.y) * (p[i].y - a.y);
+        if (m == PORT_CANDIDATES && dd >= bd[PORT_CANDIDATES - 1])
+            continue;
+        k = m < PORT_CANDIDATES ? m++ : PORT_CANDIDATES - 1;
+        while (k > 0 && bd[k - 1] > dd) {
+            bd[k] = bd[k - 1];
+            best[k] = best[k - 1];
+            k--;
+        }
+        bd[k] = dd;
+        best[k] = (uint32_t)i;
+    }
+    for (k = 0; k < m; k++)
+        if (!stub_crosses(p, e, ne, a, best[k]))
+            return best[k];
+    return best[0];
 }
