@@ -280,6 +280,41 @@ static void flatten_should_split_pieces_and_measure(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* A cubic's point, tangent and split agree with each other. */
+static void cubic_point_tangent_and_split_should_agree(void)
+{
+    qc_vec2 q[4], l[4], r[4], p, a, b, tg;
+    double t = 0.3, h = 1e-6;
+
+    q[0].x = 0; q[0].y = 0; q[1].x = 1; q[1].y = 3; q[2].x = 4; q[2].y = -2; q[3].x = 5; q[3].y = 1;
+    p = qc_cubic_point(q, 0);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, p.x);
+    p = qc_cubic_point(q, 1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-15, 5.0, p.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-15, 1.0, p.y);
+    a = qc_cubic_point(q, t - h);
+    b = qc_cubic_point(q, t + h);
+    tg = qc_cubic_tangent(q, t);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, (b.x - a.x) / (2 * h), tg.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, (b.y - a.y) / (2 * h), tg.y);
+    qc_cubic_split(q, t, l, r);
+    p = qc_cubic_point(q, t);
+    TEST_ASSERT_EQUAL_DOUBLE(p.x, l[3].x);
+    TEST_ASSERT_EQUAL_DOUBLE(p.y, r[0].y);
+    /* the halves trace the same curve: left at 0.5 is q at t/2, right at 0.5 is q at (1+t)/2 */
+    a = qc_cubic_point(l, 0.5);
+    b = qc_cubic_point(q, t / 2);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, b.x, a.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, b.y, a.y);
+    a = qc_cubic_point(r, 0.5);
+    b = qc_cubic_point(q, (1 + t) / 2);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, b.x, a.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, b.y, a.y);
+    qc_cubic_split(q, t, l, q); /* r may alias q */
+    TEST_ASSERT_EQUAL_DOUBLE(r[1].x, q[1].x);
+    TEST_ASSERT_EQUAL_DOUBLE(r[3].y, q[3].y);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -290,5 +325,6 @@ int main(void)
     RUN_TEST(catmull_rom_should_fail_cleanly_out_of_memory);
     RUN_TEST(flatten_should_respect_tolerance);
     RUN_TEST(flatten_should_split_pieces_and_measure);
+    RUN_TEST(cubic_point_tangent_and_split_should_agree);
     return UNITY_END();
 }

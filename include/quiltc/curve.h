@@ -40,6 +40,12 @@ int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
 /* Length of path in mm (sewn length: MOVEs between pieces excluded),
  * curves flattened to tol (tol <= 0 means 0.01 mm). Allocates nothing. */
 double qc_curve_length(const qc_path *path, double tol);
+
+/* One cubic Bezier segment q[0..3]: its point and derivative at t in [0, 1],
+ * and its split at t (l and r receive 4 points each; r may alias q). */
+qc_vec2 qc_cubic_point(const qc_vec2 *q, double t);
+qc_vec2 qc_cubic_tangent(const qc_vec2 *q, double t);
+void qc_cubic_split(const qc_vec2 *q, double t, qc_vec2 *l, qc_vec2 *r);
 /* Bounding box of the path's flattened points (control points excluded);
  * all zero for an empty path. tol as for qc_curve_length. */
 qc_bbox qc_curve_bbox(const qc_path *path, double tol);

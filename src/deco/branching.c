@@ -39,40 +39,6 @@ typedef struct shape { /* a motif's unit-frame collision geometry */
     qc_vec2 axis;      /* from the attachment towards the centre */
 } shape;
 
-static qc_vec2 bez(const qc_vec2 *q, double t)
-{
-    double u = 1 - t, a = u * u * u, b = 3 * u * u * t, c = 3 * u * t * t, d = t * t * t;
-    qc_vec2 r;
-    r.x = a * q[0].x + b * q[1].x + c * q[2].x + d * q[3].x;
-    r.y = a * q[0].y + b * q[1].y + c * q[2].y + d * q[3].y;
-    return r;
-}
-
-static qc_vec2 bez_d(const qc_vec2 *q, double t)
-{
-    double u = 1 - t;
-    qc_vec2 r;
-    r.x = 3 * u * u * (q[1].x - q[0].x) + 6 * u * t * (q[2].x - q[1].x) + 3 * t * t * (q[3].x - q[2].x);
-    r.y = 3 * u * u * (q[1].y - q[0].y) + 6 * u * t * (q[2].y - q[1].y) + 3 * t * t * (q[3].y - q[2].y);
-    return r;
-}
-
-/* Splits q at t: left half into l, right half into r. */
-static void bez_split(const qc_vec2 *q, double t, qc_vec2 *l, qc_vec2 *r)
-{
-    qc_vec2 a, b, c, d, e, f;
-#define LERP(p, s) ((qc_vec2){(p).x + t * ((s).x - (p).x), (p).y + t * ((s).y - (p).y)})
-    a = LERP(q[0], q[1]);
-    b = LERP(q[1], q[2]);
-    c = LERP(q[2], q[3]);
-    d = LERP(a, b);
-    e = LERP(b, c);
-    f = LERP(d, e);
-#undef LERP
-    l[0] = q[0]; l[1] = a; l[2] = d; l[3] = f;
-    r[0] = f; r[1] = e; r[2] = c; r[3] = q[3];
-}
-
 static qc_vec2 unit(qc_vec2 d)
 {
     double len = qc_hypot(d.x, d.y);
@@ -469,7 +435,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
         for (k = 1; k <= nk && rc == QC_OK; k++) {
             qc_vec2 e[2];
             e[0] = prev;
-            e[1] = bez(q, (double)k / nk);
+            e[1] = qc_cubic_point(q, (double)k / nk);
             rc = grid_add(&r, e, 2, K_VINE, (uint32_t)j);
             if (rc == QC_OK && pl != NULL)
                 rc = qc_points_push(ctx, &pl->vine, prev);
@@ -528,10 +494,10 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
         }
         for (k = 1; k <= nk && rc == QC_OK; k++) {
             double t = (double)k / nk;
-            qc_vec2 p = bez(q, t);
+            qc_vec2 p = qc_cubic_point(q, t);
             double dl = qc_hypot(p.x - prev.x, p.y - prev.y);
             if (acc + dl >= step && k < nk) {
-                qc_vec2 tg = unit(bez_d(q, t));
+                qc_vec2 tg = unit(qc_cubic_tangent(q, t));
                 if (tg.x != 0 || tg.y != 0)
                     rc = candidate(&r, p, tg, side, alpha, s, (uint32_t)j, t, stats);
                 side = -side;
@@ -567,7 +533,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
             for (; sp < r.nspots && r.spots[sp].seg == j && rc == QC_OK; sp++) {
                 double t = r.spots[sp].t;
                 if (nseg > 0 && t > t0 + 1e-12) {
-                    bez_split(cur, (t - t0) / (1 - t0), l, rr);
+                    qc_cubic_split(cur, (t - t0) / (1 - t0), l, rr);
                     rc = qc_path_cubic_to(ctx, dst, l[1], l[2], l[3]);
                     memcpy(cur, rr, sizeof cur);
                     t0 = t;

@@ -19,31 +19,6 @@
 #define DRAW_IN 0.05  /* motifs kept this many mm inside their pebble and the region ... */
 #define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
 
-static qc_vec2 bez(const qc_vec2 *q, double t)
-{
-    double u = 1 - t, a = u * u * u, b = 3 * u * u * t, c = 3 * u * t * t, d = t * t * t;
-    qc_vec2 r;
-    r.x = a * q[0].x + b * q[1].x + c * q[2].x + d * q[3].x;
-    r.y = a * q[0].y + b * q[1].y + c * q[2].y + d * q[3].y;
-    return r;
-}
-
-/* Splits q at t: the left part into l, the right part into r. */
-static void split(const qc_vec2 *q, double t, qc_vec2 *l, qc_vec2 *r)
-{
-    qc_vec2 a, b, c, d, e, f;
-#define MIX(p, s) ((qc_vec2){(p).x + t * ((s).x - (p).x), (p).y + t * ((s).y - (p).y)})
-    a = MIX(q[0], q[1]);
-    b = MIX(q[1], q[2]);
-    c = MIX(q[2], q[3]);
-    d = MIX(a, b);
-    e = MIX(b, c);
-    f = MIX(d, e);
-#undef MIX
-    l[0] = q[0]; l[1] = a; l[2] = d; l[3] = f;
-    r[0] = f; r[1] = e; r[2] = c; r[3] = q[3];
-}
-
 /* Where on motif m (unit frame) is nearest x: command *cmd at parameter *t. */
 static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
 {
@@ -65,7 +40,7 @@ static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
             c[2] = q[1];
             c[3] = q[2];
             for (s = 0; s <= SAMPLES; s++) {
-                qc_vec2 b = bez(c, (double)s / SAMPLES);
+                qc_vec2 b = qc_cubic_point(c, (double)s / SAMPLES);
                 double dd = qc_hypot(b.x - x.x, b.y - x.y);
                 if (dd < best) {
                     best = dd;
@@ -236,7 +211,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                 if (cubic) {
                     qc_vec2 l[4], r[4];
                     int z;
-                    split(f->seg, tl, l, r);
+                    qc_cubic_split(f->seg, tl, l, r);
                     rc = qc_path_cubic_to(ctx, out, l[1], l[2], l[3]);
                     for (z = 0; z < 4; z++)
                         f->seg[z] = r[z];
