@@ -23,10 +23,18 @@ static void stages(qc_ctx *ctx, const qc_points *pts)
         FUZZ_CHECK(tree.n == (pts->n ? pts->n - 1 : 0), "mst has n-1 edges");
         if (pts->n <= 60 && qc_mst(ctx, pts->v, pts->n, QC_MST_MODE_COMPLETE, &full) == QC_OK) {
             size_t i;
+            double wt = 0, wf = 0;
             FUZZ_CHECK(full.n == tree.n, "both MST modes give n-1 edges");
-            for (i = 0; i < tree.n; i++)
-                FUZZ_CHECK(full.e[i].a == tree.e[i].a && full.e[i].b == tree.e[i].b,
-                           "both MST modes give the same tree");
+            for (i = 0; i < tree.n; i++) {
+                const qc_vec2 *v = pts->v;
+                wt += qc_hypot(v[tree.e[i].a].x - v[tree.e[i].b].x, v[tree.e[i].a].y - v[tree.e[i].b].y);
+                wf += qc_hypot(v[full.e[i].a].x - v[full.e[i].b].x, v[full.e[i].a].y - v[full.e[i].b].y);
+                /* open finding: on ties of the computed length the modes may differ */
+                if (!fuzz_known("mst-ties"))
+                    FUZZ_CHECK(full.e[i].a == tree.e[i].a && full.e[i].b == tree.e[i].b,
+                               "both MST modes give the same tree");
+            }
+            FUZZ_CHECK(fabs(wt - wf) <= 1e-9 * (wt + wf) + 1e-300, "both MST modes weigh the same");
         }
         if (pts->n > 0) {
             rc = qc_tree_walk(ctx, pts->v, pts->n, tree.e, tree.n,
