@@ -458,11 +458,11 @@ static void mst_check(const qc_vec2 *p, size_t n)
         qc_edge e = a.e[i];
         TEST_ASSERT_TRUE(e.a < e.b && e.b < n);
         w += hypot(p[e.a].x - p[e.b].x, p[e.a].y - p[e.b].y);
-        if (i > 0) { /* sorted by (length, a, b) */
+        if (i > 0) { /* sorted by (exact length, a, b): computed lengths may tie */
             qc_edge f = a.e[i - 1];
             double lf = (p[f.a].x - p[f.b].x) * (p[f.a].x - p[f.b].x) + (p[f.a].y - p[f.b].y) * (p[f.a].y - p[f.b].y);
             double le = (p[e.a].x - p[e.b].x) * (p[e.a].x - p[e.b].x) + (p[e.a].y - p[e.b].y) * (p[e.a].y - p[e.b].y);
-            TEST_ASSERT_TRUE(lf < le || (lf == le && (f.a < e.a || (f.a == e.a && f.b < e.b))));
+            TEST_ASSERT_TRUE(lf <= le * (1 + 1e-14));
         }
     }
     TEST_ASSERT_DOUBLE_WITHIN(1e-9 * (1 + w), prim_weight(p, n), w);
@@ -563,6 +563,30 @@ static void graph_should_survive_out_of_memory(void)
     free(p);
 }
 
+/* Lengths that round to the same double are still ordered exactly, so the
+ * complete graph does not pick 0-1 where the collinear Delaunay chain has
+ * only 0-2 and 2-1 (a fuzz finding). */
+static void mst_should_order_lengths_exactly(void)
+{
+    qc_vec2 p[3];
+    qc_edges a = {0}, b = {0};
+
+    p[0] = v2(0, 0);
+    p[1] = v2(1, 0);
+    p[2] = v2(7e-18, 0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, 3, QC_MST_MODE_DELAUNAY, &a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, 3, QC_MST_MODE_COMPLETE, &b));
+    TEST_ASSERT_EQUAL_size_t(2, b.n);
+    TEST_ASSERT_EQUAL_MEMORY(a.e, b.e, 2 * sizeof *a.e);
+    TEST_ASSERT_EQUAL_UINT32(0, b.e[0].a); /* 0-2, the tiny one, then 1-2 */
+    TEST_ASSERT_EQUAL_UINT32(2, b.e[0].b);
+    TEST_ASSERT_EQUAL_UINT32(1, b.e[1].a);
+    TEST_ASSERT_EQUAL_UINT32(2, b.e[1].b);
+    qc_edges_free(&ctx, &a);
+    qc_edges_free(&ctx, &b);
+    mst_check(p, 3);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -583,5 +607,6 @@ int main(void)
     RUN_TEST(mst_should_join_duplicates_and_collinear_points);
     RUN_TEST(mst_should_append_and_refuse_large_complete_graphs);
     RUN_TEST(graph_should_survive_out_of_memory);
+    RUN_TEST(mst_should_order_lengths_exactly);
     return UNITY_END();
 }

@@ -1,7 +1,8 @@
 /*
- * Euclidean MST. Edges are totally ordered by (squared length as a double,
- * a, b) with a < b, so the tree is unique and both modes agree edge for
- * edge: Kruskal over the Delaunay edges (which contain the EMST) plus
+ * Euclidean MST. Edges are totally ordered by (exact squared length, a, b)
+ * with a < b, so the tree is unique and both modes agree edge for edge
+ * (an MST edge under exact lengths has an empty closed diametral disk, so
+ * every Delaunay triangulation holds it): Kruskal over the Delaunay edges (which contain the EMST) plus
  * zero-length edges joining duplicates to their first copy, or a dense
  * O(n^2) Prim over the complete graph (the paper's complete graph without
  * its n^2/2 edge list: 20000 points would need 3 GB for Kruskal).
@@ -27,18 +28,19 @@ static uint64_t len_key(double l)
     return u;
 }
 
-/* (l1, a1, b1) < (l2, a2, b2) with a < b in each. */
-static int before(double l1, uint32_t a1, uint32_t b1, double l2, uint32_t a2,
-                  uint32_t b2)
+/* (|a1 b1|, a1, b1) < (|a2 b2|, a2, b2) with a < b in each; lengths exact. */
+static int before(const qc_vec2 *p, uint32_t a1, uint32_t b1, uint32_t a2, uint32_t b2)
 {
-    if (l1 != l2)
-        return l1 < l2;
+    int c = qc__cmp_len2(p[a1], p[b1], p[a2], p[b2]);
+
+    if (c != 0)
+        return c < 0;
     return a1 != a2 ? a1 < a2 : b1 < b2;
 }
 
 static int edge_before(const qc_vec2 *p, qc_edge x, qc_edge y)
 {
-    return before(len2(p, x.a, x.b), x.a, x.b, len2(p, y.a, y.b), y.a, y.b);
+    return before(p, x.a, x.b, y.a, y.b);
 }
 
 static void sift(const qc_vec2 *p, qc_edge *e, size_t i, size_t m)
@@ -117,6 +119,15 @@ static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
             ;
         if (r - i > 1)
             sort_run(p, e + i, r - i);
+    }
+    /* Computed lengths a few ulps apart may straddle two runs in the wrong
+     * order: one insertion pass with the exact order mends that (it moves
+     * nothing in the usual case, a comparison per edge). */
+    for (i = 1; i < m; i++) {
+        qc_edge x = e[i];
+        for (r = i; r > 0 && edge_before(p, x, e[r - 1]); r--)
+            e[r] = e[r - 1];
+        e[r] = x;
     }
     return QC_OK;
 }
@@ -199,13 +210,12 @@ out_free:
 
 static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
 {
-    double *best = qc__alloc_array(ctx, n, sizeof *best);
     uint32_t *from = qc__alloc_array(ctx, n, sizeof *from);
     size_t i, k, start = out->n;
     uint32_t v = 0;
     int rc = QC_ENOMEM;
 
-    if (best == NULL || from == NULL)
+    if (from == NULL)
         goto out_free;
     for (i = 0; i < n; i++)
         from[i] = UINT32_MAX; /* UINT32_MAX: no edge yet; v itself: in the tree */
@@ -214,24 +224,18 @@ static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
         uint32_t w, bw = UINT32_MAX;
 
         for (w = 0; w < n; w++) {
-            double l;
             uint32_t a, b;
 
             if (from[w] == w)
                 continue;
-            l = len2(p, v, w);
             a = v < w ? v : w;
             b = v < w ? w : v;
             if (from[w] == UINT32_MAX ||
-                before(l, a, b, best[w], from[w] < w ? from[w] : w,
-                       from[w] < w ? w : from[w])) {
-                best[w] = l;
+                before(p, a, b, from[w] < w ? from[w] : w, from[w] < w ? w : from[w]))
                 from[w] = v;
-            }
             if (bw == UINT32_MAX ||
-                before(best[w], from[w] < w ? from[w] : w, from[w] < w ? w : from[w],
-                       best[bw], from[bw] < bw ? from[bw] : bw,
-                       from[bw] < bw ? bw : from[bw]))
+                before(p, from[w] < w ? from[w] : w, from[w] < w ? w : from[w],
+                       from[bw] < bw ? from[bw] : bw, from[bw] < bw ? bw : from[bw]))
                 bw = w;
         }
         out->e[out->n].a = from[bw] < bw ? from[bw] : bw;
@@ -241,7 +245,6 @@ static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
     }
     rc = sort_edges(ctx, p, out->e + start, n - 1);
 out_free:
-    qc__free(ctx, best, n * sizeof *best);
     qc__free(ctx, from, n * sizeof *from);
     if (rc < 0)
         out->n = start;

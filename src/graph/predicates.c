@@ -258,3 +258,64 @@ double qc_incircle(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
         return det;
     return incircle_exact(a, b, c, d);
 }
+
+/* ---- exact comparison of squared lengths (the MST's edge order) ---- */
+
+static void two_product(double a, double b, double *x, double *y)
+{
+    double bhi, blo;
+
+    split(b, &bhi, &blo);
+    two_product_presplit(a, b, bhi, blo, x, y);
+}
+
+/* |a - b|^2 exactly, as an expansion in h (increasing magnitude); its length. */
+static int len2_exact(qc_vec2 a, qc_vec2 b, double *h)
+{
+    double d[4], t[2], tmp[16];
+    int n = 0, k, j, i;
+
+    two_diff(a.x, b.x, &d[0], &d[1]);
+    two_diff(a.y, b.y, &d[2], &d[3]);
+    for (k = 0; k < 2; k++) {
+        double hi = d[2 * k], lo = d[2 * k + 1];
+        double f[3][2];
+
+        f[0][0] = hi, f[0][1] = hi;       /* hi^2 */
+        f[1][0] = 2.0 * hi, f[1][1] = lo; /* 2 hi lo */
+        f[2][0] = lo, f[2][1] = lo;       /* lo^2 */
+        for (j = 0; j < 3; j++) {
+            two_product(f[j][0], f[j][1], &t[1], &t[0]);
+            if (n == 0) {
+                h[0] = t[0];
+                h[1] = t[1];
+                n = 2;
+            } else {
+                n = sum_zeroelim(n, h, 2, t, tmp);
+                for (i = 0; i < n; i++)
+                    h[i] = tmp[i];
+            }
+        }
+    }
+    return n;
+}
+
+int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    double ax = a.x - b.x, ay = a.y - b.y, cx = c.x - d.x, cy = c.y - d.y;
+    double l1 = ax * ax + ay * ay, l2 = cx * cx + cy * cy;
+    double e1[16], e2[16], diff[32];
+    int n1, n2, n, i;
+
+    /* each computed value is within 4 ulps of its exact value */
+    if (l1 - l2 > 8.0 * EPS * (l1 + l2))
+        return 1;
+    if (l2 - l1 > 8.0 * EPS * (l1 + l2))
+        return -1;
+    n1 = len2_exact(a, b, e1);
+    n2 = len2_exact(c, d, e2);
+    for (i = 0; i < n2; i++)
+        e2[i] = -e2[i];
+    n = sum_zeroelim(n1, e1, n2, e2, diff);
+    return (diff[n - 1] > 0.0) - (diff[n - 1] < 0.0);
+}
