@@ -243,6 +243,48 @@ static void test_index_agrees_with_brute_force(void)
     qc_region_free(&ctx, &r);
 }
 
+/* A comb of 20000 thin teeth would make the crossing check quadratic
+ * (minutes): it is refused at once, by name. */
+static void test_dense_comb_is_refused_in_bounded_time(void)
+{
+    enum { N = 20000 };
+    qc_region r = {0};
+    qc_vec2 *v = malloc((4 * N + 2) * sizeof *v);
+    size_t i, n = 0;
+
+    for (i = 0; i < N; i++) {
+        double x = (double)i / N;
+        v[n++] = v2(x, 0);
+        v[n++] = v2(x, 10);
+        v[n++] = v2(x + 0.5 / N, 10);
+        v[n++] = v2(x + 0.5 / N, 0);
+    }
+    v[n++] = v2(1, -1);
+    v[n++] = v2(0, -1);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, v, n));
+    expect_error(qc_region_normalize(&ctx, &r), QC_ELIMIT, "too dense to check for crossings");
+    qc_region_free(&ctx, &r);
+    free(v);
+}
+
+/* 900 holes, each given counter-clockwise, become clockwise (depth from the index). */
+static void test_many_holes_are_oriented(void)
+{
+    qc_region r = {0};
+    size_t i, j, k;
+
+    square_ring(&r, 0, 0, 310, 0);
+    for (j = 0; j < 30; j++)
+        for (i = 0; i < 30; i++)
+            square_ring(&r, 5 + 10.0 * i, 5 + 10.0 * j, 5, 1);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 0));
+    for (k = 1; k < r.nrings; k++)
+        TEST_ASSERT_LESS_THAN_DOUBLE(0.0, ring_signed_area(&r, k));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 310.0 * 310.0 - 900 * 25.0, qc_region_area(&r));
+    qc_region_free(&ctx, &r);
+}
+
 static void test_out_of_memory_is_reported_and_leaks_nothing(void)
 {
     size_t k;
@@ -275,6 +317,8 @@ int main(void)
     RUN_TEST(test_normalize_drops_repeated_vertices);
     RUN_TEST(test_normalize_rejects_bad_regions);
     RUN_TEST(test_index_agrees_with_brute_force);
+    RUN_TEST(test_dense_comb_is_refused_in_bounded_time);
+    RUN_TEST(test_many_holes_are_oriented);
     RUN_TEST(test_out_of_memory_is_reported_and_leaks_nothing);
     return UNITY_END();
 }

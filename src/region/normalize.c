@@ -8,6 +8,10 @@
 #include "region_index.h"
 
 #define MAX_COORD 1e6
+/* Edge pairs the crossing check may test: about 64 per edge in the worst
+ * cells of a real outline; beyond that the outline is refused. */
+#define PAIRS_PER_EDGE 64.0
+#define PAIRS_FLOOR 4.0e6
 
 static size_t ring_start(const qc_region *r, size_t k)
 {
@@ -126,7 +130,18 @@ static int report_crossing(qc_ctx *ctx, const qc_region *r, uint32_t e, uint32_t
 static int check_crossings(qc_ctx *ctx, const qc_region *r, const qc__rindex *ix)
 {
     size_t c, ncell = ix->nx * ix->ny;
+    double pairs = 0.0, budget = PAIRS_PER_EDGE * (double)r->nv + PAIRS_FLOOR;
 
+    /* Many long edges crowding the same cells (a comb of thin teeth) would
+     * make this quadratic: refuse such outlines in bounded time. */
+    for (c = 0; c < ncell; c++) {
+        double m = (double)(ix->cell_start[c + 1] - ix->cell_start[c]);
+        pairs += m * (m - 1) / 2;
+    }
+    if (pairs > budget)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "the outline is too dense to check for crossings (%lu edges, %.3g edge "
+                        "pairs sharing cells); simplify it", (unsigned long)r->nv, pairs);
     for (c = 0; c < ncell; c++) {
         size_t i, j, lo = ix->cell_start[c], hi = ix->cell_start[c + 1];
         for (i = lo; i < hi; i++) {
@@ -149,20 +164,6 @@ static int check_crossings(qc_ctx *ctx, const qc_region *r, const qc__rindex *ix
     return QC_OK;
 }
 
-/* Even-odd test against ring k alone. */
-static int ring_contains(const qc_region *r, size_t k, qc_vec2 p)
-{
-    size_t s = ring_start(r, k), e = r->ring_end[k], i, j = e - 1;
-    int inside = 0;
-
-    for (i = s; i < e; j = i++) {
-        qc_vec2 a = r->v[j], b = r->v[i];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
-            inside = !inside;
-    }
-    return inside;
-}
-
 static void reverse_ring(qc_region *r, size_t k)
 {
     size_t i = ring_start(r, k), j = r->ring_end[k] - 1;
@@ -174,19 +175,36 @@ static void reverse_ring(qc_region *r, size_t k)
     }
 }
 
-static void orient_rings(qc_region *r)
+/* Rings do not cross, so the parity of the rings round a ring's first
+ * vertex is the parity of the other rings' edges a ray from it crosses:
+ * the index's band holds them all. */
+static int depth_is_odd(const qc_region *r, const qc__rindex *ix, size_t k)
 {
-    size_t k, m;
+    qc_vec2 p = r->v[ring_start(r, k)];
+    size_t lo = ring_start(r, k), hi = r->ring_end[k], b, i;
+    int odd = 0;
+
+    b = (size_t)((p.y - ix->box.min.y) / ix->band);
+    if (b >= ix->nband)
+        b = ix->nband - 1;
+    for (i = ix->band_start[b]; i < ix->band_start[b + 1]; i++) {
+        uint32_t e = ix->band_edge[i];
+        qc_vec2 a = r->v[e], c = r->v[ix->next[e]];
+
+        if (e >= lo && e < hi)
+            continue;
+        if ((a.y > p.y) != (c.y > p.y) && p.x < a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y))
+            odd = !odd;
+    }
+    return odd;
+}
+
+static void orient_rings(qc_region *r, const qc__rindex *ix)
+{
+    size_t k;
 
     for (k = 0; k < r->nrings; k++) {
-        qc_vec2 p = r->v[ring_start(r, k)];
-        size_t depth = 0;
-        int want_ccw;
-
-        for (m = 0; m < r->nrings; m++)
-            if (m != k && ring_contains(r, m, p))
-                depth++;
-        want_ccw = depth % 2 == 0;
+        int want_ccw = !depth_is_odd(r, ix, k);
         if ((ring_area(r, k) > 0) != want_ccw)
             reverse_ring(r, k);
     }
@@ -223,9 +241,10 @@ int qc_region_normalize(qc_ctx *ctx, qc_region *r)
     if (rc < 0)
         return rc;
     rc = check_crossings(ctx, r, &ix);
+    if (rc == QC_OK)
+        orient_rings(r, &ix);
     qc__rindex_free(ctx, &ix);
     if (rc < 0)
         return rc;
-    orient_rings(r);
     return QC_OK;
 }
