@@ -384,7 +384,8 @@ static int insert_crossings(qc_ctx *ctx, spiral *sp, ins *in, size_t nin, uint32
     int rc = QC_OK;
 
     memset(&nr, 0, sizeof nr);
-    qsort(in, nin, sizeof *in, cmp_ins);
+    if (nin > 1) /* qsort wants a real array, even for nothing to sort */
+        qsort(in, nin, sizeof *in, cmp_ins);
     for (k = 0, g = 0; k < sp->ring.end.n && rc == QC_OK; k++) {
         for (; g < sp->ring.end.i[k] && rc == QC_OK; g++) {
             rc = qc_points_push(ctx, &nr.pts, sp->ring.pts.v[g]);
