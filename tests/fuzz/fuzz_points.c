@@ -29,10 +29,8 @@ static void stages(qc_ctx *ctx, const qc_points *pts)
                 const qc_vec2 *v = pts->v;
                 wt += qc_hypot(v[tree.e[i].a].x - v[tree.e[i].b].x, v[tree.e[i].a].y - v[tree.e[i].b].y);
                 wf += qc_hypot(v[full.e[i].a].x - v[full.e[i].b].x, v[full.e[i].a].y - v[full.e[i].b].y);
-                /* open finding: on ties of the computed length the modes may differ */
-                if (!fuzz_known("mst-ties"))
-                    FUZZ_CHECK(full.e[i].a == tree.e[i].a && full.e[i].b == tree.e[i].b,
-                               "both MST modes give the same tree");
+                FUZZ_CHECK(full.e[i].a == tree.e[i].a && full.e[i].b == tree.e[i].b,
+                           "both MST modes give the same tree");
             }
             FUZZ_CHECK(fabs(wt - wf) <= 1e-9 * (wt + wf) + 1e-300, "both MST modes weigh the same");
         }
@@ -80,11 +78,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz_check_status(&ctx, rc, "read_points status");
     if (rc == QC_OK) {
         size_t i;
+        int tiny = 0;
+
         FUZZ_CHECK(pts.n > 0, "QC_OK with no point");
         for (i = 0; i < pts.n; i++)
             FUZZ_CHECK(fabs(pts.v[i].x) <= 1e9 && fabs(pts.v[i].y) <= 1e9,
                        "a point NaN or beyond the reader's 1e9 cap");
-        if (pts.n <= STAGE_MAX)
+        for (i = 0; i < pts.n; i++) /* open finding: squared lengths of tiny differences underflow */
+            tiny |= (pts.v[i].x != 0 && fabs(pts.v[i].x) < 1e-100) ||
+                    (pts.v[i].y != 0 && fabs(pts.v[i].y) < 1e-100);
+        if (pts.n <= STAGE_MAX && !(tiny && fuzz_known("mst-underflow")))
             stages(&ctx, &pts);
     }
     qc_points_free(&ctx, &pts);
