@@ -585,6 +585,18 @@ static void mst_should_order_lengths_exactly(void)
     qc_edges_free(&ctx, &a);
     qc_edges_free(&ctx, &b);
     mst_check(p, 3);
+    /* squared lengths that underflow (7e-184) are still compared exactly:
+     * the duplicate's zero edge first, then 0-1 */
+    p[0] = v2(7e-184, 1);
+    p[1] = v2(0, 1);
+    p[2] = v2(0, 1);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, 3, QC_MST_MODE_COMPLETE, &b));
+    TEST_ASSERT_EQUAL_UINT32(1, b.e[0].a);
+    TEST_ASSERT_EQUAL_UINT32(2, b.e[0].b);
+    TEST_ASSERT_EQUAL_UINT32(0, b.e[1].a);
+    TEST_ASSERT_EQUAL_UINT32(1, b.e[1].b);
+    qc_edges_free(&ctx, &b);
+    mst_check(p, 3);
 }
 
 int main(void)

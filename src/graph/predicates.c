@@ -269,14 +269,13 @@ static void two_product(double a, double b, double *x, double *y)
     two_product_presplit(a, b, bhi, blo, x, y);
 }
 
-/* |a - b|^2 exactly, as an expansion in h (increasing magnitude); its length. */
-static int len2_exact(qc_vec2 a, qc_vec2 b, double *h)
+/* |d|^2 exactly for d = (d[0] + d[1], d[2] + d[3]), as an expansion in h
+ * (increasing magnitude); its length. */
+static int len2_exact(const double *d, double *h)
 {
-    double d[4], t[2], tmp[16];
+    double t[2], tmp[16];
     int n = 0, k, j, i;
 
-    two_diff(a.x, b.x, &d[0], &d[1]);
-    two_diff(a.y, b.y, &d[2], &d[3]);
     for (k = 0; k < 2; k++) {
         double hi = d[2 * k], lo = d[2 * k + 1];
         double f[3][2];
@@ -304,7 +303,7 @@ int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
 {
     double ax = a.x - b.x, ay = a.y - b.y, cx = c.x - d.x, cy = c.y - d.y;
     double l1 = ax * ax + ay * ay, l2 = cx * cx + cy * cy;
-    double e1[16], e2[16], diff[32];
+    double e1[16], e2[16], diff[32], d1[4], d2[4], big = 0.0;
     int n1, n2, n, i;
 
     /* each computed value is within 4 ulps of its exact value */
@@ -312,8 +311,21 @@ int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
         return 1;
     if (l2 - l1 > 8.0 * EPS * (l1 + l2))
         return -1;
-    n1 = len2_exact(a, b, e1);
-    n2 = len2_exact(c, d, e2);
+    two_diff(a.x, b.x, &d1[0], &d1[1]);
+    two_diff(a.y, b.y, &d1[2], &d1[3]);
+    two_diff(c.x, d.x, &d2[0], &d2[1]);
+    two_diff(c.y, d.y, &d2[2], &d2[3]);
+    /* squares of tiny (or huge) differences would underflow (overflow):
+     * scale all by the same power of two, which is exact */
+    for (i = 0; i < 4; i++)
+        big = fmax(big, fmax(fabs(d1[i]), fabs(d2[i])));
+    if (big != 0.0 && (big < 0x1p-400 || big > 0x1p400))
+        for (i = 0; i < 4; i++) {
+            d1[i] *= big < 1.0 ? 0x1p600 : 0x1p-600;
+            d2[i] *= big < 1.0 ? 0x1p600 : 0x1p-600;
+        }
+    n1 = len2_exact(d1, e1);
+    n2 = len2_exact(d2, e2);
     for (i = 0; i < n2; i++)
         e2[i] = -e2[i];
     n = sum_zeroelim(n1, e1, n2, e2, diff);
