@@ -7,8 +7,6 @@
 
 #include "region_index.h"
 
-#define MAX_CELLS ((size_t)1 << 20)
-
 static double clampd(double v, double lo, double hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
@@ -127,7 +125,7 @@ int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix)
     ix->box = qc_region_bbox(region);
     w = ix->box.max.x - ix->box.min.x;
     h = ix->box.max.y - ix->box.min.y;
-    /* about one edge per cell, at most MAX_CELLS cells */
+    /* about one edge per cell, at most 1024 x 1024 cells */
     cell = sqrt(w * h / (double)region->nv);
     cell = fmax(cell, fmax(w, h) / 1024.0);
     if (!(cell > 0.0))
@@ -135,11 +133,6 @@ int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix)
     ix->cell = cell;
     ix->nx = (size_t)clampd(ceil(w / cell), 1.0, 1024.0);
     ix->ny = (size_t)clampd(ceil(h / cell), 1.0, 1024.0);
-    while (ix->nx * ix->ny > MAX_CELLS) {
-        ix->cell *= 2.0;
-        ix->nx = (ix->nx + 1) / 2;
-        ix->ny = (ix->ny + 1) / 2;
-    }
     ix->nband = (size_t)clampd(ceil(sqrt((double)region->nv)) * 2.0, 1.0, 65536.0);
     ix->band = h > 0.0 ? h / (double)ix->nband : 1.0;
     rc = build_csr(ctx, ix, &ix->cell_start, ix->nx * ix->ny, &ix->cell_edge, &ix->ncell_edge,
