@@ -1,7 +1,7 @@
-# Fuzz smoke: each libFuzzer target (tests/fuzz/) for FUZZ_SECONDS (35 s by
-# default: 6 targets, about 5 minutes with the build) with a fixed seed, on
-# its seed corpus and regression inputs; open findings of
-# tests/fuzz/known.txt are stepped around. Skipped without clang's libFuzzer.
+# Fuzz smoke: each libFuzzer target (tests/fuzz/) for FUZZ_RUNS inputs (30,000)
+# with a fixed seed, on its seed corpus and regression inputs (6 targets,
+# about 4 minutes with the build); open findings of tests/fuzz/known.txt are
+# stepped around. Skipped without clang's libFuzzer.
 set -euo pipefail
 rt=$(clang -print-file-name=libclang_rt.fuzzer-x86_64.a 2>/dev/null || true)
 if ! command -v clang >/dev/null || [ ! -f "$rt" ]; then
