@@ -155,7 +155,8 @@ int qc_path_line_to(qc_ctx *ctx, qc_path *path, qc_vec2 p);
 int qc_path_cubic_to(qc_ctx *ctx, qc_path *path, qc_vec2 c1, qc_vec2 c2,
                      qc_vec2 p);
 /* Appends every command of src to dst; with join != 0 a leading MOVE of src
- * becomes a LINE (so the result stays one piece). */
+ * becomes a LINE (so the result stays one piece). On QC_ENOMEM dst is left
+ * as it was. */
 int qc_path_append(qc_ctx *ctx, qc_path *dst, const qc_path *src, int join);
 /* Number of points per command (1 or 3). */
 size_t qc_path_cmd_points(unsigned char cmd);

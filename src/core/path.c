@@ -53,14 +53,20 @@ int qc_path_cubic_to(qc_ctx *ctx, qc_path *path, qc_vec2 c1, qc_vec2 c2,
 
 int qc_path_append(qc_ctx *ctx, qc_path *dst, const qc_path *src, int join)
 {
-    size_t c, k = 0;
+    size_t c, k = 0, ncmd = dst->ncmd, npt = dst->npt;
 
     for (c = 0; c < src->ncmd; c++) {
         unsigned char cmd = src->cmd[c];
+        int rc;
 
         if (cmd == QC_PATH_MOVE && join && c == 0 && dst->ncmd > 0)
             cmd = QC_PATH_LINE;
-        QC__TRY(push(ctx, dst, cmd, src->pt + k));
+        rc = push(ctx, dst, cmd, src->pt + k);
+        if (rc < 0) { /* all or nothing: dst as it was */
+            dst->ncmd = ncmd;
+            dst->npt = npt;
+            return rc;
+        }
         k += qc_path_cmd_points(src->cmd[c]);
     }
     return QC_OK;

@@ -573,14 +573,8 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
             stats->largest_gap_mm = g;
         stats->joins_unfixed += sp.jumps;
     }
-    if (rc == QC_OK) {
-        size_t ncmd = out->ncmd, npt = out->npt;
+    if (rc == QC_OK) /* all or nothing: *out as it was on failure */
         rc = qc_path_append(ctx, out, &one, 1);
-        if (rc < 0) { /* leave *out as it was */
-            out->ncmd = ncmd;
-            out->npt = npt;
-        }
-    }
 out:
     spiral_free(ctx, &sp);
     qc__sdf_free(ctx, &s);
