@@ -27,10 +27,12 @@ void cli_bad_option(const char *command, const char *arg, int c);
 /* Reads a whole file (at most max bytes) into a NUL-terminated buffer. */
 int cli_read_file(const char *path, size_t max, char **buf, size_t *len);
 
-/* An output written whole or not at all: a temp file renamed on commit. */
+/* An output written whole or not at all: a temp file renamed on commit
+ * (beside the file, or beside the file a symbolic link names). A device or
+ * FIFO is written in place; "-" is stdout. */
 typedef struct cli_output {
     FILE *f;
-    char *path, *tmp;
+    char *path, *tmp; /* tmp NULL: written in place */
     int failed;
 } cli_output;
 
@@ -79,6 +81,7 @@ typedef struct cli_pattern_opts {
     const char *raw[64];     /* raw value per parameter row, converted after parsing */
     char repeat[2][24];      /* --repeat CxR, split into repeat-cols and repeat-rows */
     int bad;                 /* an option was refused (already reported) */
+    const char *where;       /* NULL, or "job: blocks[2]": messages name job keys */
     qc_params params;
 } cli_pattern_opts;
 

@@ -17,12 +17,14 @@
 #define MAX_BLOCKS 1024
 #define MAX_JOB_BYTES ((size_t)1 << 20)
 #define VALUE_LEN 48
+#define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
 
 typedef struct block {
     cli_pattern_opts pat;
     char values[64][VALUE_LEN]; /* numbers from JSON, as option text */
     double at[2], rotate;
     char where[32];             /* "blocks[3]" for messages */
+    char label[40];             /* "job: blocks[3]", for the parameters' messages */
     qc_path path;               /* in the quilt's frame */
     qc_vec2 lo;                 /* lower-left of its box, for ordering */
 } block;
@@ -90,10 +92,13 @@ static int take_block(const job *j, block *b, const cJSON *o)
                                         NULL};
     const cJSON *v;
     size_t nrows;
+    double mm;
     int rc;
 
     cli_pattern_init(&b->pat);
     b->pat.units = j->units;
+    snprintf(b->label, sizeof b->label, "job: %s", b->where);
+    b->pat.where = b->label;
     if (!cJSON_IsObject(o))
         return bad(b->where, "", "expected an object");
     if ((rc = check_keys(o, b->where, known)) != CLI_OK)
@@ -109,6 +114,9 @@ static int take_block(const job *j, block *b, const cJSON *o)
             return bad(b->where, "at", "expected [x, y]");
         b->at[0] = cJSON_GetArrayItem(v, 0)->valuedouble;
         b->at[1] = cJSON_GetArrayItem(v, 1)->valuedouble;
+        mm = cli_units_mm(j->units);
+        if (!(fabs(b->at[0]) * mm <= MAX_AT_MM && fabs(b->at[1]) * mm <= MAX_AT_MM))
+            return bad(b->where, "at", "expected [x, y] within 100000 mm of 0");
     }
     if ((v = cJSON_GetObjectItemCaseSensitive(o, "rotate")) != NULL) {
         if (!cJSON_IsNumber(v) || !(fabs(v->valuedouble) <= 360))
@@ -200,7 +208,7 @@ static int make_block(qc_ctx *ctx, block *b)
         rc = cli_load_motifs(ctx, b->pat.motifs, &motifs);
     if (rc == CLI_OK && qc_generate(ctx, &region, &b->pat.params, &given,
                                     motifs.n ? &motifs : NULL, &res) < 0)
-        rc = cli_fail(ctx, b->where, ctx->status);
+        rc = cli_fail(ctx, b->label, ctx->status);
     if (rc == CLI_OK) {
         mm = b->pat.mm_per_unit;
         c = qc_cos(b->rotate * QC_PI / 180);

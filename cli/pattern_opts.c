@@ -4,6 +4,7 @@
  * added to the table is a CLI option without touching this file.
  */
 #include <getopt.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -103,13 +104,13 @@ static int parse_length(const char *s, double mm_per_unit, double *mm)
             if (cli_parse_double(buf, mm) != 0)
                 return -1;
             *mm *= units[i].mm;
-            return 0;
+            return isfinite(*mm) ? 0 : -2;
         }
     }
     if (cli_parse_double(s, mm) != 0)
         return -1;
     *mm *= mm_per_unit;
-    return 0;
+    return isfinite(*mm) ? 0 : -2;
 }
 
 static int is_file(const char *path)
@@ -118,10 +119,26 @@ static int is_file(const char *path)
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+/* How messages name parameter `name`: "--spacing" on the command line,
+ * "job: blocks[2].params.spacing" (or ".family") in a job file. */
+static const char *label(const cli_pattern_opts *o, const char *name, char *buf, size_t size)
+{
+    if (o->where == NULL)
+        snprintf(buf, size, "--%s", name);
+    else
+        snprintf(buf, size, "%s.%s%s", o->where, strcmp(name, "family") == 0 ? "" : "params.",
+                 name);
+    return buf;
+}
+
 static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, const char *s)
 {
     double v;
     unsigned long long seed;
+    char name[96];
+    int rc;
+
+    label(o, row->name, name, sizeof name);
 
     switch (row->type) {
     case QC_PARAM_ENUM: {
@@ -131,7 +148,7 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
             c = QC_POINTS_GIVEN;
         }
         if (c < 0) {
-            cli_error("--%s: unknown choice '%s' (one of %s%s)", row->name, s, row->choices,
+            cli_error("%s: unknown choice '%s' (one of %s%s)", name, s, row->choices,
                       strcmp(row->name, "points") == 0 ? ", or a CSV/TSPLIB file" : "");
             return CLI_USAGE;
         }
@@ -140,27 +157,32 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
     }
     case QC_PARAM_SEED:
         if (cli_parse_u64(s, &seed) != 0) {
-            cli_error("--seed: '%s' is not a whole number from 0 to 2^64-1", s);
+            cli_error("%s: '%s' is not a whole number from 0 to 2^64-1", name, s);
             return CLI_USAGE;
         }
         qc_params_set(ctx, &o->params, "seed", 0.0); /* marks it given */
         o->params.seed = (uint64_t)seed;
         return CLI_OK;
     case QC_PARAM_LENGTH:
-        if (parse_length(s, o->mm_per_unit, &v) != 0) {
-            cli_error("--%s: '%s' is not a length (a number, optionally with mm, cm or in)",
-                      row->name, s);
+        rc = parse_length(s, o->mm_per_unit, &v);
+        if (rc == -2) {
+            cli_error("%s: '%s' is too large a length", name, s);
+            return CLI_USAGE;
+        }
+        if (rc != 0) {
+            cli_error("%s: '%s' is not a length (a number, optionally with mm, cm or in)",
+                      name, s);
             return CLI_USAGE;
         }
         break;
     default:
         if (cli_parse_double(s, &v) != 0) {
-            cli_error("--%s: '%s' is not a number", row->name, s);
+            cli_error("%s: '%s' is not a number", name, s);
             return CLI_USAGE;
         }
     }
     if (qc_params_set(ctx, &o->params, row->name, v) < 0)
-        return cli_fail(ctx, "parameters", ctx->status);
+        return cli_fail(ctx, o->where != NULL ? o->where : "parameters", ctx->status);
     return CLI_OK;
 }
 
@@ -185,7 +207,7 @@ int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o)
         }
     /* check ranges now, so a bad value is a usage error before any work */
     if (qc_params_resolve(ctx, &o->params, &resolved) < 0)
-        return cli_fail(ctx, "parameters", ctx->status);
+        return cli_fail(ctx, o->where != NULL ? o->where : "parameters", ctx->status);
     return CLI_OK;
 }
 

@@ -1,4 +1,5 @@
 /* CLI helpers: errors, whole-file reads, atomic writes, strict numbers, regions. */
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -83,23 +84,55 @@ fail:
     return -1;
 }
 
+/* Where the temporary file goes: beside the file a symbolic link names, so
+ * the rename replaces that file and keeps the link. NULL (and an error) for
+ * a link to nothing. */
+static char *publish_path(const char *path)
+{
+    struct stat st;
+    char *p;
+
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        p = realpath(path, NULL);
+        if (p == NULL)
+            cli_error("cannot write '%s': symbolic link to a missing file (%s)", path,
+                      strerror(errno));
+        return p;
+    }
+    p = malloc(strlen(path) + 1);
+    if (p == NULL)
+        cli_error("out of memory");
+    else
+        strcpy(p, path);
+    return p;
+}
+
 int cli_output_open(cli_output *out, const char *path)
 {
+    struct stat st;
+
     memset(out, 0, sizeof *out);
     if (strcmp(path, "-") == 0) {
         out->f = stdout;
         return 0;
     }
-    out->path = malloc(strlen(path) + 1);
-    out->tmp = malloc(strlen(path) + 16);
-    if (out->path == NULL || out->tmp == NULL) {
-        cli_error("out of memory");
-        cli_output_abort(out);
+    out->path = publish_path(path);
+    if (out->path == NULL)
         return -1;
+    /* A device, FIFO or socket is written in place: renaming a file over
+     * /dev/null or a pipe would replace it. */
+    if (stat(out->path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        out->f = fopen(out->path, "wb");
+    } else {
+        out->tmp = malloc(strlen(out->path) + 32);
+        if (out->tmp == NULL) {
+            cli_error("out of memory");
+            cli_output_abort(out);
+            return -1;
+        }
+        sprintf(out->tmp, "%s.tmp.%ld", out->path, (long)getpid());
+        out->f = fopen(out->tmp, "wb");
     }
-    strcpy(out->path, path);
-    sprintf(out->tmp, "%s.tmp.%ld", path, (long)getpid());
-    out->f = fopen(out->tmp, "wb");
     if (out->f == NULL) {
         cli_error("cannot write '%s': %s", path, strerror(errno));
         cli_output_abort(out);
@@ -154,7 +187,7 @@ static int output_close(cli_output *out)
 /* Renames a closed output into place. */
 static int output_publish(cli_output *out)
 {
-    int err = out->path != NULL && rename(out->tmp, out->path) != 0;
+    int err = out->tmp != NULL && rename(out->tmp, out->path) != 0;
 
     if (err) {
         cli_error("cannot write '%s': %s", out->path, strerror(errno));

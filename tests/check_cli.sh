@@ -232,4 +232,22 @@ all_or_nothing() {
 }
 check several_outputs_all_or_nothing all_or_nothing
 
+# -o never replaces what it names: a symbolic link keeps pointing at the
+# file it names, which gets the pattern; a FIFO stays a FIFO and its reader
+# gets the pattern; /dev/null takes it.
+special_outputs() {
+    d=$(mktemp -d "$WORK/special.XXXXXX") && cd "$d" || return 1
+    "$QC" generate -o want.pat --seed 3 || return 1
+    mkdir real && echo old > real/p.pat && ln -s real/p.pat link.pat &&
+        "$QC" generate -o link.pat --seed 3 && [ -L link.pat ] && cmp want.pat real/p.pat &&
+        [ -z "$(ls real | grep -v '^p.pat$')" ] || { echo "symlink: $(ls -l . real)"; return 1; }
+    mkfifo fifo.pat && { cat fifo.pat > got.pat & } &&
+        "$QC" generate -o fifo.pat --seed 3 && wait && [ -p fifo.pat ] && cmp want.pat got.pat ||
+        { echo "fifo: $(ls -l)"; return 1; }
+    "$QC" generate -o /dev/null --format pat && [ -c /dev/null ] || return 1
+    ln -s missing.pat dangling.pat &&
+        expect_fail 1 "'dangling.pat': symbolic link to a missing file" "$QC" generate -o dangling.pat
+}
+check output_to_symlink_fifo_or_device_keeps_it special_outputs
+
 finish

@@ -105,6 +105,36 @@ static void test_given_points(void)
     qc_points_free(&ctx, &given);
 }
 
+/* A given point beyond the block, or nearer its edge than the margin, is
+ * refused by number: its decoration would be sewn outside the block. */
+static void test_given_points_outside_the_region_are_refused(void)
+{
+    static const qc_vec2 far = {200, 40}, edge = {60, 1}, ok = {60, 45};
+    const qc_vec2 *bad[2];
+    qc_params p;
+    qc_result r;
+    int k;
+
+    bad[0] = &far;
+    bad[1] = &edge;
+    for (k = 0; k < 2; k++) {
+        qc_points given = {0};
+        memset(&p, 0, sizeof p);
+        qc_params_set(&ctx, &p, "points", QC_POINTS_GIVEN);
+        qc_params_set(&ctx, &p, "margin", 2.0);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, &given, ok));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, &given, *bad[k]));
+        TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_generate(&ctx, &block, &p, &given, NULL, &r));
+        TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "given point 2 ("));
+        TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "by the margin 2 mm"));
+        TEST_ASSERT_EQUAL_size_t(0, r.path.npt);
+        given.n = 1; /* the good point alone is accepted */
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &block, &p, &given, NULL, &r));
+        qc_result_free(&ctx, &r);
+        qc_points_free(&ctx, &given);
+    }
+}
+
 static void test_a_block_smaller_than_the_margin_is_refused(void)
 {
     qc_region tiny;
@@ -124,6 +154,7 @@ int main(void)
     RUN_TEST(test_skipping_the_gap_stat_keeps_the_path);
     RUN_TEST(test_walk_starts_nearest_the_start_point);
     RUN_TEST(test_given_points);
+    RUN_TEST(test_given_points_outside_the_region_are_refused);
     RUN_TEST(test_a_block_smaller_than_the_margin_is_refused);
     return UNITY_END();
 }

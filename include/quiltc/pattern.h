@@ -174,7 +174,9 @@ typedef int (*qc_family_fn)(qc_ctx *ctx, const qc_region *region,
  * QC_POINTS_GIVEN (else ignored, may be NULL). motifs: NULL for the built-in
  * library. On success *out owns everything (free with qc_result_free); on
  * failure *out is left zeroed. Errors: those of qc_params_resolve, QC_EEMPTY
- * (no point fits in the region), QC_ELIMIT (too many points), QC_ENOMEM.
+ * (no point fits in the region), QC_ERANGE (a given point outside the region
+ * or nearer its boundary than the margin), QC_ELIMIT (too many points),
+ * QC_ENOMEM.
  */
 int qc_generate(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                 const qc_points *given, const qc_motif_set *motifs,

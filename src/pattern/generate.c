@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "../region/region_index.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
@@ -39,6 +40,30 @@ static void trace(qc_ctx *ctx, const char *stage)
         ctx->trace(ctx->trace_ud, stage);
 }
 
+/* Given points must lie in the region, margin from its boundary, as sampled
+ * points do: a pattern sewn beyond the block would run into its neighbours
+ * or the frame. */
+static int check_given_inside(qc_ctx *ctx, const qc_region *region, const qc_points *given,
+                              double margin)
+{
+    qc__rindex ix;
+    qc_bbox box;
+    size_t i;
+
+    QC__TRY(qc__rindex_build(ctx, region, &ix));
+    for (i = 0; i < given->n && qc__rindex_admits(&ix, given->v[i], margin); i++)
+        ;
+    qc__rindex_free(ctx, &ix);
+    if (i == given->n)
+        return QC_OK;
+    box = qc_region_bbox(region);
+    return qc__fail(ctx, QC_ERANGE,
+                    "given point %lu (%g, %g) mm is not inside the region (%g..%g, %g..%g mm) "
+                    "by the margin %g mm",
+                    (unsigned long)i + 1, given->v[i].x, given->v[i].y, box.min.x, box.max.x,
+                    box.min.y, box.max.y, margin);
+}
+
 static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *p,
                          const qc_points *given, qc_points *out)
 {
@@ -53,6 +78,7 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
         if (given->n > QC_MAX_POINTS)
             return qc__fail(ctx, QC_ELIMIT, "%lu points exceed the limit of %lu",
                             (unsigned long)given->n, (unsigned long)QC_MAX_POINTS);
+        QC__TRY(check_given_inside(ctx, region, given, p->margin));
         for (i = 0; i < given->n; i++)
             QC__TRY(qc_points_push(ctx, out, given->v[i]));
         return QC_OK;
