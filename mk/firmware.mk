@@ -10,7 +10,7 @@ firmware:
 	@mkdir -p $(ARM_BUILD)
 	@set -e; objs=""; for s in $(ARM_SRC); do \
 	    o=$(ARM_BUILD)/$$(echo $$s | tr / _ | sed 's/\.c$$/.o/'); \
-	    $(ARM_CC) $(WARN) $(ARM_CFLAGS) -ffp-contract=off -Iinclude -Isrc/core -c $$s -o $$o; \
+	    $(ARM_CC) $(WARN) $(ARM_CFLAGS) -ffp-contract=off -DQC_NO_DEFAULT_ALLOC -Iinclude -Isrc/core -c $$s -o $$o; \
 	    objs="$$objs $$o"; done; \
 	rm -f $(ARM_BUILD)/libquiltc.a; arm-none-eabi-ar rcs $(ARM_BUILD)/libquiltc.a $$objs
 	@arm-none-eabi-size -t $(ARM_BUILD)/libquiltc.a | tail -n 1 | \

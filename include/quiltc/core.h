@@ -84,7 +84,9 @@ typedef struct qc_ctx {
 
 /*
  * Prepares ctx. alloc == NULL selects the libc malloc wrapper
- * (qc_default_alloc, in its own object file so firmware can leave it out).
+ * (qc_default_alloc, in its own object file). A core built with
+ * -DQC_NO_DEFAULT_ALLOC (make firmware) leaves it out: there a NULL hook
+ * fails every allocation and nothing references malloc.
  */
 void qc_ctx_init(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud);
 /* The libc-backed allocator used when qc_ctx_init gets NULL. */

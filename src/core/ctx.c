@@ -8,10 +8,26 @@ const char *qc_version(void)
     return QC_VERSION_STRING;
 }
 
+#ifdef QC_NO_DEFAULT_ALLOC
+/* Firmware without a libc heap: a NULL hook fails every allocation, and
+ * nothing links against malloc. */
+static void *no_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    (void)ud;
+    (void)ptr;
+    (void)old_size;
+    (void)new_size;
+    return NULL;
+}
+#define DEFAULT_ALLOC no_alloc
+#else
+#define DEFAULT_ALLOC qc_default_alloc
+#endif
+
 void qc_ctx_init(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud)
 {
     memset(ctx, 0, sizeof *ctx);
-    ctx->alloc = alloc != NULL ? alloc : qc_default_alloc;
+    ctx->alloc = alloc != NULL ? alloc : DEFAULT_ALLOC;
     ctx->alloc_ud = alloc_ud;
 }
 
