@@ -48,7 +48,9 @@ int cmd_convert(int argc, char **argv)
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         puts("usage: quiltc convert IN.pat|IN.svg OUT.ext\n"
              "Writes the pattern of IN in OUT's format (pat, qli, dxf, plt, qcc, iqp, bqm, "
-             "gcode, svg).");
+             "gcode, svg).\n"
+             "From an SVG every shape is sewn except dashed lines (jumps) and the\n"
+             "element with id=\"region\" (the outline quiltc draws in its previews).");
         return CLI_OK;
     }
     if (argc != 3) {

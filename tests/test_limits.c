@@ -212,6 +212,35 @@ static void test_complete_mst_should_refuse_above_twenty_thousand_points(void)
     free(p);
 }
 
+/* A stitch plan split so finely that it would pass QC_MAX_PLAN_POINTS (a
+ * 1 km line at 0.01 mm is 10^8 points) is refused before it grows; just
+ * under the cap it would be accepted, so the count is what decides. */
+static void test_stitch_plan_should_refuse_too_many_splits_before_growing(void)
+{
+    static const qc_vec2 a = {0, 0}, b = {1e6, 0};
+    qc_path path = {0};
+    qc_stitch_params sp;
+    qc_plan plan = {0};
+    size_t before;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, b));
+    memset(&sp, 0, sizeof sp);
+    sp.max_segment = 0.01;
+    sp.min_segment = -1; /* keep all */
+    before = ta.peak_bytes;
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    assert_msg_has("would have 1e+08 points, more than the limit of 50000000");
+    TEST_ASSERT_TRUE(ta.peak_bytes - before < SMALL_PEAK);
+    TEST_ASSERT_EQUAL_size_t(0, plan.n);
+    sp.max_segment = 1e6 / (QC_MAX_PLAN_POINTS / 100); /* 5e5 points: fine */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+    TEST_ASSERT_EQUAL_size_t(QC_MAX_PLAN_POINTS / 100 + 1, plan.n);
+    qc_plan_free(&ctx, &plan);
+    qc_path_free(&ctx, &path);
+    assert_clean();
+}
+
 /* Shapes: sizes up to 1e5 mm; circles at most 4096 segments. */
 static void test_shapes_should_cap_size_and_segments(void)
 {
@@ -283,6 +312,7 @@ int main(void)
     RUN_TEST(test_svg_should_refuse_more_than_16_MiB_before_reading);
     RUN_TEST(test_largest_gap_should_cap_its_raster);
     RUN_TEST(test_complete_mst_should_refuse_above_twenty_thousand_points);
+    RUN_TEST(test_stitch_plan_should_refuse_too_many_splits_before_growing);
     RUN_TEST(test_shapes_should_cap_size_and_segments);
     RUN_TEST(test_generate_should_use_memory_linear_in_the_points);
     return UNITY_END();

@@ -436,6 +436,30 @@ static void numbers_should_split_where_svg_splits_them(void)
     qc_path_free(&ctx, &p);
 }
 
+/* The path reader leaves out what quiltc's own preview draws but does not
+ * sew: the layer with id="region" and dashed strokes (jumps), the dash
+ * inherited from a group and cancelled by stroke-dasharray:none. */
+static void path_should_skip_the_region_layer_and_dashed_jumps(void)
+{
+    qc_path p;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK,
+                          path_of(DOC("<g id=\"region\"><path d=\"M0 0 H90 V90 Z\"/></g>"
+                                      "<g id=\"path\"><path d=\"M10 10 L20 20\"/>"
+                                      "<path stroke-dasharray=\"2 2\" d=\"M20 20 L50 50\"/>"
+                                      "<g style=\"stroke-dasharray:1\"><path d=\"M1 1 L2 2\"/>"
+                                      "<path stroke-dasharray=\"none\" d=\"M50 50 L60 70\"/>"
+                                      "</g></g>"),
+                                  &p));
+    TEST_ASSERT_EQUAL_size_t(2, qc_path_pieces(&p));
+    TEST_ASSERT_EQUAL_size_t(4, p.npt);
+    expect_point(10, 90, p.pt[0], 0);
+    expect_point(20, 80, p.pt[1], 0);
+    expect_point(50, 50, p.pt[2], 0);
+    expect_point(60, 30, p.pt[3], 0);
+    qc_path_free(&ctx, &p);
+}
+
 static void curves_should_stay_cubics_in_the_path(void)
 {
     qc_path p;
@@ -1175,6 +1199,7 @@ int main(void)
     RUN_TEST(bad_arguments_should_fail);
     RUN_TEST(out_of_memory_should_fail_cleanly);
     RUN_TEST(reading_should_be_deterministic);
+    RUN_TEST(path_should_skip_the_region_layer_and_dashed_jumps);
     RUN_TEST(readers_should_survive_mutated_input);
     RUN_TEST(files_should_read_with_the_expected_status);
     RUN_TEST(fixtures_should_have_their_geometry);

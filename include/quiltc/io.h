@@ -99,7 +99,9 @@ int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len,
                           const qc_svg_opts *opts, qc_region *out);
 
 /* Reads every shape of an SVG document (open or closed) as one path in mm,
- * y up, one MOVE per subpath, curves kept as cubics. Same errors. */
+ * y up, one MOVE per subpath, curves kept as cubics. Dashed strokes (jumps,
+ * as quiltc draws them) and the element with id="region" (quiltc's block
+ * outline) are not stitch lines and are left out. Same errors. */
 int qc_io_read_svg_path(qc_ctx *ctx, const char *buf, size_t len,
                         const qc_svg_opts *opts, qc_path *out);
 

@@ -33,6 +33,8 @@ typedef struct qc_stitch_params {
     int clip;           /* non-zero: drop what lies outside clip region (pieces split, jumps added) */
 } qc_stitch_params;
 
+#define QC_MAX_PLAN_POINTS 50000000u /* about 850 MB of plan */
+
 /*
  * Builds *out (zeroed first) from path, piece by piece (a piece starts at
  * each MOVE): curves flattened to tolerance; if clip and clip_region, only
@@ -45,8 +47,9 @@ typedef struct qc_stitch_params {
  * and forth over tie_length (at most the adjacent segment's length) along
  * the piece. params may be NULL (all defaults). clip_region may be NULL.
  * Errors: QC_EEMPTY (nothing to sew), QC_ERANGE (bad tolerance/lengths, a
- * path coordinate NaN or beyond 1e6 mm), QC_ELIMIT, QC_ENOMEM; *out is then
- * empty.
+ * path coordinate NaN or beyond 1e6 mm), QC_ELIMIT (more than
+ * QC_MAX_PLAN_POINTS points, refused before the plan grows), QC_ENOMEM; *out
+ * is then empty.
  */
 int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
                    const qc_stitch_params *params, qc_plan *out);

@@ -346,7 +346,8 @@ static int path_shape(void *ud, const qc_path *shape, unsigned flags)
 {
     path_sink *s = (path_sink *)ud;
 
-    (void)flags;
+    if (flags & (QC__SVG_DASHED | QC__SVG_REGION_LAYER))
+        return QC_OK; /* a jump or the block's outline, not a stitch line */
     if (s->out->npt + shape->npt > QC_MAX_POINTS)
         return qc__fail(s->ctx, QC_ELIMIT, "svg: the path has more than %lu points",
                         (unsigned long)QC_MAX_POINTS);

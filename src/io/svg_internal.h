@@ -161,8 +161,16 @@ QC__HIDDEN int qc__svg_nested_viewport(const qc__svg_where *w, const qc__xml *x,
 
 /* How a shape is drawn: it has an inside (path, rect, circle, ellipse,
  * polygon; not polyline, line), its fill-rule is evenodd, its fill is not
- * none (fill and fill-rule are inherited; style wins over attributes). */
-enum { QC__SVG_CLOSED = 1, QC__SVG_EVENODD = 2, QC__SVG_FILLED = 4 };
+ * none, its stroke is dashed, it lies in the element with id="region"
+ * (fill, fill-rule and stroke-dasharray are inherited; style wins over
+ * attributes). */
+enum {
+    QC__SVG_CLOSED = 1,
+    QC__SVG_EVENODD = 2,
+    QC__SVG_FILLED = 4,
+    QC__SVG_DASHED = 8,
+    QC__SVG_REGION_LAYER = 16
+};
 
 /* Receives each shape in document order: its path in mm, y up (already
  * transformed, coordinates checked) and its QC__SVG_* flags. A negative

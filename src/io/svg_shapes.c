@@ -5,8 +5,8 @@
  * order. Not drawn and skipped with their whole subtree: display:none,
  * defs, symbol, clipPath, mask, marker, pattern, text, use, image and every
  * other element, and elements outside the SVG namespace (sodipodi:namedview,
- * metadata). fill and fill-rule are inherited (attribute or style, style
- * wins).
+ * metadata). fill, fill-rule and stroke-dasharray are inherited (attribute
+ * or style, style wins).
  */
 #include <math.h>
 #include <string.h>
@@ -17,6 +17,8 @@ typedef struct frame {
     qc__svg_mat m; /* this element's user units -> mm, y up */
     int evenodd;
     int unfilled;  /* fill:none */
+    int dashed;    /* stroke-dasharray other than none (inherited) */
+    int in_region; /* inside the element with id="region" (quiltc's outline layer) */
     int skip;      /* this element and its subtree draw nothing */
 } frame;
 
@@ -451,7 +453,8 @@ static int emit(walker *k, const frame *f, int closed)
     }
     return k->fn(k->ud, &k->shape,
                  (closed ? QC__SVG_CLOSED : 0u) | (f->evenodd ? QC__SVG_EVENODD : 0u) |
-                     (f->unfilled ? 0u : QC__SVG_FILLED));
+                     (f->unfilled ? 0u : QC__SVG_FILLED) | (f->dashed ? QC__SVG_DASHED : 0u) |
+                     (f->in_region ? QC__SVG_REGION_LAYER : 0u));
 }
 
 static int open_element(walker *k)
@@ -477,6 +480,8 @@ static int open_element(walker *k)
         f->skip = 0;
         f->evenodd = 0;
         f->unfilled = 0;
+        f->dashed = 0;
+        f->in_region = 0;
         QC__TRY(qc__svg_root_viewport(&k->w, &k->x, &f->m, &k->vp_w, &k->vp_h));
     } else if (parent->skip || !k->x.svg || !(is_container(k) || is_shape(k))) {
         f->skip = 1;
@@ -505,6 +510,13 @@ static int open_element(walker *k)
     }
     if (property(k, "fill", &v, &vn) && !value_is(v, vn, "inherit"))
         f->unfilled = value_is(v, vn, "none");
+    if (property(k, "stroke-dasharray", &v, &vn) && !value_is(v, vn, "inherit"))
+        f->dashed = !value_is(v, vn, "none");
+    {
+        const qc__xml_attr *id = qc__xml_attr_get(&k->x, "id");
+        if (id != NULL && id->value_len == 6 && memcmp(id->value, "region", 6) == 0)
+            f->in_region = 1;
+    }
     if (!is_shape(k))
         return QC_OK;
     f->skip = 1; /* children of a shape draw nothing */

@@ -175,11 +175,24 @@ static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
     return tie_off(ctx, out, m[n - 1], m[n - 2], r);
 }
 
+/* The points emit_piece makes for the n merged points m (a double, so a
+ * huge split count cannot wrap). */
+static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
+{
+    double total = 1.0 + 2.0 * r->ties;
+    size_t i;
+
+    for (i = 1; i < n; i++)
+        total += r->max_seg > 0 ? fmax(1.0, ceil(dist(m[i - 1], m[i]) / r->max_seg)) : 1.0;
+    return total;
+}
+
 static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
                  const resolved *r, qc_plan *out)
 {
     qc_vec2 *m = NULL;
     size_t longest = 0, k, start = 0, cnt;
+    double total = 0;
     int rc = QC_OK;
 
     for (k = 0; k < ends->n; k++) {
@@ -191,6 +204,21 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
         m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *m);
         if (m == NULL)
             return QC_ENOMEM;
+    }
+    /* count first, so a split that would make too many points is refused
+     * before the plan grows */
+    for (k = 0, start = 0; k < ends->n; k++) {
+        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        if (cnt >= 2)
+            total += piece_points(m, cnt, r);
+        start = ends->i[k];
+    }
+    if (total > QC_MAX_PLAN_POINTS) {
+        qc__free(ctx, m, longest * sizeof *m);
+        return qc__fail(ctx, QC_ELIMIT,
+                        "the stitch plan would have %.3g points, more than the limit of %lu; "
+                        "raise the maximum segment",
+                        total, (unsigned long)QC_MAX_PLAN_POINTS);
     }
     start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
