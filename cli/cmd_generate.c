@@ -132,12 +132,13 @@ static int output_formats(const gen_opts *g, int *fmt)
 /* Same composition as the web page (wasm/quiltc_wasm.c): generate, then plan. */
 static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
                      const qc_points *given, const qc_motif_set *motifs, qc_result *res,
-                     qc_plan *plan)
+                     qc_plan *plan, cli_timer *timer)
 {
     qc_stitch_params sp;
 
     if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
+    cli_timer_mark(timer, "plan");
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = g->tie;
     if (qc_stitch_plan(ctx, &res->path, NULL, &sp, plan) < 0)
@@ -189,7 +190,8 @@ int cmd_generate(int argc, char **argv)
     if (rc == CLI_OK && g.pat.motifs != NULL)
         rc = cli_load_motifs(&ctx, g.pat.motifs, &motifs);
     if (rc == CLI_OK)
-        rc = make_plan(&ctx, &g, &region, &given, motifs.n ? &motifs : NULL, &res, &plan);
+        rc = make_plan(&ctx, &g, &region, &given, motifs.n ? &motifs : NULL, &res, &plan,
+                       &timer);
     cli_timer_mark(&timer, "write");
     if (rc == CLI_OK)
         rc = write_outputs(&ctx, &g, fmt, &region, &plan);

@@ -59,7 +59,8 @@ assert s["family"] == "branching" and s["pieces"] == 1, s
 assert s["points"] > 20 and s["edges"] == s["points"] - 1 and s["order"] == 2 * s["edges"] + 1, s
 assert s["length_mm"] > 1000 and s["stitches"] > 100 and s["thread_mm"] > s["length_mm"], s
 assert s["motifs_placed"] > 0, s
-assert set(s["ms"]) >= {"sample", "graph", "tour", "decorate", "write", "total"}, s["ms"]
+assert set(s["ms"]) >= {"sample", "graph", "tour", "decorate", "plan", "write", "total"}, s["ms"]
+assert abs(sum(v for k, v in s["ms"].items() if k != "total") - s["ms"]["total"]) < 0.01, s["ms"]
 '
 }
 check stats_is_one_json_object stats_json
