@@ -156,6 +156,53 @@ static void test_non_trees_are_refused(void)
     expect_error(p, 4, e, 3, 3, "the edges reach 1 of 4 points");
 }
 
+/* A walk to an end point: at each node on the way, the branch towards the
+ * end comes last and is not walked back, so the walk ends there; every
+ * other edge is walked twice, the path's edges once. */
+static void test_walk_to_ends_at_the_end_after_every_detour(void)
+{
+    qc_vec2 p[6];
+    qc_edge e[5];
+    qc_order w = {0};
+    /* the path 0 - 1 - 2 - 5 (end), with 3 north and 4 south of 1: from 1
+     * (parent west) counter-clockwise come 4 (south), 2 (east: towards the
+     * end, so deferred), 3 (north) */
+    static const uint32_t want[] = {0, 1, 4, 1, 3, 1, 2, 5, 2};
+    static const uint32_t whole[] = {0, 1, 4, 1, 2, 5, 2, 1, 3, 1, 0};
+    size_t f;
+
+    p[0] = v2(0, 0); p[1] = v2(1, 0); p[2] = v2(2, 0); p[3] = v2(1, 1); p[4] = v2(1, -1);
+    p[5] = v2(3, -1);
+    e[0] = edge(0, 1); e[1] = edge(1, 2); e[2] = edge(1, 3); e[3] = edge(4, 1);
+    e[4] = edge(2, 5);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tree_walk_to(&ctx, p, 6, e, 5, 0, 5, &w));
+    TEST_ASSERT_EQUAL_size_t(2 * 5 + 1 - 3, w.n); /* end at depth 3 */
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(want, w.i, w.n);
+    qc_order_free(&ctx, &w);
+    /* end == root is the plain walk */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tree_walk_to(&ctx, p, 6, e, 5, 0, 0, &w));
+    TEST_ASSERT_EQUAL_size_t(11, w.n);
+    TEST_ASSERT_EQUAL_UINT32_ARRAY(whole, w.i, 11);
+    qc_order_free(&ctx, &w);
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tree_walk_to(&ctx, p, 6, e, 5, 0, 6, &w));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "end 6 is not one of 6 points"));
+    e[4] = edge(1, 0); /* a cycle 0-1-0 and 5 cut off */
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tree_walk_to(&ctx, p, 6, e, 5, 0, 2, &w));
+    qc_order_free(&ctx, &w);
+    e[4] = edge(2, 5);
+    for (f = 1;; f++) { /* every allocation failure: ENOMEM, nothing leaked */
+        int rc;
+        ta.fail_at = ta.allocs + f;
+        rc = qc_tree_walk_to(&ctx, p, 6, e, 5, 0, 5, &w);
+        qc_order_free(&ctx, &w);
+        TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+        if (rc == QC_OK)
+            break;
+        TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
+    }
+    TEST_ASSERT_GREATER_THAN_UINT(5, (unsigned)f);
+}
+
 static void test_nearest_point_prefers_the_lowest_index_on_ties(void)
 {
     qc_vec2 p[4];
@@ -196,6 +243,7 @@ int main(void)
     RUN_TEST(test_single_point_walk_is_the_root);
     RUN_TEST(test_emst_walk_uses_every_edge_twice);
     RUN_TEST(test_non_trees_are_refused);
+    RUN_TEST(test_walk_to_ends_at_the_end_after_every_detour);
     RUN_TEST(test_nearest_point_prefers_the_lowest_index_on_ties);
     RUN_TEST(test_out_of_memory_is_reported_and_leaks_nothing);
     return UNITY_END();

@@ -22,6 +22,15 @@ extern "C" {
  */
 int qc_tree_walk(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges,
                  size_t nedges, uint32_t root, qc_order *out);
+/*
+ * As qc_tree_walk, but the walk ends at end without coming back (a tile's
+ * exit port, paper §7.1): at each node on the path from root to end, the
+ * child towards end is visited last, after every other branch has been
+ * sewn down and back. 2(n-1)+1 - depth(end) entries; end == root gives
+ * qc_tree_walk. Errors: as qc_tree_walk (also end out of range).
+ */
+int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges,
+                    size_t nedges, uint32_t root, uint32_t end, qc_order *out);
 
 /* Index of the point nearest q (lowest index on ties); 0 for n == 0. */
 uint32_t qc_nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);

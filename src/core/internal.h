@@ -39,6 +39,10 @@ QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
 #define QC__RESERVE(ctx, arr, capv, need) \
     qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
 
+/* Squared distance from p to segment ab (a point when a == b); the one
+ * formula every stage uses, so their answers agree to the bit. */
+QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
+
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 

@@ -11,20 +11,6 @@ static int finite(qc_vec2 p)
     return fabs(p.x) <= 1e300 && fabs(p.y) <= 1e300;
 }
 
-static double seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
-    double len2 = dx * dx + dy * dy, t;
-
-    if (len2 > 0) {
-        t = (px * dx + py * dy) / len2;
-        t = t < 0 ? 0 : t > 1 ? 1 : t;
-        px -= t * dx;
-        py -= t * dy;
-    }
-    return px * px + py * py;
-}
-
 static qc_vec2 mid(qc_vec2 a, qc_vec2 b)
 {
     qc_vec2 m;
@@ -53,8 +39,8 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2,
         qc_vec2 *q = stack[sp - 1];
         int d = depth[sp - 1];
 
-        if (d >= FLAT_MAX_DEPTH || (seg_dist2(q[1], q[0], q[3]) <= tol2 &&
-                                    seg_dist2(q[2], q[0], q[3]) <= tol2)) {
+        if (d >= FLAT_MAX_DEPTH || (qc__seg_dist2(q[1], q[0], q[3]) <= tol2 &&
+                                    qc__seg_dist2(q[2], q[0], q[3]) <= tol2)) {
             rc = fn(ud, q[3], 0);
             if (rc < 0)
                 return rc;

@@ -3,7 +3,7 @@
  * vertically-mirrored points ..., using the tree node containing the start
  * point as the root ... and modifying the traversal algorithm such that the
  * skeleton path terminates at the end point". The ports are added to the
- * tree as leaves; the walk defers, at each node, the child towards the exit
+ * tree as leaves; qc_tree_walk_to defers, at each node, the child towards the exit
  * port, so every other branch is sewn down and back as a detour and the
  * walk ends at the exit without returning. Collision tests see each item
  * also where it sits in the neighbouring tiles.
@@ -12,165 +12,6 @@
 #include <string.h>
 
 #include "branching_tile.h"
-
-#define NONE UINT32_MAX
-
-/* Angle of v - u in [0, 2 pi). */
-static double heading(const qc_vec2 *p, uint32_t u, uint32_t v)
-{
-    double a = qc_atan2(p[v].y - p[u].y, p[v].x - p[u].x);
-    return a < 0.0 ? a + 2.0 * QC_PI : a;
-}
-
-/* Sorts the neighbours a[0..n) of u counter-clockwise from direction from,
- * strictly after it (so the parent sorts last), like qc_tree_walk. */
-static void sort_ccw(const qc_vec2 *p, uint32_t u, uint32_t *a, size_t n, double *key,
-                     double from)
-{
-    size_t i, j;
-
-    for (i = 0; i < n; i++) {
-        double k = heading(p, u, a[i]) - from;
-        while (k <= 0.0)
-            k += 2.0 * QC_PI;
-        key[i] = k;
-    }
-    for (i = 1; i < n; i++) {
-        double k = key[i];
-        uint32_t v = a[i];
-        for (j = i; j > 0 && (key[j - 1] > k || (key[j - 1] == k && a[j - 1] > v)); j--) {
-            key[j] = key[j - 1];
-            a[j] = a[j - 1];
-        }
-        key[j] = k;
-        a[j] = v;
-    }
-}
-
-typedef struct twalk {
-    uint32_t *start, *adj, *par, *towards, *next, *stack;
-    double *key;
-    size_t n, nadj, maxdeg;
-} twalk;
-
-static void twalk_free(qc_ctx *ctx, twalk *w)
-{
-    qc__free(ctx, w->start, (w->n + 1) * sizeof *w->start);
-    qc__free(ctx, w->adj, w->nadj * sizeof *w->adj);
-    qc__free(ctx, w->par, w->n * sizeof *w->par);
-    qc__free(ctx, w->towards, w->n * sizeof *w->towards);
-    qc__free(ctx, w->next, w->n * sizeof *w->next);
-    qc__free(ctx, w->stack, w->n * sizeof *w->stack);
-    qc__free(ctx, w->key, (w->maxdeg + 1) * sizeof *w->key);
-}
-
-/* CSR adjacency, the parents from the entry port, the path to the exit. */
-static int twalk_prepare(qc_ctx *ctx, const qc__btile *t, twalk *w)
-{
-    size_t n = t->n, i, sp = 0, reached = 1;
-    uint32_t in = (uint32_t)(n - 2), u;
-
-    w->n = n;
-    w->nadj = 2 * t->ne;
-    w->start = qc__alloc_array(ctx, n + 1, sizeof *w->start);
-    w->adj = qc__alloc_array(ctx, w->nadj, sizeof *w->adj);
-    w->par = qc__alloc_array(ctx, n, sizeof *w->par);
-    w->towards = qc__alloc_array(ctx, n, sizeof *w->towards);
-    w->next = qc__alloc_array(ctx, n, sizeof *w->next);
-    w->stack = qc__alloc_array(ctx, n, sizeof *w->stack);
-    if (w->start == NULL || w->adj == NULL || w->par == NULL || w->towards == NULL ||
-        w->next == NULL || w->stack == NULL)
-        return QC_ENOMEM;
-    memset(w->start, 0, (n + 1) * sizeof *w->start);
-    for (i = 0; i < t->ne; i++) {
-        w->start[t->e[i].a + 1]++;
-        w->start[t->e[i].b + 1]++;
-    }
-    for (i = 0; i < n; i++) {
-        if (w->start[i + 1] > w->maxdeg)
-            w->maxdeg = w->start[i + 1];
-        w->start[i + 1] += w->start[i];
-    }
-    for (i = 0; i < t->ne; i++) { /* fill, advancing start[], then shift back */
-        w->adj[w->start[t->e[i].a]++] = t->e[i].b;
-        w->adj[w->start[t->e[i].b]++] = t->e[i].a;
-    }
-    for (i = n; i > 0; i--)
-        w->start[i] = w->start[i - 1];
-    w->start[0] = 0;
-    w->key = qc__alloc_array(ctx, w->maxdeg + 1, sizeof *w->key);
-    if (w->key == NULL)
-        return QC_ENOMEM;
-    /* parents by depth-first search from the entry port */
-    memset(w->par, 0xff, n * sizeof *w->par);
-    memset(w->towards, 0xff, n * sizeof *w->towards);
-    w->par[in] = in;
-    w->stack[sp++] = in;
-    while (sp > 0) {
-        u = w->stack[--sp];
-        for (i = w->start[u]; i < w->start[u + 1]; i++) {
-            uint32_t v = w->adj[i];
-            if (v == w->par[u])
-                continue;
-            if (w->par[v] != NONE)
-                return qc__fail(ctx, QC_EINVAL, "the edges hold a cycle through point %lu",
-                                (unsigned long)v);
-            w->par[v] = u;
-            w->stack[sp++] = v;
-            reached++;
-        }
-    }
-    if (reached != n)
-        return qc__fail(ctx, QC_EINVAL, "the edges do not connect all %lu points: not a "
-                        "spanning tree", (unsigned long)(n - 2));
-    for (u = (uint32_t)(n - 1); u != in; u = w->par[u])
-        w->towards[w->par[u]] = u;
-    return QC_OK;
-}
-
-static int tile_walk(qc_ctx *ctx, qc__btile *t)
-{
-    twalk w;
-    uint32_t in = (uint32_t)(t->n - 2), out = (uint32_t)(t->n - 1), u;
-    int rc;
-
-    memset(&w, 0, sizeof w);
-    rc = twalk_prepare(ctx, t, &w);
-    if (rc == QC_OK)
-        rc = QC__RESERVE(ctx, t->order.i, t->order.cap, 2 * t->n);
-    if (rc < 0)
-        goto out_free;
-    u = in;
-    w.next[in] = w.start[in];
-    rc = qc_order_push(ctx, &t->order, in);
-    while (rc == QC_OK) {
-        uint32_t v = NONE;
-
-        while (v == NONE && w.next[u] < w.start[u + 1]) {
-            v = w.adj[w.next[u]++];
-            if (v == w.par[u] || v == w.towards[u])
-                v = NONE;
-        }
-        if (v == NONE && w.towards[u] != NONE) {
-            v = w.towards[u];
-            w.towards[u] = NONE; /* never back here: the walk ends beyond */
-        }
-        if (v != NONE) {
-            sort_ccw(t->p, v, w.adj + w.start[v], w.start[v + 1] - w.start[v], w.key,
-                     heading(t->p, v, u));
-            w.next[v] = w.start[v];
-            u = v;
-        } else if (u == out || u == in) {
-            break;
-        } else {
-            u = w.par[u];
-        }
-        rc = qc_order_push(ctx, &t->order, u);
-    }
-out_free:
-    twalk_free(ctx, &w);
-    return rc;
-}
 
 void qc__btile_free(qc_ctx *ctx, qc__btile *t)
 {
@@ -236,7 +77,8 @@ int qc__btile_make(qc_ctx *ctx, const qc_region *region, const qc_skeleton *skel
     t->e[n - 1].b = (uint32_t)n;
     t->e[n].a = qc__tile_port_node(skel->p, n, t->e, n - 1, t->exit);
     t->e[n].b = (uint32_t)(n + 1);
-    rc = tile_walk(ctx, t);
+    rc = qc_tree_walk_to(ctx, t->p, t->n, t->e, t->ne, (uint32_t)(t->n - 2),
+                         (uint32_t)(t->n - 1), &t->order);
     if (rc < 0) {
         qc__btile_free(ctx, t);
         return rc;

@@ -122,20 +122,6 @@ static uint32_t walk_next(qc__cgrid *g, walk *w)
     }
 }
 
-static double seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double ex = b.x - a.x, ey = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
-    double l2 = ex * ex + ey * ey, t = l2 > 0 ? (px * ex + py * ey) / l2 : 0;
-
-    if (t < 0)
-        t = 0;
-    else if (t > 1)
-        t = 1;
-    px -= t * ex;
-    py -= t * ey;
-    return px * px + py * py;
-}
-
 double qc__pbound_dist(qc__pbound *b, qc_vec2 x, double reach)
 {
     qc__cgrid *g = &b->g;
@@ -148,7 +134,7 @@ double qc__pbound_dist(qc__pbound *b, qc_vec2 x, double reach)
     walk_start(g, &w, x.x - reach, x.y - reach, x.x + reach, x.y + reach);
     while ((it = walk_next(g, &w)) != UINT32_MAX) {
         const qc_vec2 *v = g->v + g->item[it].off;
-        double d2 = seg_dist2(x, v[0], v[1]);
+        double d2 = qc__seg_dist2(x, v[0], v[1]);
         if (d2 < best2)
             best2 = d2;
     }

@@ -17,9 +17,6 @@ QC__HIDDEN int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0
                                  double y0, double h, size_t nx, size_t ny,
                                  unsigned char *mask);
 
-/* Squared distance from p to segment ab (a point when a == b). */
-QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
-
 /* Felzenszwalb-Huttenlocher 1-D squared distance transform of f[0..n)
  * (step 1) into d; v (n ints) and z (n + 1 doubles) are scratch. */
 QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z);

@@ -5,19 +5,6 @@
 
 #include "measure_internal.h"
 
-double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    double ex, ey;
-
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    ex = a.x + t * dx - p.x;
-    ey = a.y + t * dy - p.y;
-    return ex * ex + ey * ey;
-}
-
 /* Rows j whose y = y0 + j h satisfies lo <= y < hi, clamped to [0, ny). */
 static void row_span(double lo, double hi, double y0, double h, size_t ny, size_t *j0,
                      size_t *j1)

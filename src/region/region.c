@@ -59,19 +59,6 @@ int qc_region_contains(const qc_region *r, qc_vec2 p)
     return inside;
 }
 
-static double segment_distance2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    double ex, ey;
-
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    ex = a.x + t * dx - p.x;
-    ey = a.y + t * dy - p.y;
-    return ex * ex + ey * ey;
-}
-
 double qc_region_boundary_distance(const qc_region *r, qc_vec2 p)
 {
     size_t k, start = 0;
@@ -81,7 +68,7 @@ double qc_region_boundary_distance(const qc_region *r, qc_vec2 p)
         size_t end = r->ring_end[k], i, j = end - 1;
 
         for (i = start; i < end; j = i++)
-            best = fmin(best, segment_distance2(p, r->v[j], r->v[i]));
+            best = fmin(best, qc__seg_dist2(p, r->v[j], r->v[i]));
         start = end;
     }
     return sqrt(best);

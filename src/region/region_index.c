@@ -187,19 +187,6 @@ int qc__rindex_contains(const qc__rindex *ix, qc_vec2 p)
     return inside || (ix->region->nv > 0 && qc__rindex_near(ix, p, 0.0));
 }
 
-static double seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    double ex, ey;
-
-    t = clampd(t, 0.0, 1.0);
-    ex = a.x + t * dx - p.x;
-    ey = a.y + t * dy - p.y;
-    return ex * ex + ey * ey;
-}
-
 int qc__rindex_near(const qc__rindex *ix, qc_vec2 p, double r)
 {
     const qc_vec2 *v = ix->region->v;
@@ -218,7 +205,7 @@ int qc__rindex_near(const qc__rindex *ix, qc_vec2 p, double r)
             size_t c = y * ix->nx + x, i;
             for (i = ix->cell_start[c]; i < ix->cell_start[c + 1]; i++) {
                 uint32_t e = ix->cell_edge[i];
-                double d2 = seg_dist2(p, v[e], v[ix->next[e]]);
+                double d2 = qc__seg_dist2(p, v[e], v[ix->next[e]]);
                 if (d2 < r2 || (r == 0.0 && d2 == 0.0))
                     return 1;
             }

@@ -1,7 +1,8 @@
 /*
  * The tree walk of paper §4.2 (Fig. 5): depth first from the root, the
  * children of each node taken counter-clockwise starting from the direction
- * back to its parent, so the walk traces the tree's outline; and
+ * back to its parent, so the walk traces the tree's outline (or, to an end
+ * point, every other branch as a detour and then on to the end); and
  * qc_nearest_point for choosing the root.
  */
 #include <string.h>
@@ -96,30 +97,93 @@ static int build_adjacency(qc_ctx *ctx, walk_ctx *w, size_t n, const qc_edge *e,
     return QC_OK;
 }
 
-/* Iterative DFS; next[u] is the position of u's next neighbour to try. */
-static int walk(qc_ctx *ctx, walk_ctx *w, size_t n, uint32_t root, qc_order *out)
+#define NONE UINT32_MAX
+
+/* towards[u] = the neighbour of u on the tree path from root to end (NONE
+ * off that path), from parents found by a depth-first search from root. */
+static int path_to_end(qc_ctx *ctx, const walk_ctx *w, size_t n, uint32_t root, uint32_t end,
+                       uint32_t *towards)
+{
+    uint32_t *par = qc__alloc_array(ctx, n, sizeof *par);
+    uint32_t *stack = qc__alloc_array(ctx, n, sizeof *stack);
+    size_t sp = 0, i;
+    uint32_t u;
+    int rc = QC_OK;
+
+    if (par == NULL || stack == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    memset(par, 0xff, n * sizeof *par);
+    par[root] = root;
+    stack[sp++] = root;
+    while (sp > 0 && rc == QC_OK) {
+        u = stack[--sp];
+        for (i = w->start[u]; i < w->start[u + 1]; i++) {
+            uint32_t v = w->adj[i];
+            if (v == par[u])
+                continue;
+            if (par[v] != NONE) {
+                rc = qc__fail(ctx, QC_EINVAL, "the edges hold a cycle through point %lu",
+                              (unsigned long)v);
+                break;
+            }
+            par[v] = u;
+            stack[sp++] = v;
+        }
+    }
+    if (rc == QC_OK && par[end] == NONE)
+        rc = qc__fail(ctx, QC_EINVAL, "end point %lu is not connected to the root %lu",
+                      (unsigned long)end, (unsigned long)root);
+    if (rc == QC_OK)
+        for (u = end; u != root; u = par[u])
+            towards[par[u]] = u;
+out:
+    qc__free(ctx, par, n * sizeof *par);
+    qc__free(ctx, stack, n * sizeof *stack);
+    return rc;
+}
+
+/* Iterative DFS; next[u] is the position of u's next neighbour to try. At a
+ * node on the path to end the child towards end (towards[u]) comes last,
+ * and the walk stops on reaching end. */
+static int walk(qc_ctx *ctx, walk_ctx *w, size_t n, uint32_t root, uint32_t end,
+                qc_order *out)
 {
     uint32_t *parent = qc__alloc_array(ctx, n, sizeof *parent);
     uint32_t *next = qc__alloc_array(ctx, n, sizeof *next);
+    uint32_t *towards = qc__alloc_array(ctx, n, sizeof *towards);
     size_t visited = 1;
     uint32_t u = root;
     int rc = QC_OK;
 
-    if (parent == NULL || next == NULL) {
+    if (parent == NULL || next == NULL || towards == NULL) {
         rc = QC_ENOMEM;
         goto out;
     }
-    memset(next, 0xff, n * sizeof *next); /* UINT32_MAX: not yet reached */
+    memset(next, 0xff, n * sizeof *next); /* NONE: not yet reached */
+    memset(towards, 0xff, n * sizeof *towards);
+    if (end != root)
+        rc = path_to_end(ctx, w, n, root, end, towards);
     parent[root] = root;
     sort_neighbours(w, root, 0.0, 1);
     next[root] = w->start[root];
-    rc = qc_order_push(ctx, out, root);
+    if (rc == QC_OK)
+        rc = qc_order_push(ctx, out, root);
     while (rc == QC_OK) {
-        if (next[u] < w->start[u + 1]) {
-            uint32_t v = w->adj[next[u]++];
-            if (v == parent[u] && u != root)
-                continue;
-            if (next[v] != UINT32_MAX) {
+        uint32_t v = NONE;
+
+        while (v == NONE && next[u] < w->start[u + 1]) {
+            v = w->adj[next[u]++];
+            if ((v == parent[u] && u != root) || v == towards[u])
+                v = NONE;
+        }
+        if (v == NONE && towards[u] != NONE) {
+            v = towards[u];
+            towards[u] = NONE; /* never back here: the walk ends beyond */
+        }
+        if (v != NONE) {
+            if (next[v] != NONE) {
                 rc = qc__fail(ctx, QC_EINVAL, "the edges hold a cycle through point %lu",
                               (unsigned long)v);
                 break;
@@ -129,7 +193,7 @@ static int walk(qc_ctx *ctx, walk_ctx *w, size_t n, uint32_t root, qc_order *out
             next[v] = w->start[v];
             visited++;
             u = v;
-        } else if (u == root) {
+        } else if (u == root || u == end) {
             break;
         } else {
             u = parent[u];
@@ -142,18 +206,26 @@ static int walk(qc_ctx *ctx, walk_ctx *w, size_t n, uint32_t root, qc_order *out
 out:
     qc__free(ctx, parent, n * sizeof *parent);
     qc__free(ctx, next, n * sizeof *next);
+    qc__free(ctx, towards, n * sizeof *towards);
     return rc;
 }
 
 int qc_tree_walk(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges, size_t nedges,
                  uint32_t root, qc_order *out)
 {
+    return qc_tree_walk_to(ctx, p, n, edges, nedges, root, root, out);
+}
+
+int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges,
+                    size_t nedges, uint32_t root, uint32_t end, qc_order *out)
+{
     walk_ctx w;
     size_t max_degree = 0;
     int rc;
 
-    if (n == 0 || root >= n)
-        return qc__fail(ctx, QC_EINVAL, "root %lu is not one of %lu points", (unsigned long)root,
+    if (n == 0 || root >= n || end >= n)
+        return qc__fail(ctx, QC_EINVAL, "%s %lu is not one of %lu points",
+                        root >= n ? "root" : "end", (unsigned long)(root >= n ? root : end),
                         (unsigned long)n);
     if (nedges != n - 1)
         return qc__fail(ctx, QC_EINVAL, "%lu edges for %lu points: a spanning tree has %lu",
@@ -163,7 +235,7 @@ int qc_tree_walk(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edges, 
     rc = build_adjacency(ctx, &w, n, edges, nedges, &max_degree);
     if (rc == QC_OK) {
         w.key = qc__alloc_array(ctx, max_degree + 1, sizeof *w.key);
-        rc = w.key == NULL ? QC_ENOMEM : walk(ctx, &w, n, root, out);
+        rc = w.key == NULL ? QC_ENOMEM : walk(ctx, &w, n, root, end, out);
         qc__free(ctx, w.key, (max_degree + 1) * sizeof *w.key);
     }
     qc__free(ctx, w.start, (n + 1) * sizeof *w.start);
