@@ -210,37 +210,70 @@ int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, d
     return sat_touch(a, na, b, nb, eps);
 }
 
-int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
-                  qc__cgrid_skip skip, void *ud)
-{
-    qc_bbox b;
-    uint32_t r[4], x, y;
+/* The items of the given kinds in the cells a box meets, each once per
+ * query (stamped), nearest cells first in row order. */
+typedef struct candidates {
+    qc__cgrid *g;
+    unsigned kinds;
+    uint32_t r[4], x, y, e;
+} candidates;
 
-    if (n == 0 || g->nitem == 0)
-        return 0;
+static void candidates_begin(qc__cgrid *g, const qc_bbox *b, unsigned kinds, candidates *c)
+{
     if (++g->cur == 0) { /* the stamps wrapped: forget them */
         memset(g->stamp, 0, g->nitem * sizeof *g->stamp);
         g->cur = 1;
     }
-    poly_box(poly, n, &b);
-    cell_range(g, &b, r);
-    for (y = r[1]; y <= r[3]; y++) {
-        for (x = r[0]; x <= r[2]; x++) {
-            uint32_t e = g->head[(size_t)y * g->nx + x];
-            for (; e != UINT32_MAX; e = g->ent[e].next) {
-                uint32_t it = g->ent[e].item;
-                const qc__cgrid_item *m = &g->item[it];
-                if (g->stamp[it] == g->cur)
-                    continue;
-                g->stamp[it] = g->cur;
-                if (!(kinds & (1u << m->kind)))
-                    continue;
-                if (skip != NULL && skip(ud, m->kind, m->id))
-                    continue;
-                if (!boxes_apart(&b, &m->box, 1e-9) && sat_touch(poly, n, g->v + m->off, m->n, 1e-9))
-                    return 1;
+    c->g = g;
+    c->kinds = kinds;
+    cell_range(g, b, c->r);
+    c->x = c->r[0];
+    c->y = c->r[1];
+    c->e = g->head[(size_t)c->y * g->nx + c->x];
+}
+
+/* The next candidate, or NULL when the box's cells are exhausted. */
+static const qc__cgrid_item *candidates_next(candidates *c)
+{
+    qc__cgrid *g = c->g;
+
+    for (;;) {
+        uint32_t it;
+
+        while (c->e == UINT32_MAX) {
+            if (++c->x > c->r[2]) {
+                c->x = c->r[0];
+                if (++c->y > c->r[3])
+                    return NULL;
             }
+            c->e = g->head[(size_t)c->y * g->nx + c->x];
         }
+        it = g->ent[c->e].item;
+        c->e = g->ent[c->e].next;
+        if (g->stamp[it] == g->cur)
+            continue;
+        g->stamp[it] = g->cur;
+        if (c->kinds & (1u << g->item[it].kind))
+            return &g->item[it];
+    }
+}
+
+int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
+                  qc__cgrid_skip skip, void *ud)
+{
+    const qc__cgrid_item *m;
+    candidates c;
+    qc_bbox b;
+
+    if (n == 0 || g->nitem == 0)
+        return 0;
+    poly_box(poly, n, &b);
+    candidates_begin(g, &b, kinds, &c);
+    while ((m = candidates_next(&c)) != NULL) {
+        if (skip != NULL && skip(ud, m->kind, m->id))
+            continue;
+        if (!boxes_apart(&b, &m->box, 1e-9) && sat_touch(poly, n, g->v + m->off, m->n, 1e-9))
+            return 1;
     }
     return 0;
 }
@@ -256,40 +289,27 @@ int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, siz
 int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
                            qc__cgrid_skip_seg skip, void *ud)
 {
+    const qc__cgrid_item *m;
+    candidates c;
     qc_bbox b;
-    uint32_t r[4], x, y;
     size_t k;
 
     if (n < 2 || g->nitem == 0)
         return 0;
-    if (++g->cur == 0) {
-        memset(g->stamp, 0, g->nitem * sizeof *g->stamp);
-        g->cur = 1;
-    }
     poly_box(pts, n, &b);
-    cell_range(g, &b, r);
-    for (y = r[1]; y <= r[3]; y++) {
-        for (x = r[0]; x <= r[2]; x++) {
-            uint32_t e = g->head[(size_t)y * g->nx + x];
-            for (; e != UINT32_MAX; e = g->ent[e].next) {
-                uint32_t it = g->ent[e].item;
-                const qc__cgrid_item *m = &g->item[it];
-                if (g->stamp[it] == g->cur)
-                    continue;
-                g->stamp[it] = g->cur;
-                if (!(kinds & (1u << m->kind)) || boxes_apart(&b, &m->box, 1e-9))
-                    continue;
-                for (k = 0; k + 1 < n; k++) {
-                    qc_bbox sb;
-                    poly_box(pts + k, 2, &sb);
-                    if (boxes_apart(&sb, &m->box, 1e-9))
-                        continue;
-                    if (skip != NULL && skip(ud, m->kind, m->id, k))
-                        continue;
-                    if (sat_touch(pts + k, 2, g->v + m->off, m->n, 1e-9))
-                        return 1;
-                }
-            }
+    candidates_begin(g, &b, kinds, &c);
+    while ((m = candidates_next(&c)) != NULL) {
+        if (boxes_apart(&b, &m->box, 1e-9))
+            continue;
+        for (k = 0; k + 1 < n; k++) {
+            qc_bbox sb;
+            poly_box(pts + k, 2, &sb);
+            if (boxes_apart(&sb, &m->box, 1e-9))
+                continue;
+            if (skip != NULL && skip(ud, m->kind, m->id, k))
+                continue;
+            if (sat_touch(pts + k, 2, g->v + m->off, m->n, 1e-9))
+                return 1;
         }
     }
     return 0;

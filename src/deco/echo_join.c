@@ -428,16 +428,56 @@ static int normal_at(const joiner *j, uint32_t g, int side, qc_vec2 *u)
     return 1;
 }
 
+/* Candidate links, gathered then taken shortest first. */
+typedef struct cands {
+    cand *v;
+    size_t n, cap;
+} cands;
+
+static int cands_push(qc_ctx *ctx, cands *c, double len, uint32_t ga, uint32_t gb)
+{
+    QC__TRY(QC__RESERVE(ctx, c->v, c->cap, c->n + 1));
+    c->v[c->n].len = len;
+    c->v[c->n].ga = ga;
+    c->v[c->n++].gb = gb;
+    return QC_OK;
+}
+
+/* Tries the candidates shortest first as ladders (spur == 0) or spurs,
+ * skipping those whose rings are joined by then; frees them. *linked
+ * counts the unions made. */
+static int cands_take(qc_ctx *ctx, joiner *j, cands *c, int spur, double half, int rc,
+                      size_t *linked)
+{
+    size_t k;
+
+    if (rc == QC_OK && c->n > 0)
+        qsort(c->v, c->n, sizeof *c->v, cmp_cand);
+    for (k = 0; k < c->n && rc == QC_OK; k++) {
+        uint32_t ra = j->ring[c->v[k].ga], rb = j->ring[c->v[k].gb];
+
+        if (uf_find(j->uf, ra) == uf_find(j->uf, rb))
+            continue;
+        rc = spur ? try_spur(ctx, j, &c->v[k]) : try_ladder(ctx, j, &c->v[k], half);
+        if (rc == 1) {
+            uf_union(j->uf, ra, rb);
+            ++*linked;
+            rc = QC_OK;
+        }
+    }
+    qc__free(ctx, c->v, c->cap * sizeof *c->v);
+    return rc;
+}
+
 /* Casts candidate links every `every` mm of arc (0: every vertex), from
  * all rings or (only_from != NONE) only from rings outside only_from's
- * tree, and takes them shortest first as ladders (spur == 0) or spurs.
- * *linked counts the unions made. */
+ * tree, and takes them (cands_take). */
 static int link_round(qc_ctx *ctx, joiner *j, double every, double reach, double half, int spur,
                       uint32_t only_from, size_t *linked)
 {
     const qc_vec2 *p = j->p;
-    cand *cs = NULL;
-    size_t ncs = 0, cap = 0, k, i;
+    cands cs = {NULL, 0, 0};
+    size_t k, i;
     int rc = QC_OK;
 
     *linked = 0;
@@ -469,31 +509,11 @@ static int link_round(qc_ctx *ctx, joiner *j, double every, double reach, double
                 if (hit == NONE || j->ring[hit] == k ||
                     uf_find(j->uf, j->ring[hit]) == uf_find(j->uf, (uint32_t)k))
                     continue;
-                rc = QC__RESERVE(ctx, cs, cap, ncs + 1);
-                if (rc == QC_OK) {
-                    cs[ncs].len = tt;
-                    cs[ncs].ga = (uint32_t)i;
-                    cs[ncs++].gb = hit;
-                }
+                rc = cands_push(ctx, &cs, tt, (uint32_t)i, hit);
             }
         }
     }
-    if (rc == QC_OK && ncs > 0)
-        qsort(cs, ncs, sizeof *cs, cmp_cand);
-    for (k = 0; k < ncs && rc == QC_OK; k++) {
-        uint32_t ra = j->ring[cs[k].ga], rb = j->ring[cs[k].gb];
-
-        if (uf_find(j->uf, ra) == uf_find(j->uf, rb))
-            continue;
-        rc = spur ? try_spur(ctx, j, &cs[k]) : try_ladder(ctx, j, &cs[k], half);
-        if (rc == 1) {
-            uf_union(j->uf, ra, rb);
-            ++*linked;
-            rc = QC_OK;
-        }
-    }
-    qc__free(ctx, cs, cap * sizeof *cs);
-    return rc;
+    return cands_take(ctx, j, &cs, spur, half, rc, linked);
 }
 
 /* ---- spiral: a chain of tails from the start ---- */
@@ -700,8 +720,8 @@ static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, siz
 {
     const qc_vec2 *p = j->p;
     uint32_t main_root = uf_find(j->uf, j->ring[start]);
-    cand *cs = NULL;
-    size_t ncs = 0, cap = 0, g, k;
+    cands cs = {NULL, 0, 0};
+    size_t g;
     int rc = QC_OK;
 
     *linked = 0;
@@ -728,31 +748,10 @@ static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, siz
                         best = h;
                     }
                 }
-        if (best == NONE)
-            continue;
-        rc = QC__RESERVE(ctx, cs, cap, ncs + 1);
-        if (rc == QC_OK) {
-            cs[ncs].len = bd;
-            cs[ncs].ga = (uint32_t)g;
-            cs[ncs++].gb = best;
-        }
+        if (best != NONE)
+            rc = cands_push(ctx, &cs, bd, (uint32_t)g, best);
     }
-    if (rc == QC_OK && ncs > 0)
-        qsort(cs, ncs, sizeof *cs, cmp_cand);
-    for (k = 0; k < ncs && rc == QC_OK; k++) {
-        uint32_t ra = j->ring[cs[k].ga], rb = j->ring[cs[k].gb];
-
-        if (uf_find(j->uf, ra) == uf_find(j->uf, rb))
-            continue;
-        rc = try_spur(ctx, j, &cs[k]);
-        if (rc == 1) {
-            uf_union(j->uf, ra, rb);
-            ++*linked;
-            rc = QC_OK;
-        }
-    }
-    qc__free(ctx, cs, cap * sizeof *cs);
-    return rc;
+    return cands_take(ctx, j, &cs, 1, 0.0, rc, linked);
 }
 
 /* Ladders, then denser and farther ladders, spurs, and as a last resort
