@@ -7,188 +7,11 @@
  *  "blocks": [{"region": "rect:8x8", "at": [0, 0], "rotate": 0,
  *              "family": "stipple", "motif": "leaf", "params": {"spacing": 0.5}}]}
  */
-#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-
-#define MAX_BLOCKS 1024
-#define MAX_JOB_BYTES ((size_t)1 << 20)
-#define VALUE_LEN 48
-#define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
-
-typedef struct block {
-    cli_pattern_opts pat;
-    char values[64][VALUE_LEN]; /* numbers from JSON, as option text */
-    double at[2], rotate;
-    char where[32];             /* "blocks[3]" for messages */
-    char label[40];             /* "job: blocks[3]", for the parameters' messages */
-    qc_path path;               /* in the quilt's frame */
-    qc_vec2 lo;                 /* lower-left of its box, for ordering */
-} block;
-
-typedef struct job {
-    const char *units;
-    int tie;
-    const char *outputs[16];
-    size_t nout;
-    block *blocks;
-    size_t n;
-} job;
-
-static int bad(const char *where, const char *key, const char *what)
-{
-    cli_error("job: %s%s%s: %s", where, *key ? "." : "", key, what);
-    return CLI_USAGE;
-}
-
-static int check_keys(const cJSON *obj, const char *where, const char *const *known)
-{
-    const cJSON *it;
-
-    cJSON_ArrayForEach(it, obj) {
-        size_t i;
-        int ok = 0;
-        for (i = 0; known[i] != NULL; i++)
-            ok |= strcmp(it->string, known[i]) == 0;
-        if (!ok)
-            return bad(where, it->string, "unknown key");
-    }
-    return CLI_OK;
-}
-
-static int take_params(block *b, const cJSON *params)
-{
-    const cJSON *it;
-    char key[96];
-    size_t nrows;
-    const qc_param_info *table = qc_param_table(&nrows);
-
-    if (!cJSON_IsObject(params))
-        return bad(b->where, "params", "expected an object");
-    cJSON_ArrayForEach(it, params) {
-        const qc_param_info *row = qc_param_find(it->string);
-        size_t r;
-        snprintf(key, sizeof key, "params.%s", it->string);
-        if (row == NULL || strcmp(row->name, "family") == 0)
-            return bad(b->where, key, "unknown parameter (see 'quiltc list params')");
-        r = (size_t)(row - table);
-        if (cJSON_IsNumber(it))
-            snprintf(b->values[r], VALUE_LEN, "%.17g", it->valuedouble);
-        else if (cJSON_IsString(it) && strlen(it->valuestring) < VALUE_LEN)
-            strcpy(b->values[r], it->valuestring);
-        else
-            return bad(b->where, key, "expected a number or a short string");
-        b->pat.raw[r] = b->values[r];
-    }
-    return CLI_OK;
-}
-
-static int take_block(const job *j, block *b, const cJSON *o)
-{
-    static const char *const known[] = {"region", "at", "rotate", "family", "motif", "params",
-                                        NULL};
-    const cJSON *v;
-    size_t nrows;
-    double mm;
-    int rc;
-
-    cli_pattern_init(&b->pat);
-    b->pat.units = j->units;
-    snprintf(b->label, sizeof b->label, "job: %s", b->where);
-    b->pat.where = b->label;
-    if (!cJSON_IsObject(o))
-        return bad(b->where, "", "expected an object");
-    if ((rc = check_keys(o, b->where, known)) != CLI_OK)
-        return rc;
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "region")) != NULL) {
-        if (!cJSON_IsString(v))
-            return bad(b->where, "region", "expected a shape or an SVG file name");
-        b->pat.region = v->valuestring;
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "at")) != NULL) {
-        if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 2 ||
-            !cJSON_IsNumber(cJSON_GetArrayItem(v, 0)) || !cJSON_IsNumber(cJSON_GetArrayItem(v, 1)))
-            return bad(b->where, "at", "expected [x, y]");
-        b->at[0] = cJSON_GetArrayItem(v, 0)->valuedouble;
-        b->at[1] = cJSON_GetArrayItem(v, 1)->valuedouble;
-        mm = cli_units_mm(j->units);
-        if (!(fabs(b->at[0]) * mm <= MAX_AT_MM && fabs(b->at[1]) * mm <= MAX_AT_MM))
-            return bad(b->where, "at", "expected [x, y] within 100000 mm of 0");
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "rotate")) != NULL) {
-        if (!cJSON_IsNumber(v) || !(fabs(v->valuedouble) <= 360))
-            return bad(b->where, "rotate", "expected degrees in [-360, 360]");
-        b->rotate = v->valuedouble;
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "motif")) != NULL) {
-        if (!cJSON_IsString(v))
-            return bad(b->where, "motif", "expected a comma-separated list");
-        b->pat.motifs = v->valuestring;
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "family")) != NULL) {
-        size_t r = (size_t)(qc_param_find("family") - qc_param_table(&nrows));
-        if (!cJSON_IsString(v) || strlen(v->valuestring) >= VALUE_LEN)
-            return bad(b->where, "family", "expected a family name");
-        strcpy(b->values[r], v->valuestring);
-        b->pat.raw[r] = b->values[r];
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(o, "params")) != NULL)
-        return take_params(b, v);
-    return CLI_OK;
-}
-
-static int take_job(job *j, const cJSON *root)
-{
-    static const char *const known[] = {"units", "tie", "output", "blocks", NULL};
-    const cJSON *v, *blocks;
-    size_t i;
-    int rc;
-
-    if (!cJSON_IsObject(root))
-        return bad("top level", "", "expected an object");
-    if ((rc = check_keys(root, "top level", known)) != CLI_OK)
-        return rc;
-    j->units = "in";
-    j->tie = 3;
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "units")) != NULL) {
-        if (!cJSON_IsString(v) || cli_units_mm(v->valuestring) == 0)
-            return bad("top level", "units", "expected \"in\", \"mm\" or \"cm\"");
-        j->units = v->valuestring;
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "tie")) != NULL) {
-        if (!cJSON_IsNumber(v) || v->valuedouble < 0 || v->valuedouble > 100 ||
-            v->valuedouble != floor(v->valuedouble))
-            return bad("top level", "tie", "expected a count from 0 to 100");
-        j->tie = (int)v->valuedouble;
-    }
-    if ((v = cJSON_GetObjectItemCaseSensitive(root, "output")) != NULL) {
-        const cJSON *o;
-        if (!cJSON_IsArray(v))
-            return bad("top level", "output", "expected a list of file names");
-        cJSON_ArrayForEach(o, v) {
-            if (!cJSON_IsString(o) || j->nout == 16)
-                return bad("top level", "output", "expected at most 16 file names");
-            j->outputs[j->nout++] = o->valuestring;
-        }
-    }
-    blocks = cJSON_GetObjectItemCaseSensitive(root, "blocks");
-    if (!cJSON_IsArray(blocks) || cJSON_GetArraySize(blocks) < 1 ||
-        cJSON_GetArraySize(blocks) > MAX_BLOCKS)
-        return bad("top level", "blocks", "expected a list of 1 to 1024 blocks");
-    j->n = (size_t)cJSON_GetArraySize(blocks);
-    j->blocks = calloc(j->n, sizeof *j->blocks);
-    if (j->blocks == NULL)
-        return bad("top level", "blocks", "out of memory");
-    for (i = 0; i < j->n; i++) {
-        snprintf(j->blocks[i].where, sizeof j->blocks[i].where, "blocks[%lu]", (unsigned long)i);
-        if ((rc = take_block(j, &j->blocks[i], cJSON_GetArrayItem(blocks, (int)i))) != CLI_OK)
-            return rc;
-    }
-    return CLI_OK;
-}
+#include "job.h"
 
 /* Generates block b in its own frame, then rotates it about its box's
  * lower-left corner and moves that corner to `at`. */
@@ -281,7 +104,8 @@ static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
     return CLI_OK;
 }
 
-static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, size_t nout)
+static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *formats,
+                   size_t nout)
 {
     block **order = calloc(j->n, sizeof *order);
     qc_path all = {0};
@@ -305,21 +129,34 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, size_t nout)
         rc = cli_fail(ctx, "job", ctx->status);
     memset(&io, 0, sizeof io);
     io.svg_inches = strcmp(j->units, "in") == 0;
-    for (i = 0; i < nout && rc == CLI_OK; i++) {
-        int fmt = qc_format_from_name(outputs[i]);
-        rc = fmt < 0 ? bad("output", outputs[i], "unknown format")
-                     : cli_write_plan(ctx, outputs[i], fmt, &plan, &io);
-    }
+    if (rc == CLI_OK) /* all outputs or none */
+        rc = cli_write_plans(ctx, outputs, formats, nout, &plan, &io);
     qc_plan_free(ctx, &plan);
     qc_path_free(ctx, &all);
     free(order);
     return rc;
 }
 
+/* The format of each output, from its extension, before any work. */
+static int output_formats(const char *const *outputs, size_t nout, int *formats)
+{
+    size_t i;
+
+    for (i = 0; i < nout; i++) {
+        formats[i] = qc_format_from_name(outputs[i]);
+        if (formats[i] < 0) {
+            cli_error("job: output '%s': unknown format (pat, qli, dxf, plt, qcc, iqp, bqm, "
+                      "gcode, svg)", outputs[i]);
+            return CLI_USAGE;
+        }
+    }
+    return CLI_OK;
+}
+
 int cmd_job(int argc, char **argv)
 {
-    static const char *const fallback[] = {"quilt.pat"};
-    const char *outputs[16];
+    const char *outputs[MAX_JOB_OUTPUTS];
+    int formats[MAX_JOB_OUTPUTS];
     size_t nout = 0, i;
     const char *file = NULL;
     char *buf = NULL;
@@ -334,9 +171,13 @@ int cmd_job(int argc, char **argv)
             puts("usage: quiltc job QUILT.json [-o FILE]...\n"
                  "Generates every block of a quilt and joins them into one file (see README).");
             return CLI_OK;
-        } else if (strcmp(argv[a], "-o") == 0 && a + 1 < argc && nout < 16)
-            outputs[nout++] = argv[++a];
-        else if (file == NULL && argv[a][0] != '-')
+        } else if (strcmp(argv[a], "-o") == 0 && a + 1 < argc) {
+            if (nout == MAX_JOB_OUTPUTS) {
+                cli_error("job: at most %d outputs", MAX_JOB_OUTPUTS);
+                rc = CLI_USAGE;
+            } else
+                outputs[nout++] = argv[++a];
+        } else if (file == NULL && argv[a][0] != '-')
             file = argv[a];
         else {
             cli_bad_option("job", argv[a], '?');
@@ -359,13 +200,18 @@ int cmd_job(int argc, char **argv)
                   at != NULL ? (long)(at - buf) : -1L);
         rc = CLI_USAGE;
     } else
-        rc = take_job(&j, root);
+        rc = cli_job_parse(&j, root);
+    if (rc == CLI_OK && nout == 0) {
+        for (i = 0; i < j.nout; i++)
+            outputs[nout++] = j.outputs[i];
+        if (nout == 0)
+            outputs[nout++] = "quilt.pat";
+    }
+    if (rc == CLI_OK)
+        rc = output_formats(outputs, nout, formats);
     if (rc == CLI_OK) {
         qc_ctx_init(&ctx, NULL, NULL);
-        if (nout == 0)
-            for (i = 0; i < j.nout; i++)
-                outputs[nout++] = j.outputs[i];
-        rc = run_job(&ctx, &j, nout ? outputs : fallback, nout ? nout : 1);
+        rc = run_job(&ctx, &j, outputs, formats, nout);
         for (i = 0; i < j.n; i++)
             qc_path_free(&ctx, &j.blocks[i].path);
     }

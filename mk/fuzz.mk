@@ -21,8 +21,8 @@ FUZZ_T_CFLAGS = $(FUZZ_CFLAGS) -Wno-missing-prototypes -D_POSIX_C_SOURCE=200809L
 FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_BINS    := $(FUZZ_ALL:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_DEPS     = tests/fuzz/fuzz_common.h tests/support/testalloc.c tests/support/testalloc.h
-# the job target compiles cli/cmd_job.c in and needs these helpers of the CLI
-FUZZ_JOB_CLI := cli/util.c cli/pattern_opts.c cli/region_load.c cli/motifs_load.c
+# the job target links the job reader and the CLI helpers it uses
+FUZZ_JOB_CLI := cli/job_parse.c cli/util.c cli/pattern_opts.c cli/region_load.c cli/motifs_load.c
 
 $(FUZZ_BUILD)/obj/src/%.o: src/%.c $(HEADERS) $(wildcard src/*/*.h)
 	@mkdir -p $(dir $@)
@@ -32,7 +32,7 @@ $(FUZZ_BUILD)/libquiltc.a: $(FUZZ_LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $(FUZZ_LIB_OBJ)
 
-$(FUZZ_BUILD)/fuzz_job: tests/fuzz/fuzz_job.c cli/cmd_job.c $(FUZZ_JOB_CLI) cli/cli.h $(FUZZ_DEPS) $(FUZZ_BUILD)/libquiltc.a
+$(FUZZ_BUILD)/fuzz_job: tests/fuzz/fuzz_job.c $(FUZZ_JOB_CLI) cli/cli.h cli/job.h $(FUZZ_DEPS) $(FUZZ_BUILD)/libquiltc.a
 	$(FUZZ_CC) $(FUZZ_T_CFLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_JOB_CLI) \
 	    tests/support/testalloc.c $(FUZZ_BUILD)/libquiltc.a $(JSON_LIBS) $(LIBM)
 
@@ -49,7 +49,7 @@ fuzz: fuzz-build
 # The replay drivers: the same targets with a plain main, built like the tests.
 REPLAY_BINS := $(FUZZ_ALL:%=$(BUILD)/fuzz-replay/fuzz_%)
 
-$(BUILD)/fuzz-replay/fuzz_job: tests/fuzz/fuzz_job.c tests/fuzz/replay_main.c cli/cmd_job.c $(FUZZ_JOB_CLI) cli/cli.h $(FUZZ_DEPS) $(BUILD)/libquiltc.a
+$(BUILD)/fuzz-replay/fuzz_job: tests/fuzz/fuzz_job.c tests/fuzz/replay_main.c $(FUZZ_JOB_CLI) cli/cli.h cli/job.h $(FUZZ_DEPS) $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) -Itests/fuzz $(JSON_CFLAGS) -o $@ $< tests/fuzz/replay_main.c \
 	    $(FUZZ_JOB_CLI) tests/support/testalloc.c $(BUILD)/libquiltc.a $(JSON_LIBS) $(LIBM)

@@ -251,6 +251,9 @@ all_or_nothing() {
     d=$(mktemp -d "$WORK/aon.XXXXXX") && cd "$d" || return 1
     expect_fail 1 "no/dir/x.svg" "$QC" generate -o ok.pat -o no/dir/x.svg &&
         [ -z "$(ls -A)" ] || { echo "left behind: $(ls -A)"; return 1; }
+    echo '{"blocks": [{"region": "rect:2x2"}]}' > j.json &&
+        expect_fail 1 "no/dir/q.svg" "$QC" job j.json -o ok.pat -o no/dir/q.svg &&
+        [ "$(ls -A)" = j.json ] || { echo "job left behind: $(ls -A)"; return 1; }
 }
 check several_outputs_all_or_nothing all_or_nothing
 

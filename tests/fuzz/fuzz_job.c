@@ -1,15 +1,16 @@
 /*
  * Fuzz target: a quilt job file, as `quiltc job` reads it: cJSON's parser,
- * then the job's own validation (take_job: keys, units, tie, outputs,
- * blocks, params) and, per block, the parameter conversion and range check
- * (cli_pattern_finish) and, for built-in shapes, the region. cli/cmd_job.c
- * is compiled into this file so its static functions can be called; no
- * block is generated and no file is written (generation has its own
- * target, fuzz_generate). Runs with stderr closed (-close_fd_mask=2): the
+ * then the job's own validation (cli_job_parse of cli/job_parse.c: keys,
+ * units, tie, outputs, blocks, params) and, per block, the parameter
+ * conversion and range check (cli_pattern_finish) and, for built-in
+ * shapes, the region. No block is generated and no file is written
+ * (generation has its own target, fuzz_generate). Runs with stderr closed (-close_fd_mask=2): the
  * CLI prints its one-line errors there.
  */
-#include "../../cli/cmd_job.c"
+#include <stdlib.h>
+#include <string.h>
 
+#include "../../cli/job.h"
 #include "fuzz_common.h"
 
 /* "rect:4x4" style specs only: a name, a colon, no path (no file access). */
@@ -56,8 +57,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&j, 0, sizeof j);
     root = cJSON_ParseWithLength((const char *)data, size);
     if (root != NULL) {
-        rc = take_job(&j, root);
-        FUZZ_CHECK(rc == CLI_OK || rc == CLI_USAGE, "take_job status");
+        rc = cli_job_parse(&j, root);
+        FUZZ_CHECK(rc == CLI_OK || rc == CLI_USAGE, "cli_job_parse status");
         if (rc == CLI_OK) {
             FUZZ_CHECK(j.n >= 1 && j.n <= MAX_BLOCKS, "block count within the cap");
             validate(&j);

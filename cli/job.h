@@ -1,0 +1,45 @@
+/*
+ * A quilt job file (quiltc job): its blocks, each with its region, place,
+ * rotation, family and parameters, read from JSON and checked key by key.
+ * job_parse.c reads; cmd_job.c generates and joins.
+ */
+#ifndef QC_CLI_JOB_H
+#define QC_CLI_JOB_H
+
+#include <cjson/cJSON.h>
+
+#include "cli.h"
+
+#define MAX_BLOCKS 1024
+#define MAX_JOB_OUTPUTS 16
+#define MAX_JOB_BYTES ((size_t)1 << 20)
+#define VALUE_LEN 48
+#define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
+
+typedef struct block {
+    cli_pattern_opts pat;
+    char values[64][VALUE_LEN]; /* numbers from JSON, as option text */
+    double at[2], rotate;
+    char where[32];             /* "blocks[3]" for messages */
+    char label[40];             /* "job: blocks[3]", for the parameters' messages */
+    qc_path path;               /* in the quilt's frame */
+    qc_vec2 lo;                 /* lower-left of its box, for ordering */
+} block;
+
+typedef struct job {
+    const char *units;
+    int tie;
+    const char *outputs[MAX_JOB_OUTPUTS];
+    size_t nout;
+    block *blocks;
+    size_t n;
+} job;
+
+/* Reads the parsed document root into *j (zeroed by the caller): every key
+ * known, every value of the right type and range, each block's parameters
+ * as cli_pattern_opts (converted later by cli_pattern_finish). CLI_OK, or
+ * CLI_USAGE after one line naming the key ("job: blocks[2].at: ...").
+ * Strings point into root; free j->blocks with free(). */
+int cli_job_parse(job *j, const cJSON *root);
+
+#endif
