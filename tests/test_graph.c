@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "quiltc.h"
+#include "../src/graph/graph_internal.h"
 #include "testalloc.h"
 #include "unity.h"
 
@@ -599,6 +600,39 @@ static void mst_should_order_lengths_exactly(void)
     mst_check(p, 3);
 }
 
+/* The 128-bit integer comparison of squared lengths agrees with the
+ * expansion arithmetic on near ties: a lattice's equal edges (a few ulps
+ * apart), reflections that tie exactly, and points whose exponents span
+ * too far for integers (then both paths are the expansions). */
+static void cmp_len2_integers_should_match_expansions(void)
+{
+    qc_rng r;
+    int i, k, decided = 0;
+
+    qc_rng_seed(&r, 11);
+    for (i = 0; i < 20000; i++) {
+        double s = 0.5 + 300.0 * qc_rng_unit(&r), t = 0.1 + 10.0 * qc_rng_unit(&r);
+        double ang = 2.0 * QC_PI * qc_rng_unit(&r), c = qc_cos(ang), n = qc_sin(ang);
+        qc_vec2 q[4];
+        int want, got;
+
+        /* ab and cd: the same length t in two directions, rounded apart */
+        q[0] = v2(s, s * 0.5);
+        q[1] = v2(s + t * c, s * 0.5 + t * n);
+        q[2] = v2(s * 0.7, s);
+        q[3] = i % 3 == 0 ? v2(s * 0.7 - t * c, s + t * n) : v2(s * 0.7 + t * n, s - t * c);
+        if (i % 7 == 0) /* a tiny coordinate: too wide a span for integers */
+            q[2].x = 1e-9 * qc_rng_unit(&r);
+        for (k = 0; k < 2; k++) {
+            want = qc__cmp_len2_expansion(q[2 * k], q[1 - k], q[2], q[3]);
+            got = qc__cmp_len2(q[2 * k], q[1 - k], q[2], q[3]);
+            TEST_ASSERT_EQUAL_INT(want, got);
+            decided += want != 0;
+        }
+    }
+    TEST_ASSERT_GREATER_THAN_INT(1000, decided);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -620,5 +654,6 @@ int main(void)
     RUN_TEST(mst_should_append_and_refuse_large_complete_graphs);
     RUN_TEST(graph_should_survive_out_of_memory);
     RUN_TEST(mst_should_order_lengths_exactly);
+    RUN_TEST(cmp_len2_integers_should_match_expansions);
     return UNITY_END();
 }

@@ -19,5 +19,18 @@ QC__HIDDEN int qc__check_points(qc_ctx *ctx, const qc_vec2 *p, size_t n,
 /* The sign of |a - b|^2 - |c - d|^2, exactly (a float filter, then
  * expansions): the order that makes both MST modes agree on every input. */
 QC__HIDDEN int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
+/*
+ * Exact squared lengths as 128-bit integers. Coordinates whose exponents
+ * lie within QC__INT_SPAN of each other (the points of one pattern) are all
+ * integers times 2^e for e their lowest exponent (qc__int_span_add
+ * accumulates it in *lo, *hi; 0 for subnormals, inf and NaN), each below
+ * 2^62; then qc__len2_int gives |ab|^2 / 2^(2e) exactly as hi 2^64 + lo.
+ */
+#define QC__INT_SPAN 9
+QC__HIDDEN int qc__int_span_add(double x, int *lo, int *hi);
+QC__HIDDEN void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo);
+/* The same by expansion arithmetic alone (what qc__cmp_len2 falls back to
+ * when the coordinates have no common 62-bit integer form); for tests. */
+QC__HIDDEN int qc__cmp_len2_expansion(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
 
 #endif

@@ -7,6 +7,8 @@
  * O(n^2) Prim over the complete graph (the paper's complete graph without
  * its n^2/2 edge list: 20000 points would need 3 GB for Kruskal).
  */
+#include <limits.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "graph_delaunay.h"
@@ -83,15 +85,64 @@ static void sort_run(const qc_vec2 *p, qc_edge *e, size_t m)
     }
 }
 
+/* An edge with its exact squared length in integers (qc__len2_int). */
+typedef struct int_key {
+    uint64_t hi, lo;
+    qc_edge e;
+} int_key;
+
+static int int_key_cmp(const void *x, const void *y)
+{
+    const int_key *a = x, *b = y;
+
+    if (a->hi != b->hi)
+        return a->hi < b->hi ? -1 : 1;
+    if (a->lo != b->lo)
+        return a->lo < b->lo ? -1 : 1;
+    if (a->e.a != b->e.a)
+        return a->e.a < b->e.a ? -1 : 1;
+    return (a->e.b > b->e.b) - (a->e.b < b->e.b);
+}
+
+/* Sorts a run by exact integer keys when its coordinates allow (lattice
+ * runs of thousands of equal-length edges: one key per edge instead of
+ * exact arithmetic per comparison); else by sort_run. */
+static int sort_run_keyed(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m, int_key **buf,
+                          size_t *cap)
+{
+    int lo = INT_MAX, hi = INT_MIN, ok = 1;
+    size_t i;
+
+    for (i = 0; i < m && ok; i++)
+        ok = qc__int_span_add(p[e[i].a].x, &lo, &hi) && qc__int_span_add(p[e[i].a].y, &lo, &hi) &&
+             qc__int_span_add(p[e[i].b].x, &lo, &hi) && qc__int_span_add(p[e[i].b].y, &lo, &hi);
+    if (m <= 24 || !ok || (hi != INT_MIN && hi - lo > QC__INT_SPAN)) {
+        sort_run(p, e, m);
+        return QC_OK;
+    }
+    QC__TRY(QC__RESERVE(ctx, *buf, *cap, m));
+    for (i = 0; i < m; i++) {
+        qc__len2_int(p[e[i].a], p[e[i].b], lo, &(*buf)[i].hi, &(*buf)[i].lo);
+        (*buf)[i].e = e[i];
+    }
+    qsort(*buf, m, sizeof **buf, int_key_cmp); /* keys are distinct: deterministic */
+    for (i = 0; i < m; i++)
+        e[i] = (*buf)[i].e;
+    return QC_OK;
+}
+
 /*
  * Sorts e[0..m) (a < b each) by (length, a, b): a radix sort on the upper
  * 32 bits of the squared length (sign, exponent, 20 mantissa bits), then
- * the few runs that tie there are finished with exact comparisons.
+ * the few runs that tie there are finished exactly (by integer keys, or by
+ * exact comparisons).
  */
 static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
 {
     uint64_t *key = qc__alloc_array(ctx, m, sizeof *key);
-    size_t i, r;
+    int_key *buf = NULL;
+    size_t i, r, cap = 0;
+    int rc = QC_OK;
 
     if (key == NULL)
         return qc__fail(ctx, QC_ENOMEM, "mst: out of memory sorting %lu edges",
@@ -112,14 +163,17 @@ static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
         e[i].b = (uint32_t)key[i];
     }
     qc__free(ctx, key, m * sizeof *key);
-    for (i = 0; i < m; i = r) {
+    for (i = 0; i < m && rc == QC_OK; i = r) {
         uint64_t hi = len_key(len2(p, e[i].a, e[i].b)) >> 32;
 
         for (r = i + 1; r < m && len_key(len2(p, e[r].a, e[r].b)) >> 32 == hi; r++)
             ;
         if (r - i > 1)
-            sort_run(p, e + i, r - i);
+            rc = sort_run_keyed(ctx, p, e + i, r - i, &buf, &cap);
     }
+    qc__free(ctx, buf, cap * sizeof *buf);
+    if (rc < 0)
+        return qc__fail(ctx, rc, "mst: out of memory sorting %lu edges", (unsigned long)m);
     /* Computed lengths a few ulps apart may straddle two runs in the wrong
      * order: one insertion pass with the exact order mends that (it moves
      * nothing in the usual case, a comparison per edge). */

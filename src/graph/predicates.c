@@ -5,7 +5,9 @@
  * exactinit() state). Relies on -ffp-contract=off (no FMA) and round to
  * nearest; exact unless an intermediate product overflows or underflows.
  */
+#include <limits.h>
 #include <math.h>
+#include <string.h>
 
 #include "graph_internal.h"
 
@@ -299,18 +301,105 @@ static int len2_exact(const double *d, double *h)
     return n;
 }
 
-int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+/* ---- the same comparison in integers, when the coordinates allow ---- */
+
+/* x = +-m 2^e with m an integer below 2^53 (m = 0 for zero). 0 for
+ * subnormals, infinities and NaN. */
+typedef struct ifloat {
+    uint64_t m;
+    int e, neg;
+} ifloat;
+
+static int ifloat_of(double x, ifloat *f)
 {
-    double ax = a.x - b.x, ay = a.y - b.y, cx = c.x - d.x, cy = c.y - d.y;
-    double l1 = ax * ax + ay * ay, l2 = cx * cx + cy * cy;
+    uint64_t u;
+    int be;
+
+    memcpy(&u, &x, sizeof u);
+    be = (int)(u >> 52 & 0x7ff);
+    f->m = be == 0 ? 0 : (u & 0xfffffffffffffULL) | (uint64_t)1 << 52;
+    f->e = be - 1075;
+    f->neg = (int)(u >> 63);
+    return be != 0x7ff && (be != 0 || (u << 1) == 0);
+}
+
+/* a * b as hi * 2^64 + lo. */
+static void mul_64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+
+    *lo = (mid << 32) | (p00 & 0xffffffffu);
+    *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+}
+
+/* dx^2 + dy^2 for integer differences below 2^63 in magnitude. */
+static void len2_u128(int64_t dx, int64_t dy, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t ux = dx < 0 ? (uint64_t)0 - (uint64_t)dx : (uint64_t)dx;
+    uint64_t uy = dy < 0 ? (uint64_t)0 - (uint64_t)dy : (uint64_t)dy;
+    uint64_t h2, l2;
+
+    mul_64(ux, ux, hi, lo);
+    mul_64(uy, uy, &h2, &l2);
+    *lo += l2;
+    *hi += h2 + (*lo < l2);
+}
+
+int qc__int_span_add(double x, int *lo, int *hi)
+{
+    ifloat f;
+
+    if (!ifloat_of(x, &f))
+        return 0;
+    if (f.m != 0) {
+        *lo = f.e < *lo ? f.e : *lo;
+        *hi = f.e > *hi ? f.e : *hi;
+    }
+    return 1;
+}
+
+/* x / 2^e as an integer (|x| < 2^(e + 62) by the span's rule). */
+static int64_t int_at(double x, int e)
+{
+    ifloat f;
+    int64_t m;
+
+    ifloat_of(x, &f);
+    m = f.m == 0 ? 0 : (int64_t)(f.m << (f.e - e));
+    return f.neg ? -m : m;
+}
+
+void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo)
+{
+    len2_u128(int_at(a.x, e) - int_at(b.x, e), int_at(a.y, e) - int_at(b.y, e), hi, lo);
+}
+
+/* Compares |ab|^2 with |cd|^2 in integers when the eight coordinates allow
+ * (QC__INT_SPAN): 1 and *cmp when it could, 0 to fall back. */
+static int cmp_len2_int(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d, int *cmp)
+{
+    const double v[8] = {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
+    uint64_t h1, l1, h2, l2;
+    int lo = INT_MAX, hi = INT_MIN, i;
+
+    for (i = 0; i < 8; i++)
+        if (!qc__int_span_add(v[i], &lo, &hi))
+            return 0;
+    if (hi != INT_MIN && hi - lo > QC__INT_SPAN)
+        return 0;
+    qc__len2_int(a, b, lo, &h1, &l1);
+    qc__len2_int(c, d, lo, &h2, &l2);
+    *cmp = h1 != h2 ? (h1 > h2) - (h1 < h2) : (l1 > l2) - (l1 < l2);
+    return 1;
+}
+
+int qc__cmp_len2_expansion(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
     double e1[16], e2[16], diff[32], d1[4], d2[4], big = 0.0;
     int n1, n2, n, i;
 
-    /* each computed value is within 4 ulps of its exact value */
-    if (l1 - l2 > 8.0 * EPS * (l1 + l2))
-        return 1;
-    if (l2 - l1 > 8.0 * EPS * (l1 + l2))
-        return -1;
     two_diff(a.x, b.x, &d1[0], &d1[1]);
     two_diff(a.y, b.y, &d1[2], &d1[3]);
     two_diff(c.x, d.x, &d2[0], &d2[1]);
@@ -330,4 +419,20 @@ int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
         e2[i] = -e2[i];
     n = sum_zeroelim(n1, e1, n2, e2, diff);
     return (diff[n - 1] > 0.0) - (diff[n - 1] < 0.0);
+}
+
+int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    double ax = a.x - b.x, ay = a.y - b.y, cx = c.x - d.x, cy = c.y - d.y;
+    double l1 = ax * ax + ay * ay, l2 = cx * cx + cy * cy;
+    int cmp;
+
+    /* each computed value is within 4 ulps of its exact value */
+    if (l1 - l2 > 8.0 * EPS * (l1 + l2))
+        return 1;
+    if (l2 - l1 > 8.0 * EPS * (l1 + l2))
+        return -1;
+    if (cmp_len2_int(a, b, c, d, &cmp))
+        return cmp;
+    return qc__cmp_len2_expansion(a, b, c, d);
 }
