@@ -9,6 +9,13 @@
 void bench_graph(void);
 void bench_tour(void);
 void bench_pebbling(void);
+void bench_families(void);
+
+/* An allocator hook (qc_ctx_init) that counts the library's live and peak bytes. */
+typedef struct bench_meter {
+    size_t live, peak;
+} bench_meter;
+void *bench_meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size);
 
 /* Monotonic seconds. */
 double bench_now(void);

@@ -5,38 +5,15 @@
 
 #include "bench.h"
 
-/* Counts the library's live and peak bytes. */
-typedef struct meter {
-    size_t live, peak;
-} meter;
-
-static void *meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
-{
-    meter *m = ud;
-
-    if (new_size == 0) {
-        free(ptr);
-        m->live -= old_size;
-        return NULL;
-    }
-    ptr = realloc(ptr, new_size);
-    if (ptr != NULL) {
-        m->live = m->live - old_size + new_size;
-        if (m->live > m->peak)
-            m->peak = m->live;
-    }
-    return ptr;
-}
-
 static void run(const char *name, const qc_vec2 *p, size_t n, int reps)
 {
     qc_ctx ctx;
-    meter m = {0, 0};
+    bench_meter m = {0, 0};
     double td = 1e30, tm = 1e30, w = 0;
     size_t ntri = 0, i;
     int r;
 
-    qc_ctx_init(&ctx, meter_alloc, &m);
+    qc_ctx_init(&ctx, bench_meter_alloc, &m);
     for (r = 0; r < reps; r++) {
         qc_mesh mesh;
         qc_edges e = {0};

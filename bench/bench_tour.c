@@ -12,29 +12,6 @@
 #define TSPLIB_DIR "../shared/data/tsplib/"
 #define KICKS 20000
 
-/* Counts the library's live and peak bytes. */
-typedef struct meter {
-    size_t live, peak;
-} meter;
-
-static void *meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
-{
-    meter *m = ud;
-
-    if (new_size == 0) {
-        free(ptr);
-        m->live -= old_size;
-        return NULL;
-    }
-    ptr = realloc(ptr, new_size);
-    if (ptr != NULL) {
-        m->live = m->live - old_size + new_size;
-        if (m->live > m->peak)
-            m->peak = m->live;
-    }
-    return ptr;
-}
-
 /* Best time of reps runs of one method; the tour's length in *len. */
 static double time_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, int method, uint64_t kicks,
                        int reps, double *len, double (*measure)(const qc_vec2 *, const uint32_t *,
@@ -86,7 +63,7 @@ static void uniform(size_t n, int reps, int all_methods)
 {
     static const char *const names[] = {"greedy", "+2-opt", "+Or-opt"};
     qc_vec2 *p = bench_uniform(n, 1000.0, 7 + n);
-    meter m = {0, 0};
+    bench_meter m = {0, 0};
     qc_edges e = {0};
     qc_ctx ctx;
     double w = 0, bhh = 0.7124 * sqrt((double)n * 1e6), len, t;
@@ -95,7 +72,7 @@ static void uniform(size_t n, int reps, int all_methods)
 
     if (p == NULL)
         return;
-    qc_ctx_init(&ctx, meter_alloc, &m);
+    qc_ctx_init(&ctx, bench_meter_alloc, &m);
     if (qc_mst(&ctx, p, n, QC_MST_MODE_DELAUNAY, &e) == QC_OK)
         for (i = 0; i < e.n; i++)
             w += qc_hypot(p[e.e[i].a].x - p[e.e[i].b].x, p[e.e[i].a].y - p[e.e[i].b].y);

@@ -14,6 +14,24 @@ double bench_now(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+void *bench_meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    bench_meter *m = ud;
+
+    if (new_size == 0) {
+        free(ptr);
+        m->live -= old_size;
+        return NULL;
+    }
+    ptr = realloc(ptr, new_size);
+    if (ptr != NULL) {
+        m->live = m->live - old_size + new_size;
+        if (m->live > m->peak)
+            m->peak = m->live;
+    }
+    return ptr;
+}
+
 size_t bench_peak_rss(void)
 {
     struct rusage ru;

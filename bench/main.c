@@ -6,5 +6,6 @@ int main(void)
     bench_graph();
     bench_tour();
     bench_pebbling();
+    bench_families();
     return 0;
 }

@@ -276,6 +276,13 @@ static void flatten_should_split_pieces_and_measure(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-3, qc_curve_length(&p, 1e-4), qc_curve_length(&p, 1e-3));
     box = qc_curve_bbox(&p, 1e-4);
     TEST_ASSERT_DOUBLE_WITHIN(1e-3, 0.75, box.max.y); /* control points excluded */
+    {   /* qc_curve_measure: both at once, the same values */
+        double len;
+        qc_bbox both;
+        qc_curve_measure(&p, 1e-4, &len, &both);
+        TEST_ASSERT_EQUAL_DOUBLE(qc_curve_length(&p, 1e-4), len);
+        TEST_ASSERT_EQUAL_MEMORY(&box, &both, sizeof box);
+    }
     qc_path_free(&ctx, &p);
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }

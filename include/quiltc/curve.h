@@ -49,6 +49,8 @@ void qc_cubic_split(const qc_vec2 *q, double t, qc_vec2 *l, qc_vec2 *r);
 /* Bounding box of the path's flattened points (control points excluded);
  * all zero for an empty path. tol as for qc_curve_length. */
 qc_bbox qc_curve_bbox(const qc_path *path, double tol);
+/* Both in one walk (as the two calls above give them). */
+void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *box);
 
 #ifdef __cplusplus
 }

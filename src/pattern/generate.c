@@ -196,8 +196,7 @@ static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
     res->stats.points = res->points.n;
     res->stats.edges = res->edges.n;
     res->stats.order = res->order.n;
-    res->stats.length_mm = qc_curve_length(&res->path, STATS_TOL_MM);
-    res->stats.bbox = qc_curve_bbox(&res->path, STATS_TOL_MM);
+    qc_curve_measure(&res->path, STATS_TOL_MM, &res->stats.length_mm, &res->stats.bbox);
     res->stats.pieces = qc_path_pieces(&res->path);
     trace(ctx, "done");
     return QC_OK;
