@@ -321,6 +321,8 @@ static int op_mst(oom_run *r)
     return rc;
 }
 
+static int walk_to_last; /* qc_tree_walk_to the last point instead */
+
 static int op_walk(oom_run *r)
 {
     qc_region reg;
@@ -335,10 +337,14 @@ static int op_walk(oom_run *r)
         rc = qc_mst(&r->ctx, pts.v, pts.n, QC_MST_MODE_DELAUNAY, &e);
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
     arm(r);
-    rc = qc_tree_walk(&r->ctx, pts.v, pts.n, e.e, e.n, 0, &o);
+    rc = walk_to_last ? qc_tree_walk_to(&r->ctx, pts.v, pts.n, e.e, e.n, 0,
+                                        (uint32_t)(pts.n - 1), &o)
+                      : qc_tree_walk(&r->ctx, pts.v, pts.n, e.e, e.n, 0, &o);
     disarm(r);
-    if (rc == QC_OK)
+    if (rc == QC_OK && !walk_to_last)
         TEST_ASSERT_EQUAL_size_t(2 * (pts.n - 1) + 1, o.n);
+    if (rc == QC_OK && walk_to_last)
+        TEST_ASSERT_EQUAL_UINT32(pts.n - 1, o.i[o.n - 1]);
     qc_order_free(&r->ctx, &o);
     qc_edges_free(&r->ctx, &e);
     qc_points_free(&r->ctx, &pts);
@@ -381,6 +387,9 @@ static void test_graph_and_tour_should_survive_every_failed_allocation(void)
     mst_mode = QC_MST_MODE_COMPLETE;
     oom_loop("qc_mst complete", op_mst);
     oom_loop("qc_tree_walk", op_walk);
+    walk_to_last = 1;
+    oom_loop("qc_tree_walk_to", op_walk);
+    walk_to_last = 0;
     tsp_method = QC_TSP_METHOD_GREEDY;
     oom_loop("qc_tsp greedy", op_tsp);
     tsp_method = QC_TSP_METHOD_2OPT;
