@@ -323,6 +323,14 @@ static int ifloat_of(double x, ifloat *f)
     return be != 0x7ff && (be != 0 || (u << 1) == 0);
 }
 
+/* f as an integer times 2^e (e at most f's exponent, within the span). */
+static int64_t ifloat_at(const ifloat *f, int e)
+{
+    int64_t m = f->m == 0 ? 0 : (int64_t)(f->m << (f->e - e));
+
+    return f->neg ? -m : m;
+}
+
 /* a * b as hi * 2^64 + lo. */
 static void mul_64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 {
@@ -364,11 +372,9 @@ int qc__int_span_add(double x, int *lo, int *hi)
 static int64_t int_at(double x, int e)
 {
     ifloat f;
-    int64_t m;
 
     ifloat_of(x, &f);
-    m = f.m == 0 ? 0 : (int64_t)(f.m << (f.e - e));
-    return f.neg ? -m : m;
+    return ifloat_at(&f, e);
 }
 
 void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo)
@@ -381,16 +387,24 @@ void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo)
 static int cmp_len2_int(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d, int *cmp)
 {
     const double v[8] = {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
+    ifloat f[8];
     uint64_t h1, l1, h2, l2;
     int lo = INT_MAX, hi = INT_MIN, i;
 
-    for (i = 0; i < 8; i++)
-        if (!qc__int_span_add(v[i], &lo, &hi))
+    for (i = 0; i < 8; i++) {
+        if (!ifloat_of(v[i], &f[i]))
             return 0;
+        if (f[i].m != 0) {
+            lo = f[i].e < lo ? f[i].e : lo;
+            hi = f[i].e > hi ? f[i].e : hi;
+        }
+    }
     if (hi != INT_MIN && hi - lo > QC__INT_SPAN)
         return 0;
-    qc__len2_int(a, b, lo, &h1, &l1);
-    qc__len2_int(c, d, lo, &h2, &l2);
+    len2_u128(ifloat_at(&f[0], lo) - ifloat_at(&f[2], lo),
+              ifloat_at(&f[1], lo) - ifloat_at(&f[3], lo), &h1, &l1);
+    len2_u128(ifloat_at(&f[4], lo) - ifloat_at(&f[6], lo),
+              ifloat_at(&f[5], lo) - ifloat_at(&f[7], lo), &h2, &l2);
     *cmp = h1 != h2 ? (h1 > h2) - (h1 < h2) : (l1 > l2) - (l1 < l2);
     return 1;
 }
