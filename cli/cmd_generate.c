@@ -126,7 +126,7 @@ static int output_formats(const gen_opts *g, int *fmt)
             return CLI_USAGE;
         }
     }
-    return CLI_OK;
+    return cli_outputs_distinct(g->out, g->nout);
 }
 
 /* Same composition as the web page (wasm/quiltc_wasm.c): generate, then plan. */

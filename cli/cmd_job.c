@@ -150,7 +150,7 @@ static int output_formats(const char *const *outputs, size_t nout, int *formats)
             return CLI_USAGE;
         }
     }
-    return CLI_OK;
+    return cli_outputs_distinct(outputs, nout);
 }
 
 int cmd_job(int argc, char **argv)

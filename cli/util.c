@@ -107,6 +107,10 @@ static char *publish_path(const char *path)
     return p;
 }
 
+/* Temporary names differ per output, so two names for one file
+ * ("x.pat", "./x.pat") never share a temporary. */
+static unsigned temp_seq;
+
 int cli_output_open(cli_output *out, const char *path)
 {
     struct stat st;
@@ -130,7 +134,7 @@ int cli_output_open(cli_output *out, const char *path)
             cli_output_abort(out);
             return -1;
         }
-        sprintf(out->tmp, "%s.tmp.%ld", out->path, (long)getpid());
+        sprintf(out->tmp, "%s.tmp.%ld.%u", out->path, (long)getpid(), ++temp_seq);
         out->f = fopen(out->tmp, "wb");
     }
     if (out->f == NULL) {
@@ -281,6 +285,24 @@ int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *pla
     return cli_output_commit(&out) == 0 ? CLI_OK : CLI_RUNTIME;
 }
 
+int cli_outputs_distinct(const char *const *paths, size_t n)
+{
+    size_t i, j;
+
+    for (i = 0; i < n; i++)
+        for (j = 0; j < i; j++) {
+            struct stat a, b;
+            int same = strcmp(paths[i], paths[j]) == 0 ||
+                       (stat(paths[i], &a) == 0 && stat(paths[j], &b) == 0 &&
+                        a.st_dev == b.st_dev && a.st_ino == b.st_ino && S_ISREG(a.st_mode));
+            if (same) {
+                cli_error("output '%s' is given twice", paths[i]);
+                return CLI_USAGE;
+            }
+        }
+    return CLI_OK;
+}
+
 int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
                     const qc_plan *plan, const qc_io_opts *opts)
 {
@@ -292,6 +314,8 @@ int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, s
         cli_error("at most %lu outputs", (unsigned long)(sizeof out / sizeof out[0]));
         return CLI_USAGE;
     }
+    if (cli_outputs_distinct(paths, n) != CLI_OK)
+        return CLI_USAGE;
     /* every file written and closed under its temporary name first ... */
     for (i = 0; i < n && rc == CLI_OK; i++) {
         int st;
