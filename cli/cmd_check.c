@@ -81,7 +81,7 @@ static int parse(int argc, char **argv, check_opts *o)
     o->units = "in";
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
+    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
         case 'j':
             if (cli_parse_u64(optarg, &o->max_jumps) != 0) {

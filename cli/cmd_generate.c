@@ -60,7 +60,7 @@ static int parse(int argc, char **argv, gen_opts *g)
     }
     optind = 1;
     opterr = 0; /* our own one-line messages */
-    while (rc == CLI_OK && (c = getopt_long(argc, argv, "o:qh", opts, NULL)) != -1) {
+    while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:qh", opts, NULL)) != -1) {
         switch (c) {
         case 'o':
             if (g->nout == MAX_OUTPUTS) {

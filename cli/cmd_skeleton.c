@@ -46,7 +46,7 @@ static int parse(int argc, char **argv, skel_opts *s)
         return CLI_RUNTIME;
     optind = 1;
     opterr = 0; /* our own one-line messages */
-    while (rc == CLI_OK && (c = getopt_long(argc, argv, "o:h", opts, NULL)) != -1) {
+    while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
         if (c == 'o')
             s->out = optarg;
         else if (c == 'p')
