@@ -267,6 +267,56 @@ static void test_dense_comb_is_refused_in_bounded_time(void)
     free(v);
 }
 
+/* Rings given in either direction, islands side by side and holes in an
+ * outer ring: each comes out by its nesting (islands and outers
+ * counter-clockwise, holes clockwise), whatever rings were turned before
+ * it. A fuzz finding: reversing a ring in place left the index's bands
+ * stale, so a later island (two clockwise triangles, the second beside the
+ * first) was taken for a hole. */
+static void test_orientation_does_not_depend_on_earlier_reversals(void)
+{
+    static const qc_vec2 a[3] = {{0, 0}, {11.425571068894483, 19.042618448157469},
+                                 {30.468189517051954, 19.042618448157469}};
+    static const qc_vec2 b[3] = {{0, 1.9042618448157471}, {7.6170473792629885, 26.659665827420461},
+                                 {15.234094758525977, 26.659665827420461}};
+    qc_region r = {0};
+    qc_rng rng;
+    size_t i, j, k;
+    int outer;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, a, 3));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, b, 3));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 0));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, ring_signed_area(&r, 1));
+    qc_region_free(&ctx, &r);
+    qc_rng_seed(&rng, 5);
+    for (outer = 0; outer < 2; outer++) {
+        memset(&r, 0, sizeof r);
+        if (outer)
+            square_ring(&r, -1, -1, 102, (int)qc_rng_below(&rng, 2));
+        for (j = 0; j < 10; j++) /* slanted neighbours, 10 x 10, random directions */
+            for (i = 0; i < 10; i++) {
+                qc_vec2 t[3];
+                t[0] = v2(10.0 * i, 10.0 * j);
+                t[1] = v2(10.0 * i + 9.0, 10.0 * j + 0.5 + 0.4 * (double)(i % 3));
+                t[2] = v2(10.0 * i + 1.0, 10.0 * j + 9.5);
+                if (qc_rng_below(&rng, 2)) {
+                    qc_vec2 x = t[0];
+                    t[0] = t[2];
+                    t[2] = x;
+                }
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, t, 3));
+            }
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+        for (k = 0; k < r.nrings; k++) {
+            int hole = outer && k > 0;
+            TEST_ASSERT_TRUE_MESSAGE((ring_signed_area(&r, k) < 0) == hole, "orientation");
+        }
+        qc_region_free(&ctx, &r);
+    }
+}
+
 /* 900 holes, each given counter-clockwise, become clockwise (depth from the index). */
 static void test_many_holes_are_oriented(void)
 {
@@ -319,6 +369,7 @@ int main(void)
     RUN_TEST(test_index_agrees_with_brute_force);
     RUN_TEST(test_dense_comb_is_refused_in_bounded_time);
     RUN_TEST(test_many_holes_are_oriented);
+    RUN_TEST(test_orientation_does_not_depend_on_earlier_reversals);
     RUN_TEST(test_out_of_memory_is_reported_and_leaks_nothing);
     return UNITY_END();
 }

@@ -199,15 +199,23 @@ static int depth_is_odd(const qc_region *r, const qc__rindex *ix, size_t k)
     return odd;
 }
 
-static void orient_rings(qc_region *r, const qc__rindex *ix)
+/* Every ring's depth is read from the index first: reversing a ring moves
+ * its vertices under the index's edge numbers, so later queries would meet
+ * stale bands. */
+static int orient_rings(qc_ctx *ctx, qc_region *r, const qc__rindex *ix)
 {
+    unsigned char *flip = qc__alloc(ctx, r->nrings);
     size_t k;
 
-    for (k = 0; k < r->nrings; k++) {
-        int want_ccw = !depth_is_odd(r, ix, k);
-        if ((ring_area(r, k) > 0) != want_ccw)
+    if (flip == NULL)
+        return QC_ENOMEM;
+    for (k = 0; k < r->nrings; k++)
+        flip[k] = (ring_area(r, k) > 0) != !depth_is_odd(r, ix, k);
+    for (k = 0; k < r->nrings; k++)
+        if (flip[k])
             reverse_ring(r, k);
-    }
+    qc__free(ctx, flip, r->nrings);
+    return QC_OK;
 }
 
 int qc_region_normalize(qc_ctx *ctx, qc_region *r)
@@ -242,7 +250,7 @@ int qc_region_normalize(qc_ctx *ctx, qc_region *r)
         return rc;
     rc = check_crossings(ctx, r, &ix);
     if (rc == QC_OK)
-        orient_rings(r, &ix);
+        rc = orient_rings(ctx, r, &ix);
     qc__rindex_free(ctx, &ix);
     if (rc < 0)
         return rc;

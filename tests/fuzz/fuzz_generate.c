@@ -51,6 +51,12 @@ static int make_region(qc_ctx *ctx, fuzz_in *in, qc_region *r)
                 v[i].x = (double)(fuzz_u8(in) % 17) * w / 16.0;
                 v[i].y = (double)(fuzz_u8(in) % 17) * w / 16.0;
             }
+            if (getenv("QC_FUZZ_VERBOSE") != NULL) {
+                fprintf(stderr, "  input ring %u:", k);
+                for (i = 0; i < n; i++)
+                    fprintf(stderr, " (%.17g, %.17g)", v[i].x, v[i].y);
+                fputc('\n', stderr);
+            }
             rc = qc_region_add_ring(ctx, r, v, n);
             if (rc < 0)
                 return rc;
@@ -232,6 +238,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (getenv("QC_FUZZ_VERBOSE") != NULL) { /* what a reproducer asks for */
         fprintf(stderr, "region: %lu rings, %lu vertices, area %g mm2\n",
                 (unsigned long)region.nrings, (unsigned long)region.nv, qc_region_area(&region));
+        for (k = 0; k < region.nrings; k++) {
+            size_t v;
+            fprintf(stderr, "  ring %lu:", (unsigned long)k);
+            for (v = k ? region.ring_end[k - 1] : 0; v < region.ring_end[k]; v++)
+                fprintf(stderr, " (%.17g, %.17g)", region.v[v].x, region.v[v].y);
+            fputc('\n', stderr);
+        }
         for (k = 0; k < nrows; k++)
             if ((p.given >> k) & 1)
                 fprintf(stderr, "  %s = %.17g\n", table[k].name, qc_params_get(&p, &table[k]));
