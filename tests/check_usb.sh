@@ -301,6 +301,39 @@ t_udev_rule() {
         "$QC" udev-rule 0bad:1001 --group 'a"b'
 }
 
+# The kernel-driver and busy cases through tests/usb/libusb_shim.c (what
+# umockdev cannot replay), preloaded after umockdev's own library.
+shim() {
+    cc -shared -fPIC -o "$WORK/shim.so" "$U/libusb_shim.c" $(pkg-config --cflags libusb-1.0) -ldl
+}
+
+t_interface_busy() {
+    shim || return 1
+    fails 1 "interface 0 of 0bad:1001 at 1-2 is busy: another program or driver holds it" \
+        mock printer -- sh -c "$(cat <<'SH'
+QC_SHIM=busy LD_PRELOAD="$LD_PRELOAD:$0/shim.so" exec "$@"
+SH
+)" "$WORK" "$QC" upload "$PAT" --device 0bad:1001
+}
+
+t_kernel_driver_detached_and_restored() {
+    shim && rm -f shim.log && replay pcap printer-ok p.pcap FILE="$PAT" CHUNK=32 || return 1
+    ok '^sent 121 bytes to 0bad:1001 at 1-2 (interface 0, printer, Long Arm 9)$' \
+        mock printer --pcap "$SYS/1-2=p.pcap" -- sh -c "$(cat <<'SH'
+QC_SHIM=driver QC_SHIM_LOG=$0/shim.log LD_PRELOAD="$LD_PRELOAD:$0/shim.so" exec "$@"
+SH
+)" "$WORK" "$QC" upload "$PAT" --device 0bad:1001 --chunk 32 || return 1
+    [ "$(cat "$WORK/shim.log")" = "$(printf 'detach 0\nattach 0')" ] ||
+        { echo "driver calls: $(cat "$WORK/shim.log")"; return 1; }
+    rm -f "$WORK/shim.log"
+    fails 1 "interface 0 of 0bad:1001 at 1-2 is busy: another program or driver holds it" \
+        mock printer -- sh -c "$(cat <<'SH'
+QC_SHIM=stuck QC_SHIM_LOG=$0/shim.log LD_PRELOAD="$LD_PRELOAD:$0/shim.so" exec "$@"
+SH
+)" "$WORK" "$QC" upload "$PAT" --device 0bad:1001 || return 1
+    [ "$(cat "$WORK/shim.log")" = "detach 0" ] || { echo "driver calls: $(cat "$WORK/shim.log")"; return 1; }
+}
+
 check devices_lists_printer_and_raw t_devices
 check devices_none t_devices_none
 check printer_takes_whole_pat t_printer_pat
@@ -317,6 +350,8 @@ check no_device t_no_device
 check two_matching_devices t_two_devices
 check no_bulk_out_endpoint t_no_bulk_out
 check access_denied t_access_denied
+check interface_busy t_interface_busy
+check kernel_driver_detached_and_restored t_kernel_driver_detached_and_restored
 check ctrl_c t_ctrl_c
 check progress_bar_on_tty t_progress_bar
 check quiet t_quiet
