@@ -230,9 +230,13 @@ void cli_pattern_help(FILE *f, unsigned families)
         fprintf(f, "  %-24s %s", name, t[i].help);
         if (t[i].choices != NULL)
             fprintf(f, " (%s)", t[i].choices);
+        else if (strstr(t[i].help, "default") != NULL || t[i].type == QC_PARAM_SEED)
+            ; /* the help says it */
         else if (t[i].def_per_spacing > 0)
             fprintf(f, " (default %g d)", t[i].def_per_spacing);
-        else if (t[i].type != QC_PARAM_SEED)
+        else if (strcmp(t[i].unit, "count") == 0 || strcmp(t[i].unit, "ratio") == 0)
+            fprintf(f, " (default %g)", t[i].def);
+        else
             fprintf(f, " (default %g%s%s)", t[i].def, t[i].unit[0] ? " " : "", t[i].unit);
         fputc('\n', f);
     }

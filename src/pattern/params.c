@@ -20,7 +20,7 @@ static const char family_names[] =
     "vine|branching|wanderer|pebbling|packing|fill|stipple|echo|spiral";
 
 static const qc_param_info table[] = {
-    {"family", "pattern family", "", QC_PARAM_ENUM, family_names,
+    {"family", "pattern family (default stipple)", "", QC_PARAM_ENUM, family_names,
      1, QC_FAMILY_COUNT - 1, QC_FAMILY_STIPPLE, 0, F_ALL, OFF(family)},
     {"points", "point distribution (default: snub for pebbling/packing, else poisson)", "",
      QC_PARAM_ENUM, "triangle|square|hex|snub|poisson|given", 1, 6, 0, 0, F_POINTS, OFF(points)},
