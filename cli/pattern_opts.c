@@ -242,6 +242,28 @@ void cli_pattern_help(FILE *f, unsigned families)
     }
 }
 
+/* The --points file, scaled like every bare number: in --units. */
+static int load_points(qc_ctx *ctx, const cli_pattern_opts *o, qc_points *given)
+{
+    char *buf;
+    size_t len, i;
+    int st;
+
+    if (cli_read_file(o->points_file, (size_t)256 << 20, &buf, &len) != 0)
+        return CLI_RUNTIME;
+    st = qc_io_read_points(ctx, buf, len, given);
+    free(buf);
+    if (st < 0) {
+        cli_error("%s: %s", o->points_file, qc_errmsg(ctx));
+        return CLI_RUNTIME;
+    }
+    for (i = 0; i < given->n; i++) {
+        given->v[i].x *= o->mm_per_unit;
+        given->v[i].y *= o->mm_per_unit;
+    }
+    return CLI_OK;
+}
+
 int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
                      qc_points *given)
 {
@@ -249,25 +271,5 @@ int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
 
     if (rc != CLI_OK || o->points_file == NULL)
         return rc;
-    {
-        char *buf;
-        size_t len;
-        int st;
-
-        if (cli_read_file(o->points_file, (size_t)256 << 20, &buf, &len) != 0)
-            return CLI_RUNTIME;
-        size_t i;
-
-        st = qc_io_read_points(ctx, buf, len, given);
-        free(buf);
-        if (st < 0) {
-            cli_error("%s: %s", o->points_file, qc_errmsg(ctx));
-            return CLI_RUNTIME;
-        }
-        for (i = 0; i < given->n; i++) { /* like every bare number: in --units */
-            given->v[i].x *= o->mm_per_unit;
-            given->v[i].y *= o->mm_per_unit;
-        }
-    }
-    return CLI_OK;
+    return load_points(ctx, o, given);
 }
