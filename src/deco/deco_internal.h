@@ -172,7 +172,7 @@ QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint3
 QC__HIDDEN uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne,
                                        qc_vec2 a);
 
-/* ---- distance grids and offset rings (offset.c) ---- */
+/* ---- distance grids and offset rings (sdf.c, sdf_rings.c, ring_repair.c) ---- */
 
 /* Distance to a region's boundary sampled on a grid: node (i, j) at
  * (x0 + i h, y0 + j h), v > 0 inside, < 0 outside; seg: each node's
@@ -203,6 +203,10 @@ QC__HIDDEN double qc__sdf_at(const qc__sdf *s, qc_vec2 p);
  * true nearest edge, which is all but contrived cases); grad (may be NULL)
  * receives the unit gradient. */
 QC__HIDDEN double qc__sdf_exact(const qc__sdf *s, qc_vec2 p, qc_vec2 *grad);
+/* The same, also giving the nearest edge (*edge) and whether the nearest
+ * point is inside it (*flat: the distance is to a line there). */
+QC__HIDDEN double qc__sdf_exact_full(const qc__sdf *s, qc_vec2 p, qc_vec2 *grad, uint32_t *edge,
+                                     int *flat);
 /* Grid node of largest value (ties: the lowest index) and its position. */
 QC__HIDDEN double qc__sdf_max(const qc__sdf *s, qc_vec2 *at);
 
@@ -221,6 +225,11 @@ typedef struct qc__rings {
 QC__HIDDEN int qc__sdf_rings(qc_ctx *ctx, const qc__sdf *s, double l0, double step,
                              size_t max_levels, qc__rings *out);
 QC__HIDDEN void qc__rings_free(qc_ctx *ctx, qc__rings *r);
+/* ring_repair.c, on the rings from index first on (h: the grid step):
+ * drops small islands that cross a larger ring of their level or
+ * themselves; undoes crossings within a level by rejoining segments. */
+QC__HIDDEN void qc__rings_prune_islands(qc__rings *r, size_t first, double h);
+QC__HIDDEN int qc__rings_untangle(qc_ctx *ctx, qc__rings *r, size_t first, double h);
 
 /* ---- rings joined into one path (echo_join.c) ---- */
 
