@@ -46,6 +46,9 @@ QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 
+/* A point from its coordinates (a C99 compound literal). */
+#define QC__V2(x, y) ((qc_vec2){(x), (y)})
+
 /* Returns the status if it is an error. */
 #define QC__TRY(expr)            \
     do {                         \

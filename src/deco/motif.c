@@ -40,23 +40,15 @@ const char *qc_motif_builtin_name(size_t i)
     return i < NLIB ? lib[i].name : NULL;
 }
 
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
-}
-
 static qc_vec2 dir(double deg)
 {
     double a = deg * (QC_PI / 180);
-    return v2(qc_cos(a), qc_sin(a));
+    return QC__V2(qc_cos(a), qc_sin(a));
 }
 
 static qc_vec2 add(qc_vec2 a, qc_vec2 b, double k)
 {
-    return v2(a.x + k * b.x, a.y + k * b.y);
+    return QC__V2(a.x + k * b.x, a.y + k * b.y);
 }
 
 /* A drawing pen: the first error sticks. */
@@ -69,13 +61,13 @@ typedef struct pen {
 static void M(pen *g, double x, double y)
 {
     if (g->rc == QC_OK)
-        g->rc = qc_path_move_to(g->ctx, g->p, v2(x, y));
+        g->rc = qc_path_move_to(g->ctx, g->p, QC__V2(x, y));
 }
 
 static void L(pen *g, double x, double y)
 {
     if (g->rc == QC_OK)
-        g->rc = qc_path_line_to(g->ctx, g->p, v2(x, y));
+        g->rc = qc_path_line_to(g->ctx, g->p, QC__V2(x, y));
 }
 
 static void Cv(pen *g, qc_vec2 a, qc_vec2 b, qc_vec2 c)
@@ -86,7 +78,7 @@ static void Cv(pen *g, qc_vec2 a, qc_vec2 b, qc_vec2 c)
 
 static void C(pen *g, double x1, double y1, double x2, double y2, double x, double y)
 {
-    Cv(g, v2(x1, y1), v2(x2, y2), v2(x, y));
+    Cv(g, QC__V2(x1, y1), QC__V2(x2, y2), QC__V2(x, y));
 }
 
 /* Point and derivative of a spiral around c: radius r0 + dr * t, angle a0 + da * t. */
@@ -94,7 +86,7 @@ static void spiral_at(qc_vec2 c, double r0, double dr, double a0, double da, dou
                       qc_vec2 *p, qc_vec2 *d)
 {
     double r = r0 + dr * t, a = a0 + da * t, co = qc_cos(a), si = qc_sin(a);
-    *p = v2(c.x + r * co, c.y + r * si);
+    *p = QC__V2(c.x + r * co, c.y + r * si);
     d->x = dr * co - r * da * si;
     d->y = dr * si + r * da * co;
 }
@@ -142,16 +134,16 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         L(g, 0, 0.5);
         for (k = 0; k < 5; k++) {
             double a = -54 + 72 * k;
-            qc_vec2 c = v2(0, 0.5);
+            qc_vec2 c = QC__V2(0, 0.5);
             Cv(g, add(c, dir(a - 28), 1.25), add(c, dir(a + 28), 1.25), c);
         }
         L(g, 0, 0);
         break;
     case M_SPIRAL: /* in along one arm, out along the other, ends where it began */
         M(g, 0, 0);
-        spiral(g, v2(0, 1), 1, -0.8, -QC_PI / 2, 3 * QC_PI, 8);
+        spiral(g, QC__V2(0, 1), 1, -0.8, -QC_PI / 2, 3 * QC_PI, 8);
         L(g, 0.2 * qc_cos(QC_PI / 2), 1 + 0.5);
-        spiral(g, v2(0, 1), 0.5, 0.5, QC_PI / 2, -3 * QC_PI, 8);
+        spiral(g, QC__V2(0, 1), 0.5, 0.5, QC_PI / 2, -3 * QC_PI, 8);
         break;
     case M_LOOP:
         M(g, 0, 0); /* up, round the top, crossing back down to the start */
@@ -165,16 +157,16 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         C(g, -0.65, 1.35, -0.6, 0.5, 0, 0);
         break;
     case M_STAR: { /* a stem, then five points with gently bowed edges */
-        qc_vec2 c = v2(0, 1.1), prev = add(c, dir(-90), 0.4);
+        qc_vec2 c = QC__V2(0, 1.1), prev = add(c, dir(-90), 0.4);
         M(g, 0, 0);
         L(g, prev.x, prev.y);
         for (k = 1; k <= 10; k++) {
             qc_vec2 q = add(c, dir(-90 + 36 * k), (k & 1) ? 1.0 : 0.4);
-            qc_vec2 m = v2((prev.x + q.x) / 2, (prev.y + q.y) / 2);
-            qc_vec2 a = add(prev, v2(q.x - prev.x, q.y - prev.y), 1.0 / 3);
-            qc_vec2 bb = add(prev, v2(q.x - prev.x, q.y - prev.y), 2.0 / 3);
-            a = add(a, v2(c.x - m.x, c.y - m.y), 0.15);
-            bb = add(bb, v2(c.x - m.x, c.y - m.y), 0.15);
+            qc_vec2 m = QC__V2((prev.x + q.x) / 2, (prev.y + q.y) / 2);
+            qc_vec2 a = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 1.0 / 3);
+            qc_vec2 bb = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 2.0 / 3);
+            a = add(a, QC__V2(c.x - m.x, c.y - m.y), 0.15);
+            bb = add(bb, QC__V2(c.x - m.x, c.y - m.y), 0.15);
             Cv(g, a, bb, q);
             prev = q;
         }
@@ -193,23 +185,23 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         break;
     }
     case W_LOOP: { /* in from the lower left, over the top, crossing, out lower right */
-        qc_vec2 s = v2(-0.3, -0.55), t = v2(0.3, -0.55), top = v2(0, 1);
+        qc_vec2 s = QC__V2(-0.3, -0.55), t = QC__V2(0.3, -0.55), top = QC__V2(0, 1);
         M(g, s.x, s.y);
-        Cv(g, add(s, ind, -1.3), v2(0.9, 1), top);
-        Cv(g, v2(-0.9, 1), add(t, outd, -1.3), t);
+        Cv(g, add(s, ind, -1.3), QC__V2(0.9, 1), top);
+        Cv(g, QC__V2(-0.9, 1), add(t, outd, -1.3), t);
         break;
     }
     case W_HEART: { /* the point at the bottom, where both legs meet */
-        qc_vec2 bt = v2(0, -0.8);
+        qc_vec2 bt = QC__V2(0, -0.8);
         M(g, bt.x, bt.y);
-        Cv(g, add(bt, ind, -0.7), v2(0.8, 0.8), v2(0.45, 0.8));
+        Cv(g, add(bt, ind, -0.7), QC__V2(0.8, 0.8), QC__V2(0.45, 0.8));
         C(g, 0.2, 0.8, 0.05, 0.65, 0, 0.45);
         C(g, -0.05, 0.65, -0.2, 0.8, -0.45, 0.8);
-        Cv(g, v2(-0.8, 0.8), add(bt, outd, -0.7), bt);
+        Cv(g, QC__V2(-0.8, 0.8), add(bt, outd, -0.7), bt);
         break;
     }
     case W_SWIRL: { /* in from the left leg, curl inward, swing out to the right leg */
-        qc_vec2 s = v2(-0.25, -0.6), t = v2(0.25, -0.6), c = v2(0, 0.3);
+        qc_vec2 s = QC__V2(-0.25, -0.6), t = QC__V2(0.25, -0.6), c = QC__V2(0, 0.3);
         qc_vec2 p0, d0;
         spiral_at(c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 0, &p0, &d0);
         M(g, s.x, s.y);

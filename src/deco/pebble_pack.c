@@ -52,14 +52,6 @@ void qc__pebbles_free(qc_ctx *ctx, qc__pebbles *pb)
     memset(pb, 0, sizeof *pb);
 }
 
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
-}
-
 static double dist(qc_vec2 a, qc_vec2 b)
 {
     double dx = a.x - b.x, dy = a.y - b.y;
@@ -180,7 +172,7 @@ static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_
                   uint32_t ex1)
 {
     const qc__pebbles *pb = P->pb;
-    qc_vec2 xf = v2(x0.x + u.x * cap, x0.y + u.y * cap);
+    qc_vec2 xf = QC__V2(x0.x + u.x * cap, x0.y + u.y * cap);
     double best = cap;
     uint32_t r[4], cx, cy;
 
@@ -245,7 +237,7 @@ static uint32_t nearest(pack *P, qc_vec2 x)
 static qc_vec2 unit_from(qc_vec2 a, qc_vec2 b)
 {
     double l = dist(a, b);
-    return l > 0 ? v2((b.x - a.x) / l, (b.y - a.y) / l) : v2(1, 0);
+    return l > 0 ? QC__V2((b.x - a.x) / l, (b.y - a.y) / l) : QC__V2(1, 0);
 }
 
 #define NEAR 6
@@ -292,11 +284,11 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
     double half;
     uint32_t r[4], cx, cy;
 
-    p = v2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
-    q = v2(x.x - u.x * c, x.y - u.y * c);
+    p = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+    q = QC__V2(x.x - u.x * c, x.y - u.y * c);
     if (qc__pbound_crossings(P->b, p, q) != 0)
         return 0;
-    mid = v2(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
+    mid = QC__V2(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
     half = 0.5 * dist(p, q);
     cell_box(P, mid, half + P->rmax, r);
     for (cy = r[1]; cy <= r[3]; cy++)
@@ -363,14 +355,14 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         return 0;
     }
     u = unit_from(pb->c[a], x);
-    x0 = v2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
+    x0 = QC__V2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
     if (pb->k < 1 && !same_side(P, pb->c[a], x0))
         x0 = pb->c[a]; /* overgrown parent: no room on this side */
     if (x0.x != pb->c[a].x || x0.y != pb->c[a].y) {
         /* step 3: a filler tangent to both */
         if (gap / 2 >= pb->r_min &&
             ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
-            uint32_t f = place(P, v2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
+            uint32_t f = place(P, QC__V2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
                                QC__PEB_NONE, QC__PEB_FILLER);
             *anchor = place(P, x, c, f, m, 0);
             return 0;
@@ -378,7 +370,7 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         /* else slide towards the parent */
         s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
         if (s >= pb->r_min) {
-            *anchor = place(P, v2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
+            *anchor = place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
             return 0;
         }
     }
@@ -392,7 +384,7 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
             if (b == a)
                 continue;
             u = unit_from(pb->c[b], x);
-            x0 = v2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+            x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
             if (pb->k < 1 && !same_side(P, pb->c[b], x0))
                 continue;
             s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
@@ -403,8 +395,8 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         }
         if (bs >= pb->r_min) {
             u = unit_from(pb->c[best], x);
-            x0 = v2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
-            *anchor = place(P, v2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
+            x0 = QC__V2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
+            *anchor = place(P, QC__V2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
             return 0;
         }
         /* no tangent way in: a straight stitch (sewn there and back) from
@@ -511,13 +503,13 @@ static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, 
 
     if (!(D > 0))
         return 0;
-    e = v2((ck.x - cj.x) / D, (ck.y - cj.y) / D);
+    e = QC__V2((ck.x - cj.x) / D, (ck.y - cj.y) / D);
     along = (D * D + a * a - b * b) / (2 * D);
     h2 = a * a - along * along;
     if (h2 < 0)
         return 0;
     h2 = sqrt(h2) * s;
-    *out = v2(cj.x + e.x * along - e.y * h2, cj.y + e.y * along + e.x * h2);
+    *out = QC__V2(cj.x + e.x * along - e.y * h2, cj.y + e.y * along + e.x * h2);
     return 1;
 }
 
@@ -717,7 +709,7 @@ static int grow_leaf(pack *P, uint32_t i, uint32_t j)
         s = MOVE_MAX * P->d;
     if (!(s > pb->r[i] * 1e-9))
         return 0;
-    move_to(P, i, v2(x.x + u.x * s, x.y + u.y * s), pb->r[i] + s);
+    move_to(P, i, QC__V2(x.x + u.x * s, x.y + u.y * s), pb->r[i] + s);
     return 1;
 }
 
@@ -885,128 +877,4 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
     if (rc != QC_OK)
         qc__pebbles_free(ctx, pb);
     return rc;
-}
-
-/* ---- after the run ---- */
-
-typedef struct kid_key {
-    uint32_t parent, kid;
-    double key;
-} kid_key;
-
-static int cmp_kid(const void *pa, const void *pb)
-{
-    const kid_key *a = pa, *b = pb;
-
-    if (a->parent != b->parent)
-        return a->parent < b->parent ? -1 : 1;
-    if (a->key != b->key)
-        return a->key < b->key ? -1 : 1;
-    return a->kid < b->kid ? -1 : a->kid > b->kid;
-}
-
-static double angle_of(qc_vec2 from, qc_vec2 to)
-{
-    return qc_atan2(to.y - from.y, to.x - from.x);
-}
-
-int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_out,
-                         uint32_t **kids_out, double *start_angle)
-{
-    size_t n = pb->n, i, m = 0, g = 0;
-    uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
-    uint32_t *kids = qc__alloc_array(ctx, n, sizeof *kids);
-    kid_key *keys = qc__alloc_array(ctx, n, sizeof *keys);
-    double gap = -1, a0 = -QC_PI / 2;
-
-    *first_out = NULL;
-    *kids_out = NULL;
-    if (first == NULL || kids == NULL || keys == NULL) {
-        qc__free(ctx, first, (n + 1) * sizeof *first);
-        qc__free(ctx, kids, n * sizeof *kids);
-        qc__free(ctx, keys, n * sizeof *keys);
-        return QC_ENOMEM;
-    }
-    for (i = 0; i < n; i++) {
-        uint32_t p = pb->parent[i];
-        double entry, k;
-        if (p == QC__PEB_NONE)
-            continue;
-        /* counter-clockwise from where p's own parent comes in (root: +x) */
-        entry = pb->parent[p] == QC__PEB_NONE ? 0 : angle_of(pb->c[p], pb->c[pb->parent[p]]);
-        k = angle_of(pb->c[p], pb->c[i]) - entry;
-        while (k <= 0)
-            k += 2 * QC_PI;
-        while (k > 2 * QC_PI)
-            k -= 2 * QC_PI;
-        keys[m].parent = p;
-        keys[m].kid = (uint32_t)i;
-        keys[m].key = k;
-        m++;
-    }
-    if (m > 1)
-        qsort(keys, m, sizeof *keys, cmp_kid);
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < m; i++) {
-        kids[i] = keys[i].kid;
-        first[keys[i].parent + 1]++;
-    }
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
-    /* the root starts in the middle of the widest gap between its children,
-     * and meets them counter-clockwise from there */
-    for (i = first[0]; i < first[1]; i++) {
-        double k0 = keys[i].key, k1 = i + 1 < first[1] ? keys[i + 1].key
-                                                       : keys[first[0]].key + 2 * QC_PI;
-        if (k1 - k0 > gap) {
-            gap = k1 - k0;
-            a0 = 0.5 * (k0 + k1);
-            g = i + 1 - first[0];
-        }
-    }
-    for (i = first[0]; i < first[1]; i++) /* rotate: the gap's far side first */
-        kids[i] = keys[first[0] + (i - first[0] + g) % (first[1] - first[0])].kid;
-    *start_angle = a0;
-    qc__free(ctx, keys, n * sizeof *keys);
-    *first_out = first;
-    *kids_out = kids;
-    return QC_OK;
-}
-
-/* Fraction of the disk (c, r) inside the region (c inside), from 64 points. */
-static double inside_fraction(qc__pbound *b, qc_vec2 c, double r)
-{
-    int i, in = 0;
-
-    for (i = 0; i < 64; i++) { /* a sunflower: even over the disk */
-        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332;
-        qc_vec2 q = v2(c.x + rr * qc_cos(a), c.y + rr * qc_sin(a));
-        in += (qc__pbound_crossings(b, c, q) & 1) == 0;
-    }
-    return in / 64.0;
-}
-
-int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound *b, qc_stats *st)
-{
-    size_t i, under = 0;
-    double lo = HUGE_VAL, hi = 0, sum = 0, area = 0, ra = qc_region_area(b->region);
-
-    (void)ctx;
-    for (i = 0; i < pb->n; i++) {
-        double r = pb->r[i], a = QC_PI * r * r;
-        lo = fmin(lo, r);
-        hi = fmax(hi, r);
-        sum += r;
-        under += pb->contacts[i] < 3;
-        if (pb->k < 1 && qc__pbound_dist(b, pb->c[i], r) < r)
-            a *= inside_fraction(b, pb->c[i], r);
-        area += a;
-    }
-    st->pebbles += pb->n;
-    st->pebbles_under3 += under;
-    st->radius_min = pb->n ? lo : 0;
-    st->radius_max = hi;
-    st->radius_mean = pb->n ? sum / (double)pb->n : 0;
-    st->coverage = ra > 0 ? fmin(1, area / ra) : 0;
-    return QC_OK;
 }

@@ -196,15 +196,6 @@ void qc__svg_sincos_deg(double deg, double *s, double *c)
     *c = qc_cos(deg * (QC_PI / 180.0));
 }
 
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-
-    p.x = x;
-    p.y = y;
-    return p;
-}
-
 int qc__svg_arc_to(qc_ctx *ctx, qc_path *out, qc_vec2 p0, double rx, double ry,
                    double phi_deg, int large, int sweep, qc_vec2 p1)
 {
@@ -272,7 +263,7 @@ int qc__svg_arc_to(qc_ctx *ctx, qc_path *out, qc_vec2 p0, double rx, double ry,
         a[2][0] = c2;
         a[2][1] = s2;
         for (j = 0; j < 3; j++)
-            q[j] = v2(cx + rx * cs * a[j][0] - ry * sn * a[j][1],
+            q[j] = QC__V2(cx + rx * cs * a[j][0] - ry * sn * a[j][1],
                       cy + rx * sn * a[j][0] + ry * cs * a[j][1]);
         if (i == segs - 1)
             q[2] = p1; /* land exactly on the end point */
@@ -360,8 +351,8 @@ static int quad(pstate *p, qc_vec2 c, qc_vec2 q)
 {
     qc_vec2 c1, c2;
 
-    c1 = v2(p->cur.x + 2.0 / 3.0 * (c.x - p->cur.x), p->cur.y + 2.0 / 3.0 * (c.y - p->cur.y));
-    c2 = v2(q.x + 2.0 / 3.0 * (c.x - q.x), q.y + 2.0 / 3.0 * (c.y - q.y));
+    c1 = QC__V2(p->cur.x + 2.0 / 3.0 * (c.x - p->cur.x), p->cur.y + 2.0 / 3.0 * (c.y - p->cur.y));
+    c2 = QC__V2(q.x + 2.0 / 3.0 * (c.x - q.x), q.y + 2.0 / 3.0 * (c.y - q.y));
     QC__TRY(cubic(p, c1, c2, q));
     p->ctrl = c;
     p->prev = 'Q';
@@ -404,37 +395,37 @@ static int apply(pstate *p, char cmd, const double a[7])
 
     switch (up) {
     case 'M':
-        p->start = p->cur = v2(ox + a[0], oy + a[1]);
+        p->start = p->cur = QC__V2(ox + a[0], oy + a[1]);
         p->pending = 1;
         p->prev = 0;
         return QC_OK;
     case 'L':
-        return line(p, v2(ox + a[0], oy + a[1]));
+        return line(p, QC__V2(ox + a[0], oy + a[1]));
     case 'H':
-        return line(p, v2(ox + a[0], p->cur.y));
+        return line(p, QC__V2(ox + a[0], p->cur.y));
     case 'V':
-        return line(p, v2(p->cur.x, oy + a[0]));
+        return line(p, QC__V2(p->cur.x, oy + a[0]));
     case 'C':
-        return cubic(p, v2(ox + a[0], oy + a[1]), v2(ox + a[2], oy + a[3]),
-                     v2(ox + a[4], oy + a[5]));
+        return cubic(p, QC__V2(ox + a[0], oy + a[1]), QC__V2(ox + a[2], oy + a[3]),
+                     QC__V2(ox + a[4], oy + a[5]));
     case 'S': {
         qc_vec2 c1 = p->cur;
 
         if (p->prev == 'C')
-            c1 = v2(2 * p->cur.x - p->ctrl.x, 2 * p->cur.y - p->ctrl.y);
-        return cubic(p, c1, v2(ox + a[0], oy + a[1]), v2(ox + a[2], oy + a[3]));
+            c1 = QC__V2(2 * p->cur.x - p->ctrl.x, 2 * p->cur.y - p->ctrl.y);
+        return cubic(p, c1, QC__V2(ox + a[0], oy + a[1]), QC__V2(ox + a[2], oy + a[3]));
     }
     case 'Q':
-        return quad(p, v2(ox + a[0], oy + a[1]), v2(ox + a[2], oy + a[3]));
+        return quad(p, QC__V2(ox + a[0], oy + a[1]), QC__V2(ox + a[2], oy + a[3]));
     case 'T': {
         qc_vec2 c = p->cur;
 
         if (p->prev == 'Q')
-            c = v2(2 * p->cur.x - p->ctrl.x, 2 * p->cur.y - p->ctrl.y);
-        return quad(p, c, v2(ox + a[0], oy + a[1]));
+            c = QC__V2(2 * p->cur.x - p->ctrl.x, 2 * p->cur.y - p->ctrl.y);
+        return quad(p, c, QC__V2(ox + a[0], oy + a[1]));
     }
     case 'A': {
-        qc_vec2 q = v2(ox + a[5], oy + a[6]);
+        qc_vec2 q = QC__V2(ox + a[5], oy + a[6]);
 
         QC__TRY(begin(p));
         QC__TRY(qc__svg_arc_to(p->w->ctx, p->out, p->cur, a[0], a[1], a[2], a[3] != 0,

@@ -229,29 +229,20 @@ static int length(walker *k, const char *name, int axis, double *v, int *given)
     return qc__svg_length(&k->w, a->value, a->value_len, axis, k->vp_w, k->vp_h, v);
 }
 
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-
-    p.x = x;
-    p.y = y;
-    return p;
-}
-
 static int move(walker *k, double x, double y)
 {
-    return qc_path_move_to(k->ctx, &k->shape, v2(x, y));
+    return qc_path_move_to(k->ctx, &k->shape, QC__V2(x, y));
 }
 
 static int line(walker *k, double x, double y)
 {
-    return qc_path_line_to(k->ctx, &k->shape, v2(x, y));
+    return qc_path_line_to(k->ctx, &k->shape, QC__V2(x, y));
 }
 
 /* Quarter arcs of an ellipse from (x0, y0) to (x1, y1), sweep positive. */
 static int quarter(walker *k, double x0, double y0, double rx, double ry, double x1, double y1)
 {
-    return qc__svg_arc_to(k->ctx, &k->shape, v2(x0, y0), rx, ry, 0, 0, 1, v2(x1, y1));
+    return qc__svg_arc_to(k->ctx, &k->shape, QC__V2(x0, y0), rx, ry, 0, 0, 1, QC__V2(x1, y1));
 }
 
 static int rect(walker *k)
@@ -369,7 +360,7 @@ static int poly(walker *k, int closed)
             return qc__svg_syntax(&k->w, s, n, at, "expected a number");
         QC__TRY(qc__svg_check_number(&k->w, xy[count % 2], s, n, at));
         if (count % 2 == 1) {
-            last = v2(xy[0], xy[1]);
+            last = QC__V2(xy[0], xy[1]);
             if (count == 1) {
                 first = last;
                 QC__TRY(move(k, xy[0], xy[1]));
