@@ -598,12 +598,31 @@ static void mst_should_order_lengths_exactly(void)
     TEST_ASSERT_EQUAL_UINT32(1, b.e[1].b);
     qc_edges_free(&ctx, &b);
     mst_check(p, 3);
+    {   /* a tiny and a unit component in one length: 7e-184^2 underflows
+         * beside 1, yet 0-4 (7e-184, 1) is shorter than 0-1 (7e-180 -
+         * 7e-184, 1); a fuzz finding where the modes chose differently */
+        qc_vec2 q[5];
+        q[0] = v2(7e-184, 2);
+        q[1] = v2(7e-180, 1);
+        q[2] = v2(117e-184, 2);
+        q[3] = v2(7e-180, 1);
+        q[4] = v2(0, 1);
+        TEST_ASSERT_EQUAL_INT(-1, qc__cmp_len2(q[0], q[4], q[0], q[1]));
+        TEST_ASSERT_EQUAL_INT(1, qc__cmp_len2(q[0], q[1], q[0], q[4]));
+        TEST_ASSERT_EQUAL_INT(0, qc__cmp_len2(q[1], q[4], q[3], q[4]));
+        /* subnormals compare exactly too */
+        TEST_ASSERT_EQUAL_INT(-1, qc__cmp_len2(v2(0x1p-1074, 0), v2(0, 0), v2(0x1p-1073, 0),
+                                               v2(0, 0)));
+        TEST_ASSERT_EQUAL_INT(1, qc__cmp_len2(v2(0x1p1000, 0x1p-1074), v2(0, 0),
+                                              v2(0x1p1000, 0), v2(0, 0)));
+        mst_check(q, 5);
+    }
 }
 
-/* The 128-bit integer comparison of squared lengths agrees with the
- * expansion arithmetic on near ties: a lattice's equal edges (a few ulps
- * apart), reflections that tie exactly, and points whose exponents span
- * too far for integers (then both paths are the expansions). */
+/* The 128-bit comparison of squared lengths agrees with the big-integer
+ * one on near ties: a lattice's equal edges (a few ulps apart), reflections
+ * that tie exactly, and points whose exponents span too far for 128 bits
+ * (then both are the big integers). */
 static void cmp_len2_integers_should_match_expansions(void)
 {
     qc_rng r;
@@ -624,7 +643,7 @@ static void cmp_len2_integers_should_match_expansions(void)
         if (i % 7 == 0) /* a tiny coordinate: too wide a span for integers */
             q[2].x = 1e-9 * qc_rng_unit(&r);
         for (k = 0; k < 2; k++) {
-            want = qc__cmp_len2_expansion(q[2 * k], q[1 - k], q[2], q[3]);
+            want = qc__cmp_len2_big(q[2 * k], q[1 - k], q[2], q[3]);
             got = qc__cmp_len2(q[2 * k], q[1 - k], q[2], q[3]);
             TEST_ASSERT_EQUAL_INT(want, got);
             decided += want != 0;

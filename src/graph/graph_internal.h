@@ -29,8 +29,8 @@ QC__HIDDEN int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
 #define QC__INT_SPAN 9
 QC__HIDDEN int qc__int_span_add(double x, int *lo, int *hi);
 QC__HIDDEN void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo);
-/* The same by expansion arithmetic alone (what qc__cmp_len2 falls back to
- * when the coordinates have no common 62-bit integer form); for tests. */
-QC__HIDDEN int qc__cmp_len2_expansion(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
+/* The same in big integers alone (what qc__cmp_len2 falls back to when
+ * the coordinates' exponents span more than QC__INT_SPAN); for tests. */
+QC__HIDDEN int qc__cmp_len2_big(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
 
 #endif
