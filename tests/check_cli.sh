@@ -178,6 +178,24 @@ job_errors() {
 }
 check job_file_errors_name_the_key job_errors
 
+# Names in a job file (region and motif SVGs, point files, listed outputs)
+# are relative to the job file, wherever quiltc runs; -o is relative to here.
+job_relative_names() {
+    d=$(mktemp -d "$WORK/jobrel.XXXXXX") && mkdir "$d/q" "$d/run" || return 1
+    cp "$ROOT/tests/fixtures/svg/heart.svg" "$d/q/block.svg" &&
+        printf '10,10\n30,12\n20,30\n' > "$d/q/pts.csv" &&
+        "$QC" motifs --svg leaf > "$d/q/leaf.svg" || return 1
+    cat > "$d/q/quilt.json" <<'JSON'
+{"units": "mm", "output": ["quilt.pat"],
+ "blocks": [{"region": "block.svg", "family": "branching", "motif": "leaf.svg,heart"},
+            {"region": "rect:40x40", "at": [120, 0], "params": {"points": "pts.csv", "margin": 1}}]}
+JSON
+    (cd "$d/run" && "$QC" job ../q/quilt.json) && [ -s "$d/q/quilt.pat" ] &&
+        [ -z "$(ls -A "$d/run")" ] && "$QC" check --max-jumps 1 "$d/q/quilt.pat" >/dev/null &&
+        (cd "$d/run" && "$QC" job ../q/quilt.json -o here.pat) && [ -s "$d/run/here.pat" ]
+}
+check job_names_are_relative_to_the_job_file job_relative_names
+
 # quiltc check finds each kind of fault in deliberately broken files.
 check_finds() { # FILE PATTERN: exit 1 and a line matching PATTERN
     "$QC" check "$ROOT/tests/bad/pat/$1" --region rect:8x8 --no-crossing > out.txt
