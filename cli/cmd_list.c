@@ -27,6 +27,10 @@ int cmd_list(int argc, char **argv)
     const char *what = argc > 1 ? argv[1] : "";
     size_t i;
 
+    if (argc > 2) {
+        cli_error("list: unexpected argument '%s' (see 'quiltc list --help')", argv[2]);
+        return CLI_USAGE;
+    }
     if (strcmp(what, "families") == 0) {
         for (i = 1; i < QC_FAMILY_COUNT; i++)
             printf("%s\n", qc_family_name((int)i));
