@@ -126,6 +126,10 @@ static int output_formats(const gen_opts *g, int *fmt)
             return CLI_USAGE;
         }
     }
+    if (g->upload != NULL && strcmp(g->out[0], "-") == 0) {
+        cli_error("--upload sends the first output, a file: not -o -");
+        return CLI_USAGE;
+    }
     return cli_outputs_distinct(g->out, g->nout);
 }
 
