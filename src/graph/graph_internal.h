@@ -12,7 +12,11 @@
 QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
                               size_t n, unsigned shift);
 
-/* Checks p[0..n) for NaN/inf and n < 2^31: QC_OK, QC_ERANGE or QC_ELIMIT. */
+/* Checks p[0..n) for NaN/inf, coordinates that are 0 or between
+ * QC__COORD_MIN and QC__COORD_MAX mm in magnitude, and n < 2^31: QC_OK,
+ * QC_ERANGE or QC_ELIMIT. */
+#define QC__COORD_MIN 1e-40
+#define QC__COORD_MAX 1e30
 QC__HIDDEN int qc__check_points(qc_ctx *ctx, const qc_vec2 *p, size_t n,
                                 const char *who);
 

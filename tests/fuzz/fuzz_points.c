@@ -1,7 +1,8 @@
 /* Fuzz target: a CSV or TSPLIB point file (qc_io_read_points); when it holds
  * a few hundred points or fewer, they go through the graph and tour stages
  * (Delaunay, both MST modes, the tree walk, the TSP), which must take any
- * finite set: duplicates, collinear, clustered, huge or tiny coordinates. */
+ * finite set of allowed coordinates (0 or 1e-40 to 1e30 mm in magnitude;
+ * others refused by name): duplicates, collinear, clustered, huge or tiny. */
 #include "fuzz_common.h"
 
 #define STAGE_MAX 300
