@@ -43,6 +43,12 @@ QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
  * formula every stage uses, so their answers agree to the bit. */
 QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
 
+/* The bounding box of p[0..n), n >= 1. */
+QC__HIDDEN qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n);
+/* cell, grown by half until a grid of that cell over box has at most
+ * max_cells cells (bucket grids: about a constant number of items each). */
+QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
+
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 

@@ -143,16 +143,8 @@ static int build_grid(qc_ctx *ctx, joiner *j, double cell)
     qc_bbox box;
     size_t g, x, y, total, ncell;
 
-    box.min = box.max = p[0];
-    for (g = 1; g < j->n; g++) {
-        box.min.x = fmin(box.min.x, p[g].x);
-        box.min.y = fmin(box.min.y, p[g].y);
-        box.max.x = fmax(box.max.x, p[g].x);
-        box.max.y = fmax(box.max.y, p[g].y);
-    }
-    while (((box.max.x - box.min.x) / cell + 1.0) * ((box.max.y - box.min.y) / cell + 1.0) >
-           4.0 * (double)j->n + 64.0)
-        cell *= 1.5;
+    box = qc__points_bbox(p, j->n);
+    cell = qc__fit_cell(box, cell, 4.0 * (double)j->n + 64.0);
     j->cell = cell;
     j->x0 = box.min.x;
     j->y0 = box.min.y;

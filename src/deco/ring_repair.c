@@ -132,16 +132,8 @@ static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n,
     int rc = QC_ENOMEM;
 
     *found = 0;
-    box.min = box.max = p[0];
-    for (i = 1; i < n; i++) {
-        box.min.x = p[i].x < box.min.x ? p[i].x : box.min.x;
-        box.min.y = p[i].y < box.min.y ? p[i].y : box.min.y;
-        box.max.x = p[i].x > box.max.x ? p[i].x : box.max.x;
-        box.max.y = p[i].y > box.max.y ? p[i].y : box.max.y;
-    }
-    while (((box.max.x - box.min.x) / cell + 1.0) * ((box.max.y - box.min.y) / cell + 1.0) >
-           2.0 * (double)n + 64.0)
-        cell *= 1.5;
+    box = qc__points_bbox(p, n);
+    cell = qc__fit_cell(box, cell, 2.0 * (double)n + 64.0);
     gx = (size_t)((box.max.x - box.min.x) / cell) + 1;
     gy = (size_t)((box.max.y - box.min.y) / cell) + 1;
     ncell = gx * gy;

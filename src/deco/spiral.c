@@ -133,17 +133,8 @@ static int index_rings(qc_ctx *ctx, spiral *sp)
     qc_bbox box;
 
     QC__TRY(index_arcs(ctx, sp));
-    box.min = box.max = p[0];
-    for (g = 1; g < n; g++) {
-        box.min.x = p[g].x < box.min.x ? p[g].x : box.min.x;
-        box.min.y = p[g].y < box.min.y ? p[g].y : box.min.y;
-        box.max.x = p[g].x > box.max.x ? p[g].x : box.max.x;
-        box.max.y = p[g].y > box.max.y ? p[g].y : box.max.y;
-    }
-    sp->cell = sp->d;
-    while (((box.max.x - box.min.x) / sp->cell + 1.0) * ((box.max.y - box.min.y) / sp->cell + 1.0) >
-           4.0 * (double)n + 64.0)
-        sp->cell *= 1.5;
+    box = qc__points_bbox(p, n);
+    sp->cell = qc__fit_cell(box, sp->d, 4.0 * (double)n + 64.0);
     sp->x0 = box.min.x;
     sp->y0 = box.min.y;
     sp->gx = (size_t)((box.max.x - box.min.x) / sp->cell) + 1;

@@ -57,13 +57,7 @@ int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed
     nseg = n < 2 ? 0 : (closed && n > 2 ? n : n - 1);
     if (nseg < 2)
         return QC_OK;
-    box.min = box.max = pts[0];
-    for (i = 0; i < n; i++) {
-        box.min.x = fmin(box.min.x, pts[i].x);
-        box.min.y = fmin(box.min.y, pts[i].y);
-        box.max.x = fmax(box.max.x, pts[i].x);
-        box.max.y = fmax(box.max.y, pts[i].y);
-    }
+    box = qc__points_bbox(pts, n);
     for (s = 0; s < nseg; s++) {
         qc_vec2 a = pts[s], b = pts[(s + 1) % n];
         len += fabs(b.x - a.x) + fabs(b.y - a.y);
