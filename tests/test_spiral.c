@@ -384,6 +384,37 @@ static void spiral_should_run_through_generate(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* A centre far off the block (arcs across it, like a fan): the turns that
+ * stay clear of the block are skipped, not sampled, so 20 m away costs
+ * what the block costs; the arcs still lie d apart along every ray. */
+static void far_centre_should_sew_arcs_d_apart(void)
+{
+    qc_region r;
+    qc_vec2 c = v2(100, -20000);
+    qc_params p = params_at(10, 3, QC_SPIRAL_ARCHIMEDEAN, c);
+    qc_path out;
+    double rad[64];
+    size_t n, k, i;
+
+    make_region(R_RECT, 200, &r); /* 200 x 150 */
+    TEST_ASSERT_EQUAL_INT(QC_OK, run_spiral(&r, &p, &out, NULL));
+    assert_one_polyline(&out);
+    for (i = 0; i < out.npt; i++) /* inside the margin, about */
+        TEST_ASSERT_TRUE(out.pt[i].y > 2.9 && out.pt[i].y < 147.1);
+    /* up through the block: between the bottom and top margins (where the
+     * arcs are bridged), one crossing per arc, d apart */
+    n = ray_crossings(&out, c, QC_PI / 2 + 1e-3, rad, 64);
+    for (k = 0; k < n && rad[k] < 20000 + 5; k++)
+        ;
+    for (; n > k && rad[n - 1] > 20000 + 145; n--) /* and the top one */
+        ;
+    TEST_ASSERT_GREATER_OR_EQUAL(12, n - k);
+    for (k++; k < n; k++)
+        TEST_ASSERT_DOUBLE_WITHIN(0.01 * 10, 10.0, rad[k] - rad[k - 1]);
+    qc_path_free(&ctx, &out);
+    qc_region_free(&ctx, &r);
+}
+
 static void spiral_should_report_errors(void)
 {
     qc_region r, empty;
@@ -455,6 +486,7 @@ int main(void)
     RUN_TEST(spiral_gap_should_stay_under_d);
     RUN_TEST(spiral_should_be_deterministic);
     RUN_TEST(spiral_should_run_through_generate);
+    RUN_TEST(far_centre_should_sew_arcs_d_apart);
     RUN_TEST(spiral_should_report_errors);
     RUN_TEST(spiral_should_survive_allocation_failures);
     return UNITY_END();

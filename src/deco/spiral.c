@@ -299,13 +299,20 @@ static double field(const spiral *sp, qc_vec2 p)
     return qc__sdf_at(s, p);
 }
 
-/* Walks the spiral out to r_max, keeping the parts inside the margin's
- * rings (sp->pts; every crossing is a point there) and noting each
- * excursion outside (sp->exits; the crossing after comes back). */
-static int trace(qc_ctx *ctx, spiral *sp, double r_max)
+/* The angle at which the spiral reaches radius r. */
+static double angle_at(const spiral *sp, double r)
 {
-    double th = 0.0, th_max = sp->fermat ? (r_max / sp->b) * (r_max / sp->b) : r_max / sp->b;
-    qc_vec2 prev = at(sp, 0.0), cur;
+    return sp->fermat ? (r / sp->b) * (r / sp->b) : r / sp->b;
+}
+
+/* Walks the spiral from r_start (inside it nothing of the region lies) out
+ * to r_max, keeping the parts inside the margin's rings (sp->pts; every
+ * crossing is a point there) and noting each excursion outside (sp->exits;
+ * the crossing after comes back). */
+static int trace(qc_ctx *ctx, spiral *sp, double r_start, double r_max)
+{
+    double th = angle_at(sp, r_start), th_max = angle_at(sp, r_max);
+    qc_vec2 prev = at(sp, th), cur;
     double far = CHORD * sp->d + 2.0 * sp->s->h, vprev = field(sp, prev), vcur;
     int in = in_rings(sp, prev);
 
@@ -487,7 +494,7 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
     qc_points line = {0};
     qc_bbox box;
     qc_vec2 at_max;
-    double d = params->spacing, r_max = 0.0, samples;
+    double d = params->spacing, r_max = 0.0, r_start, dx, dy, samples;
     size_t i;
     int rc, k;
 
@@ -523,8 +530,13 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
         r_max = fmax(r_max, dist(corner, sp.c));
     }
     r_max += d;
-    samples = sp.fermat ? (r_max / d) * (r_max / d) * (r_max / d) * 2.0 * QC_PI / CHORD
-                        : QC_PI * r_max * r_max / (d * d * CHORD);
+    /* a centre off the block: the turns that stay clear of its box are skipped */
+    dx = fmax(fmax(box.min.x - sp.c.x, sp.c.x - box.max.x), 0.0);
+    dy = fmax(fmax(box.min.y - sp.c.y, sp.c.y - box.max.y), 0.0);
+    r_start = fmax(qc_hypot(dx, dy) - 2.0 * d, 0.0);
+    samples = sp.fermat ? ((r_max / d) * (r_max / d) * (r_max / d) -
+                           (r_start / d) * (r_start / d) * (r_start / d)) * 2.0 * QC_PI / CHORD
+                        : QC_PI * (r_max * r_max - r_start * r_start) / (d * d * CHORD);
     if (samples > MAX_SAMPLES) {
         rc = qc__fail(ctx, QC_ELIMIT, "spiral: %.3g samples (%s spiral out to %g mm at spacing "
                       "%g mm) exceed the limit of %.3g", samples,
@@ -545,7 +557,7 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
             memset(sp.stamp, 0, sp.nstamp * sizeof *sp.stamp);
     }
     if (rc == QC_OK)
-        rc = trace(ctx, &sp, r_max);
+        rc = trace(ctx, &sp, r_start, r_max);
     if (rc == QC_OK)
         rc = join(ctx, &sp, &line);
     if (rc == QC_OK && line.n == 0)
