@@ -130,39 +130,3 @@ double qc_hypot(double x, double y)
 {
     return sqrt(x * x + y * y);
 }
-
-double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    double ex, ey;
-
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    ex = a.x + t * dx - p.x;
-    ey = a.y + t * dy - p.y;
-    return ex * ex + ey * ey;
-}
-
-qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n)
-{
-    qc_bbox b;
-    size_t i;
-
-    b.min = b.max = p[0];
-    for (i = 1; i < n; i++) {
-        b.min.x = p[i].x < b.min.x ? p[i].x : b.min.x;
-        b.min.y = p[i].y < b.min.y ? p[i].y : b.min.y;
-        b.max.x = p[i].x > b.max.x ? p[i].x : b.max.x;
-        b.max.y = p[i].y > b.max.y ? p[i].y : b.max.y;
-    }
-    return b;
-}
-
-double qc__fit_cell(qc_bbox box, double cell, double max_cells)
-{
-    while (((box.max.x - box.min.x) / cell + 1.0) * ((box.max.y - box.min.y) / cell + 1.0) >
-           max_cells)
-        cell *= 1.5;
-    return cell;
-}
