@@ -470,10 +470,6 @@ static qc_vec2 centre_of(const qc_params *params, const qc__sdf *s)
 
 static void spiral_free(qc_ctx *ctx, spiral *sp)
 {
-    size_t n = sp->ring.pts.n, nr = sp->ring.end.n;
-
-    (void)n;
-    (void)nr;
     free_index(ctx, sp);
     qc__free(ctx, sp->gstart, (sp->gx * sp->gy + 1) * sizeof *sp->gstart);
     qc__free(ctx, sp->gseg, sp->ngseg * sizeof *sp->gseg);
