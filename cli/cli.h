@@ -62,6 +62,10 @@ int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *pla
 
 /* Writes plan to every path (formats[i]) all or nothing: each is written and
  * closed under a temporary name, then all are renamed into place. */
+/* Finishes opened outputs out[0..n) together: rc CLI_OK and every one
+ * closed cleanly, then all are renamed into place; else all are removed.
+ * Returns the resulting status. */
+int cli_outputs_finish(cli_output *out, size_t n, int rc);
 /* CLI_OK, or CLI_USAGE after one line when two outputs name one file. */
 int cli_outputs_distinct(const char *const *paths, size_t n);
 int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,

@@ -10,16 +10,20 @@
 #include "cli.h"
 #include "concorde.h"
 
+#define MAX_OUTPUTS 16
+
 typedef struct skel_opts {
     cli_pattern_opts pat;
-    const char *out, *format, *path, *tsp;
+    const char *out[MAX_OUTPUTS];
+    size_t nout;
+    const char *format, *path, *tsp;
 } skel_opts;
 
 static void usage(FILE *f)
 {
     fputs("usage: quiltc skeleton [options]\n"
           "Writes the sampled points with their spanning tree walk or TSP tour.\n"
-          "  -o, --output FILE        .json (default, - for stdout) or .svg\n"
+          "  -o, --output FILE        .json (default, - for stdout) or .svg (repeatable)\n"
           "  --path mst|tsp           tree walk (default) or closed tour\n"
           "  --tsp greedy|2opt|oropt|concorde   tour method (concorde: program on PATH)\n",
           f);
@@ -47,8 +51,11 @@ static int parse(int argc, char **argv, skel_opts *s)
     optind = 1;
     opterr = 0; /* our own one-line messages */
     while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
-        if (c == 'o')
-            s->out = optarg;
+        if (c == 'o' && s->nout == MAX_OUTPUTS) {
+            cli_error("skeleton: at most %d outputs", MAX_OUTPUTS);
+            rc = CLI_USAGE;
+        } else if (c == 'o')
+            s->out[s->nout++] = optarg;
         else if (c == 'p')
             s->path = optarg;
         else if (c == 'h') {
@@ -142,25 +149,34 @@ static int write_svg(FILE *f, const qc_region *region, const qc_result *r, int t
     return ferror(f) ? -1 : 0;
 }
 
+/* Every output (JSON, or SVG by its extension) written whole, or none. */
 static int write_result(const skel_opts *s, const qc_region *region, const qc_result *r)
 {
-    const char *out = s->out != NULL ? s->out : "-";
-    size_t n = strlen(out);
-    int tour = s->path != NULL && strcmp(s->path, "tsp") == 0;
-    cli_output o;
+    static const char *const to_stdout[] = {"-"};
+    const char *const *outs = s->nout ? s->out : to_stdout;
+    size_t nout = s->nout ? s->nout : 1, i, opened = 0;
+    int tour = s->path != NULL && strcmp(s->path, "tsp") == 0, rc;
+    cli_output o[MAX_OUTPUTS];
 
-    if (cli_output_open(&o, out) != 0)
-        return CLI_RUNTIME;
-    if (n > 4 && strcmp(out + n - 4, ".svg") == 0) {
-        if (write_svg(o.f, region, r, tour) != 0)
-            o.failed = 1;
-    } else {
-        char *json = to_json(r, tour);
-        if (json == NULL || fprintf(o.f, "%s\n", json) < 0)
-            o.failed = 1;
-        free(json);
+    rc = cli_outputs_distinct(outs, nout);
+    for (i = 0; i < nout && rc == CLI_OK; i++) {
+        size_t n = strlen(outs[i]);
+        if (cli_output_open(&o[i], outs[i]) != 0) {
+            rc = CLI_RUNTIME;
+            break;
+        }
+        opened++;
+        if (n > 4 && strcmp(outs[i] + n - 4, ".svg") == 0) {
+            if (write_svg(o[i].f, region, r, tour) != 0)
+                o[i].failed = 1;
+        } else {
+            char *json = to_json(r, tour);
+            if (json == NULL || fprintf(o[i].f, "%s\n", json) < 0)
+                o[i].failed = 1;
+            free(json);
+        }
     }
-    return cli_output_commit(&o) == 0 ? CLI_OK : CLI_RUNTIME;
+    return cli_outputs_finish(o, opened, rc);
 }
 
 int cmd_skeleton(int argc, char **argv)

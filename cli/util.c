@@ -316,7 +316,6 @@ int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, s
     }
     if (cli_outputs_distinct(paths, n) != CLI_OK)
         return CLI_USAGE;
-    /* every file written and closed under its temporary name first ... */
     for (i = 0; i < n && rc == CLI_OK; i++) {
         int st;
         if (cli_output_open(&out[i], paths[i]) != 0) {
@@ -331,12 +330,19 @@ int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, s
             else
                 cli_error("%s: %s", paths[i], qc_errmsg(ctx));
             rc = CLI_RUNTIME;
-        } else if (output_close(&out[i]) != 0) {
-            rc = CLI_RUNTIME;
         }
     }
-    /* ... then all renamed into place, or none */
-    for (i = 0; i < opened; i++) {
+    return cli_outputs_finish(out, opened, rc);
+}
+
+int cli_outputs_finish(cli_output *out, size_t n, int rc)
+{
+    size_t i;
+
+    for (i = 0; i < n && rc == CLI_OK; i++) /* every one closed under its temporary name */
+        if (out[i].f != NULL && output_close(&out[i]) != 0)
+            rc = CLI_RUNTIME;
+    for (i = 0; i < n; i++) { /* ... then all renamed into place, or none */
         if (rc == CLI_OK)
             rc = output_publish(&out[i]) == 0 ? CLI_OK : CLI_RUNTIME;
         else

@@ -88,7 +88,9 @@ n = len(s["points"])
 assert s["units"] == "mm" and n > 10, s
 assert len(s["edges"]) == n - 1 and len(s["order"]) == 2 * (n - 1) + 1, s
 assert abs(s["length_mm"] - 2 * 10 * (n - 1)) < 1e-6, s["length_mm"]
-' && "$QC" skeleton --region square:60 --units mm -o s.svg && grep -q '<circle' s.svg
+' && "$QC" skeleton --region square:60 --units mm -o s.svg && grep -q '<circle' s.svg &&
+        "$QC" skeleton --region square:60 --units mm --points square --spacing 10 -o t.json \
+            -o t.svg && cmp s.json t.json && grep -q '<circle' t.svg
 }
 check skeleton_json_walks_the_tree skeleton_json
 
