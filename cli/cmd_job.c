@@ -153,117 +153,6 @@ static int output_formats(const char *const *outputs, size_t nout, int *formats)
     return cli_outputs_distinct(outputs, nout);
 }
 
-/* ---- file names in a job file are relative to it ---- */
-
-/* Strings made here, freed with the job. */
-typedef struct owned {
-    char **s;
-    size_t n, cap;
-} owned;
-
-static char *keep(owned *o, char *s)
-{
-    if (s != NULL && o->n == o->cap) {
-        size_t cap = o->cap ? 2 * o->cap : 16;
-        char **t = realloc(o->s, cap * sizeof *t);
-        if (t == NULL) {
-            free(s);
-            return NULL;
-        }
-        o->s = t;
-        o->cap = cap;
-    }
-    if (s != NULL)
-        o->s[o->n++] = s;
-    return s;
-}
-
-static int is_file_name(const char *s)
-{
-    size_t n = strlen(s);
-
-    return (n > 4 && strcmp(s + n - 4, ".svg") == 0) || strchr(s, '/') != NULL ||
-           (strchr(s, ':') == NULL && strchr(s, '.') != NULL);
-}
-
-/* dir + name for a relative file name, else name itself; NULL if out of memory. */
-static const char *beside(owned *o, const char *dir, const char *name)
-{
-    char *s;
-
-    if (dir[0] == '\0' || name[0] == '/' || !is_file_name(name))
-        return name;
-    s = malloc(strlen(dir) + strlen(name) + 1);
-    if (s != NULL)
-        sprintf(s, "%s%s", dir, name);
-    return keep(o, s);
-}
-
-/* A motif list with its .svg items made relative to dir. */
-static const char *motifs_beside(owned *o, const char *dir, const char *list)
-{
-    size_t len = strlen(list), cap = len + 1, at = 0;
-    const char *p = list;
-    char *s;
-
-    if (dir[0] == '\0')
-        return list;
-    for (; *p; p++)
-        cap += *p == ',' ? strlen(dir) : 0;
-    cap += strlen(dir);
-    s = malloc(cap);
-    if (s == NULL)
-        return NULL;
-    for (p = list; *p;) {
-        size_t n = strcspn(p, ",");
-        int file = n > 4 && strncmp(p + n - 4, ".svg", 4) == 0 && p[0] != '/';
-        at += (size_t)sprintf(s + at, "%s%s%.*s", at ? "," : "", file ? dir : "", (int)n, p);
-        p += n + (p[n] == ',');
-    }
-    return keep(o, s);
-}
-
-/* Rewrites the job's file names (regions, motif files, point files, listed
- * outputs) relative to the job file's directory. */
-static int resolve_names(job *j, const char *file, owned *o)
-{
-    const char *slash = strrchr(file, '/');
-    char dir[4096];
-    size_t i, points = (size_t)-1, nrows, k;
-    const qc_param_info *t = qc_param_table(&nrows);
-
-    if (slash == NULL)
-        return CLI_OK;
-    if ((size_t)(slash - file) + 2 > sizeof dir) {
-        cli_error("job: '%s': directory name too long", file);
-        return CLI_USAGE;
-    }
-    memcpy(dir, file, (size_t)(slash - file) + 1);
-    dir[slash - file + 1] = '\0';
-    for (k = 0; k < nrows; k++)
-        if (strcmp(t[k].name, "points") == 0)
-            points = k;
-    for (i = 0; i < j->n; i++) {
-        block *b = &j->blocks[i];
-        if (b->pat.region != NULL && (b->pat.region = beside(o, dir, b->pat.region)) == NULL)
-            goto oom;
-        if (b->pat.motifs != NULL &&
-            (b->pat.motifs = motifs_beside(o, dir, b->pat.motifs)) == NULL)
-            goto oom;
-        if (points != (size_t)-1 && b->pat.raw[points] != NULL &&
-            qc_param_choice(&t[points], b->pat.raw[points]) < 0 &&
-            (b->pat.raw[points] = beside(o, dir, b->pat.raw[points])) == NULL)
-            goto oom;
-    }
-    for (i = 0; i < j->nout; i++)
-        if ((j->outputs[i] = beside(o, dir, j->outputs[i])) == NULL)
-            goto oom;
-    return CLI_OK;
-oom:
-    cli_error("job: out of memory");
-    return CLI_RUNTIME;
-}
-
 int cmd_job(int argc, char **argv)
 {
     const char *outputs[MAX_JOB_OUTPUTS];
@@ -273,7 +162,7 @@ int cmd_job(int argc, char **argv)
     char *buf = NULL;
     size_t len;
     cJSON *root = NULL;
-    owned names = {NULL, 0, 0};
+    cli_job_names names = {NULL, 0, 0};
     job j;
     qc_ctx ctx;
     int rc = CLI_OK, a;
@@ -314,7 +203,7 @@ int cmd_job(int argc, char **argv)
     } else
         rc = cli_job_parse(&j, root);
     if (rc == CLI_OK)
-        rc = resolve_names(&j, file, &names);
+        rc = cli_job_resolve_names(&j, file, &names);
     if (rc == CLI_OK && nout == 0) {
         for (i = 0; i < j.nout; i++)
             outputs[nout++] = j.outputs[i];
@@ -332,8 +221,6 @@ int cmd_job(int argc, char **argv)
     free(j.blocks);
     cJSON_Delete(root);
     free(buf);
-    for (i = 0; i < names.n; i++)
-        free(names.s[i]);
-    free(names.s);
+    cli_job_names_free(&names);
     return rc;
 }

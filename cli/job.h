@@ -42,4 +42,16 @@ typedef struct job {
  * Strings point into root; free j->blocks with free(). */
 int cli_job_parse(job *j, const cJSON *root);
 
+/* Strings made for a job's resolved file names. */
+typedef struct cli_job_names {
+    char **s;
+    size_t n, cap;
+} cli_job_names;
+
+/* Rewrites the job's file names relative to the directory of file (the job
+ * file's path); the new strings go to *names (free with
+ * cli_job_names_free). CLI_OK, or an error after one line. */
+int cli_job_resolve_names(job *j, const char *file, cli_job_names *names);
+void cli_job_names_free(cli_job_names *names);
+
 #endif
