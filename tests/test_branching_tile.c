@@ -7,6 +7,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 #include "../src/deco/branching_tile.h"
 
@@ -21,14 +22,6 @@ void setUp(void)
 
 void tearDown(void)
 {
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 /* A W x H rectangle at (X0, Y0) with jittered hex points 0.3 d inside, its

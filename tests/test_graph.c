@@ -6,6 +6,7 @@
 #include "quiltc.h"
 #include "../src/graph/graph_internal.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 __extension__ typedef __int128 i128;
@@ -26,14 +27,6 @@ void tearDown(void)
 static int sgn(double v)
 {
     return (v > 0) - (v < 0);
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 /* ---- point sets (caller frees with free()) ---- */

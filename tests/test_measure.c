@@ -5,6 +5,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 static testalloc ta;
@@ -18,14 +19,6 @@ void setUp(void)
 
 void tearDown(void)
 {
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 static void square(qc_region *r, double side, int hole)

@@ -5,6 +5,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 #include "../src/region/region_index.h"
 
@@ -21,14 +22,6 @@ void tearDown(void)
 {
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
     TEST_ASSERT_FALSE(ta.size_mismatch);
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 static void square_ring(qc_region *r, double x0, double y0, double s, int ccw)

@@ -5,6 +5,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 static testalloc ta;
@@ -20,14 +21,6 @@ void tearDown(void)
 {
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
     TEST_ASSERT_FALSE(ta.size_mismatch);
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 static qc_sample_params params(int kind, double d, double margin)

@@ -10,6 +10,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 static testalloc ta;
@@ -23,14 +24,6 @@ void setUp(void)
 
 void tearDown(void)
 {
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
 }
 
 enum { R_RECT, R_CIRCLE, R_STAR, R_HEART, R_HEXAGON, R_HOLE, R_HOLES, R_U, R_COUNT };

@@ -4,6 +4,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 static testalloc ta;
@@ -17,15 +18,6 @@ void setUp(void)
 
 void tearDown(void)
 {
-}
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 v;
-
-    v.x = x;
-    v.y = y;
-    return v;
 }
 
 static double seg(const qc_plan *p, size_t i)

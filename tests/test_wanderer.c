@@ -6,6 +6,7 @@
 
 #include "quiltc.h"
 #include "testalloc.h"
+#include "testgeom.h"
 #include "unity.h"
 
 static testalloc ta;
@@ -28,14 +29,6 @@ typedef struct ttour {
     size_t n;
     qc_region r;
 } ttour;
-
-static qc_vec2 v2(double x, double y)
-{
-    qc_vec2 p;
-    p.x = x;
-    p.y = y;
-    return p;
-}
 
 /* A square of side cols * d with a jittered grid and a Hamiltonian cycle:
  * row 0 and the serpentine over columns 1.., back down column 0. rows even. */
