@@ -314,7 +314,7 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
     qc_points pts = {0};
     qc_stats dummy;
     double s = params->size, gap = params->gap, alpha = params->angle, step, acc = 0;
-    size_t i, j, nseg, ring;
+    size_t i, j, nseg;
     unsigned char *seen = NULL;
     int rc = QC_OK, side = 1, walk;
     int tiled = params->tile == QC_TILE_EDGE_TO_EDGE || params->tile == QC_TILE_ALL_OVER;
@@ -410,15 +410,8 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
                                    16 * nseg + 2 * region->nv + 1024, 12 * nseg + 4 * region->nv + 256);
     }
     /* The boundary, every ring. */
-    for (ring = 0; rc == QC_OK && ring < region->nrings; ring++) {
-        size_t lo = ring ? region->ring_end[ring - 1] : 0, hi = region->ring_end[ring];
-        for (i = lo; i < hi && rc == QC_OK; i++) {
-            qc_vec2 e[2];
-            e[0] = region->v[i];
-            e[1] = region->v[i + 1 < hi ? i + 1 : lo];
-            rc = qc__cgrid_add(ctx, &r.grid, e, 2, K_BOUND, 0);
-        }
-    }
+    if (rc == QC_OK)
+        rc = qc__cgrid_add_region(ctx, &r.grid, region, K_BOUND);
     /* The vine as short chords (within a few percent of s of the curve). */
     for (j = 0; rc == QC_OK && j < nseg; j++) {
         const qc_vec2 *q = vine.pt + 3 * j; /* MOVE point + 3 per cubic */

@@ -278,6 +278,22 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     return 0;
 }
 
+int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region, unsigned kind)
+{
+    size_t ring, i;
+
+    for (ring = 0; ring < region->nrings; ring++) {
+        size_t lo = ring ? region->ring_end[ring - 1] : 0, hi = region->ring_end[ring];
+        for (i = lo; i < hi; i++) {
+            qc_vec2 e[2];
+            e[0] = region->v[i];
+            e[1] = region->v[i + 1 < hi ? i + 1 : lo];
+            QC__TRY(qc__cgrid_add(ctx, g, e, 2, kind, 0));
+        }
+    }
+    return QC_OK;
+}
+
 int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, size_t entries)
 {
     QC__TRY(QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + items));

@@ -87,6 +87,9 @@ QC__HIDDEN void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g);
 /* Adds a convex polygon (n >= 1, CCW when n >= 3). */
 QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
                              unsigned kind, uint32_t id);
+/* Adds every boundary edge of region as a two-point item of kind (id 0). */
+QC__HIDDEN int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region,
+                                    unsigned kind);
 /* 1 if poly touches an item whose kind bit is in kinds and that skip does
  * not exclude (skip may be NULL), else 0. */
 QC__HIDDEN int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n,

@@ -248,7 +248,7 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
     wrun w;
     prim *pr = NULL;
     cand cd[MAXV];
-    size_t n, i, ring, maxhull = 0;
+    size_t n, i, maxhull = 0;
     double l = params->tangent;
     qc_stats dummy;
     int rc = QC_OK;
@@ -354,15 +354,8 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
                                    (2 * NFLAT + maxhull) * n + 2 * region->nv,
                                    (NFLAT * 2 + 4) * n + 4 * region->nv);
     }
-    for (ring = 0; rc == QC_OK && ring < region->nrings; ring++) {
-        size_t lo = ring ? region->ring_end[ring - 1] : 0, hi = region->ring_end[ring];
-        for (i = lo; i < hi && rc == QC_OK; i++) {
-            qc_vec2 e[2];
-            e[0] = region->v[i];
-            e[1] = region->v[i + 1 < hi ? i + 1 : lo];
-            rc = qc__cgrid_add(ctx, &w.grid, e, 2, K_BOUND, 0);
-        }
-    }
+    if (rc == QC_OK)
+        rc = qc__cgrid_add_region(ctx, &w.grid, region, K_BOUND);
     for (i = 0; rc == QC_OK && i < n; i++) {
         /* a primitive that reaches the boundary shrinks, down to half size */
         static const double shrink[] = {0.75, 0.5};
