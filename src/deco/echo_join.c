@@ -43,12 +43,7 @@ typedef struct joiner {
     size_t n;             /* vertices */
     size_t nr;            /* rings */
     uint32_t *ring;       /* per vertex: its ring */
-    /* segment grid (a segment is named by its first vertex) */
-    double x0, y0, cell;
-    size_t gx, gy;
-    size_t *gstart;
-    uint32_t *gseg;
-    size_t ngseg;
+    qc__seg_grid grid;    /* a segment is named by its first vertex */
     /* links */
     uint32_t *used;       /* per vertex: 1 + the link whose cut (or its margin) holds it, or 0 */
     uint32_t *lk;         /* per cut end: its link, or NONE */
@@ -122,64 +117,9 @@ static double dist2(qc_vec2 a, qc_vec2 b)
 
 /* ---- segment grid ---- */
 
-static size_t clamp_cell(double v, double lo, double cell, size_t count)
+static uint32_t next_vertex(const void *ud, uint32_t g)
 {
-    double f = floor((v - lo) / cell), m = (double)(count - 1);
-
-    return f > 0.0 ? (size_t)(f < m ? f : m) : 0;
-}
-
-static void cells_of(const joiner *j, qc_vec2 a, qc_vec2 b, size_t c[4])
-{
-    c[0] = clamp_cell(a.x < b.x ? a.x : b.x, j->x0, j->cell, j->gx);
-    c[1] = clamp_cell(a.y < b.y ? a.y : b.y, j->y0, j->cell, j->gy);
-    c[2] = clamp_cell(a.x > b.x ? a.x : b.x, j->x0, j->cell, j->gx);
-    c[3] = clamp_cell(a.y > b.y ? a.y : b.y, j->y0, j->cell, j->gy);
-}
-
-static int build_grid(qc_ctx *ctx, joiner *j, double cell)
-{
-    const qc_vec2 *p = j->p;
-    qc_bbox box;
-    size_t g, x, y, total, ncell;
-
-    box = qc__points_bbox(p, j->n);
-    cell = qc__fit_cell(box, cell, 4.0 * (double)j->n + 64.0);
-    j->cell = cell;
-    j->x0 = box.min.x;
-    j->y0 = box.min.y;
-    j->gx = (size_t)((box.max.x - box.min.x) / cell) + 1;
-    j->gy = (size_t)((box.max.y - box.min.y) / cell) + 1;
-    ncell = j->gx * j->gy;
-    j->gstart = qc__alloc_array(ctx, ncell + 1, sizeof *j->gstart);
-    if (j->gstart == NULL)
-        return QC_ENOMEM;
-    memset(j->gstart, 0, (ncell + 1) * sizeof *j->gstart);
-    for (g = 0; g < j->n; g++) {
-        size_t c[4];
-        cells_of(j, p[g], p[step_v(j, (uint32_t)g, 1)], c);
-        for (y = c[1]; y <= c[3]; y++)
-            for (x = c[0]; x <= c[2]; x++)
-                j->gstart[y * j->gx + x + 1]++;
-    }
-    for (g = 0; g < ncell; g++)
-        j->gstart[g + 1] += j->gstart[g];
-    total = j->gstart[ncell];
-    j->ngseg = total ? total : 1;
-    j->gseg = qc__alloc_array(ctx, j->ngseg, sizeof *j->gseg);
-    if (j->gseg == NULL)
-        return QC_ENOMEM;
-    for (g = 0; g < j->n; g++) {
-        size_t c[4];
-        cells_of(j, p[g], p[step_v(j, (uint32_t)g, 1)], c);
-        for (y = c[1]; y <= c[3]; y++)
-            for (x = c[0]; x <= c[2]; x++)
-                j->gseg[j->gstart[y * j->gx + x]++] = (uint32_t)g;
-    }
-    for (g = ncell; g > 0; g--) /* back to starts */
-        j->gstart[g] = j->gstart[g - 1];
-    j->gstart[0] = 0;
-    return QC_OK;
+    return step_v((const joiner *)ud, g, 1);
 }
 
 /* First ring segment the ray o + t u (0 < t <= len) meets, skipping the
@@ -194,11 +134,11 @@ static uint32_t cast(const joiner *j, uint32_t go, qc_vec2 u, double len, double
 
     e.x = o.x + u.x * len;
     e.y = o.y + u.y * len;
-    cells_of(j, o, e, c);
+    qc__seg_grid_cells(&j->grid, o, e, c);
     for (y = c[1]; y <= c[3]; y++)
         for (x = c[0]; x <= c[2]; x++)
-            for (q = j->gstart[y * j->gx + x]; q < j->gstart[y * j->gx + x + 1]; q++) {
-                uint32_t s = j->gseg[q], s2;
+            for (q = j->grid.start[y * j->grid.gx + x]; q < j->grid.start[y * j->grid.gx + x + 1]; q++) {
+                uint32_t s = j->grid.seg[q], s2;
                 qc_vec2 a, ab, ao;
                 double den, t, f;
 
@@ -247,11 +187,11 @@ static int blocked(const joiner *j, qc_vec2 a, qc_vec2 b)
                 return 1;
         }
     }
-    cells_of(j, a, b, c);
+    qc__seg_grid_cells(&j->grid, a, b, c);
     for (y = c[1]; y <= c[3]; y++)
         for (x = c[0]; x <= c[2]; x++)
-            for (q = j->gstart[y * j->gx + x]; q < j->gstart[y * j->gx + x + 1]; q++) {
-                uint32_t s = j->gseg[q];
+            for (q = j->grid.start[y * j->grid.gx + x]; q < j->grid.start[y * j->grid.gx + x + 1]; q++) {
+                uint32_t s = j->grid.seg[q];
                 if (proper(a, b, p[s], p[step_v(j, s, 1)]))
                     return 1;
             }
@@ -699,8 +639,7 @@ static void jn_free(qc_ctx *ctx, joiner *j)
     qc__free(ctx, j->uf, j->nr * sizeof *j->uf);
     qc__free(ctx, j->tail_y, j->nr * sizeof *j->tail_y);
     qc__free(ctx, j->tail_to, j->nr * sizeof *j->tail_to);
-    qc__free(ctx, j->gstart, (j->gx * j->gy + 1) * sizeof *j->gstart);
-    qc__free(ctx, j->gseg, j->ngseg * sizeof *j->gseg);
+    qc__seg_grid_free(ctx, &j->grid);
     qc__free(ctx, j->steps, j->steps_cap * sizeof *j->steps);
     qc__free(ctx, j->links, j->links_cap * sizeof *j->links);
 }
@@ -729,11 +668,11 @@ static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, siz
         lo.y = p[g].y - radius;
         hi.x = p[g].x + radius;
         hi.y = p[g].y + radius;
-        cells_of(j, lo, hi, c);
+        qc__seg_grid_cells(&j->grid, lo, hi, c);
         for (y = c[1]; y <= c[3]; y++)
             for (x = c[0]; x <= c[2]; x++)
-                for (q = j->gstart[y * j->gx + x]; q < j->gstart[y * j->gx + x + 1]; q++) {
-                    uint32_t h = j->gseg[q];
+                for (q = j->grid.start[y * j->grid.gx + x]; q < j->grid.start[y * j->grid.gx + x + 1]; q++) {
+                    uint32_t h = j->grid.seg[q];
                     double dd = dist2(p[g], p[h]);
                     if (dd < bd && !j->used[h] && uf_find(j->uf, j->ring[h]) != rg) {
                         bd = dd;
@@ -818,7 +757,7 @@ int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o, qc_p
     memset(j.ahead, 0, j.n);
     for (g = 0; g < j.n; g++)
         j.partner[g] = j.other[g] = j.lk[g] = NONE;
-    rc = build_grid(ctx, &j, 0.5 * o->reach);
+    rc = qc__seg_grid_build(ctx, &j.grid, j.p, j.n, next_vertex, &j, 0.5 * o->reach, 4.0);
     start = o->start < j.n ? o->start : 0;
     if (rc == QC_OK && o->spiral)
         rc = lay_tails(ctx, &j, &start);

@@ -116,6 +116,11 @@ void qc__rings_prune_islands(qc__rings *r, size_t first, double h)
     r->pts.n = w;
 }
 
+static uint32_t succ_of(const void *ud, uint32_t i)
+{
+    return ((const uint32_t *)ud)[i];
+}
+
 /* The level's vertices from b0 on joined by succ (indices relative to
  * b0): finds the pairs of segments (a, succ[a]), (c, succ[c]) that cross
  * properly, binned in a grid of about cell mm, and for each pair whose
@@ -125,61 +130,19 @@ void qc__rings_prune_islands(qc__rings *r, size_t first, double h)
 static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n, double cell,
                         unsigned char *mark, size_t *found)
 {
-    size_t k, i, gx, gy, ncell, total = 0;
-    size_t *start = NULL;
-    uint32_t *seg = NULL;
-    qc_bbox box;
-    int rc = QC_ENOMEM;
+    qc__seg_grid g;
+    size_t k, i, ncell;
 
     *found = 0;
-    box = qc__points_bbox(p, n);
-    cell = qc__fit_cell(box, cell, 2.0 * (double)n + 64.0);
-    gx = (size_t)((box.max.x - box.min.x) / cell) + 1;
-    gy = (size_t)((box.max.y - box.min.y) / cell) + 1;
-    ncell = gx * gy;
-    start = qc__alloc_array(ctx, ncell + 1, sizeof *start);
-    if (start == NULL)
-        return QC_ENOMEM;
-    memset(start, 0, (ncell + 1) * sizeof *start);
-    for (k = 0; k < 2; k++) { /* pass 0 counts, pass 1 fills */
-        for (i = 0; i < n; i++) {
-            qc_vec2 a = p[i], c = p[succ[i]];
-            size_t x0 = (size_t)(((a.x < c.x ? a.x : c.x) - box.min.x) / cell);
-            size_t x1 = (size_t)(((a.x > c.x ? a.x : c.x) - box.min.x) / cell);
-            size_t y0 = (size_t)(((a.y < c.y ? a.y : c.y) - box.min.y) / cell);
-            size_t y1 = (size_t)(((a.y > c.y ? a.y : c.y) - box.min.y) / cell);
-            size_t x, y;
-
-            x1 = x1 < gx ? x1 : gx - 1;
-            y1 = y1 < gy ? y1 : gy - 1;
-            for (y = y0; y <= y1; y++)
-                for (x = x0; x <= x1; x++) {
-                    if (k == 0)
-                        start[y * gx + x + 1]++;
-                    else
-                        seg[start[y * gx + x]++] = (uint32_t)i;
-                }
-        }
-        if (k == 0) {
-            for (i = 0; i < ncell; i++)
-                start[i + 1] += start[i];
-            total = start[ncell];
-            seg = qc__alloc_array(ctx, total ? total : 1, sizeof *seg);
-            if (seg == NULL)
-                goto out;
-        } else {
-            for (i = ncell; i > 0; i--)
-                start[i] = start[i - 1];
-            start[0] = 0;
-        }
-    }
+    QC__TRY(qc__seg_grid_build(ctx, &g, p, n, succ_of, succ, cell, 2.0));
+    ncell = g.gx * g.gy;
     for (i = 0; i < n; i++)
         mark[i] &= 2; /* keep "ever swapped" */
     for (i = 0; i < ncell; i++) /* every pair in a cell */
-        for (k = start[i]; k < start[i + 1]; k++) {
+        for (k = g.start[i]; k < g.start[i + 1]; k++) {
             size_t q;
-            for (q = k + 1; q < start[i + 1]; q++) {
-                uint32_t a = seg[k], c = seg[q], an = succ[a], cn = succ[c];
+            for (q = k + 1; q < g.start[i + 1]; q++) {
+                uint32_t a = g.seg[k], c = g.seg[q], an = succ[a], cn = succ[c];
                 if (c == an || a == cn || a == c || !seg_cross(p[a], p[an], p[c], p[cn]))
                     continue;
                 ++*found;
@@ -190,11 +153,8 @@ static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n,
                 succ[c] = an;
             }
         }
-    rc = QC_OK;
-out:
-    qc__free(ctx, start, (ncell + 1) * sizeof *start);
-    qc__free(ctx, seg, seg != NULL ? (total ? total : 1) * sizeof *seg : 0);
-    return rc;
+    qc__seg_grid_free(ctx, &g);
+    return QC_OK;
 }
 
 /* Where a level set is thinner than the grid (a neck near a saddle, a

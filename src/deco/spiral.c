@@ -46,12 +46,7 @@ typedef struct spiral {
     uint32_t *ring_of;   /* per vertex */
     double *arc;         /* per vertex: arc length from its ring's first vertex */
     double *perim;       /* per ring */
-    /* segment grid over the rings (a segment is named by its first vertex) */
-    double x0, y0, cell;
-    size_t gx, gy;
-    size_t *gstart;
-    uint32_t *gseg;
-    size_t ngseg;
+    qc__seg_grid grid;   /* over the rings (a segment is named by its first vertex) */
     qc_points pts;       /* the spiral's parts inside the margin, in order */
     ins *cr;             /* every crossing of the margin's rings, in order */
     size_t ncr, cr_cap;
@@ -81,13 +76,6 @@ static uint32_t vnext(const spiral *sp, uint32_t g, int dir)
 static double dist(qc_vec2 a, qc_vec2 b)
 {
     return qc_hypot(a.x - b.x, a.y - b.y);
-}
-
-static size_t clamp_cell(double v, double lo, double cell, size_t count)
-{
-    double f = floor((v - lo) / cell), mx = (double)(count - 1);
-
-    return f > 0.0 ? (size_t)(f < mx ? f : mx) : 0;
 }
 
 static void free_index(qc_ctx *ctx, spiral *sp)
@@ -125,56 +113,17 @@ static int index_arcs(qc_ctx *ctx, spiral *sp)
     return QC_OK;
 }
 
+static uint32_t next_vertex(const void *ud, uint32_t g)
+{
+    return vnext((const spiral *)ud, g, 1);
+}
+
 /* The segment grid over the rings. */
 static int index_rings(qc_ctx *ctx, spiral *sp)
 {
-    const qc_vec2 *p = sp->ring.pts.v;
-    size_t n = sp->ring.pts.n, g, x, y, ncell, total;
-    qc_bbox box;
-
     QC__TRY(index_arcs(ctx, sp));
-    box = qc__points_bbox(p, n);
-    sp->cell = qc__fit_cell(box, sp->d, 4.0 * (double)n + 64.0);
-    sp->x0 = box.min.x;
-    sp->y0 = box.min.y;
-    sp->gx = (size_t)((box.max.x - box.min.x) / sp->cell) + 1;
-    sp->gy = (size_t)((box.max.y - box.min.y) / sp->cell) + 1;
-    ncell = sp->gx * sp->gy;
-    sp->gstart = qc__alloc_array(ctx, ncell + 1, sizeof *sp->gstart);
-    if (sp->gstart == NULL)
-        return QC_ENOMEM;
-    memset(sp->gstart, 0, (ncell + 1) * sizeof *sp->gstart);
-    for (g = 0; g < n; g++) {
-        qc_vec2 a = p[g], c = p[vnext(sp, (uint32_t)g, 1)];
-        size_t x0 = clamp_cell(a.x < c.x ? a.x : c.x, sp->x0, sp->cell, sp->gx);
-        size_t x1 = clamp_cell(a.x > c.x ? a.x : c.x, sp->x0, sp->cell, sp->gx);
-        size_t y0 = clamp_cell(a.y < c.y ? a.y : c.y, sp->y0, sp->cell, sp->gy);
-        size_t y1 = clamp_cell(a.y > c.y ? a.y : c.y, sp->y0, sp->cell, sp->gy);
-        for (y = y0; y <= y1; y++)
-            for (x = x0; x <= x1; x++)
-                sp->gstart[y * sp->gx + x + 1]++;
-    }
-    for (g = 0; g < ncell; g++)
-        sp->gstart[g + 1] += sp->gstart[g];
-    total = sp->gstart[ncell];
-    sp->ngseg = total ? total : 1;
-    sp->gseg = qc__alloc_array(ctx, sp->ngseg, sizeof *sp->gseg);
-    if (sp->gseg == NULL)
-        return QC_ENOMEM;
-    for (g = 0; g < n; g++) {
-        qc_vec2 a = p[g], c = p[vnext(sp, (uint32_t)g, 1)];
-        size_t x0 = clamp_cell(a.x < c.x ? a.x : c.x, sp->x0, sp->cell, sp->gx);
-        size_t x1 = clamp_cell(a.x > c.x ? a.x : c.x, sp->x0, sp->cell, sp->gx);
-        size_t y0 = clamp_cell(a.y < c.y ? a.y : c.y, sp->y0, sp->cell, sp->gy);
-        size_t y1 = clamp_cell(a.y > c.y ? a.y : c.y, sp->y0, sp->cell, sp->gy);
-        for (y = y0; y <= y1; y++)
-            for (x = x0; x <= x1; x++)
-                sp->gseg[sp->gstart[y * sp->gx + x]++] = (uint32_t)g;
-    }
-    for (g = ncell; g > 0; g--)
-        sp->gstart[g] = sp->gstart[g - 1];
-    sp->gstart[0] = 0;
-    return QC_OK;
+    return qc__seg_grid_build(ctx, &sp->grid, sp->ring.pts.v, sp->ring.pts.n, next_vertex, sp,
+                              sp->d, 4.0);
 }
 
 /* The spiral point at angle th (radians from the start). */
@@ -259,17 +208,15 @@ static int cmp_hit(const void *pa, const void *pb);
 static int chord_hits(qc_ctx *ctx, spiral *sp, qc_vec2 p, qc_vec2 q)
 {
     const qc_vec2 *v = sp->ring.pts.v;
-    size_t x0 = clamp_cell(p.x < q.x ? p.x : q.x, sp->x0, sp->cell, sp->gx);
-    size_t x1 = clamp_cell(p.x > q.x ? p.x : q.x, sp->x0, sp->cell, sp->gx);
-    size_t y0 = clamp_cell(p.y < q.y ? p.y : q.y, sp->y0, sp->cell, sp->gy);
-    size_t y1 = clamp_cell(p.y > q.y ? p.y : q.y, sp->y0, sp->cell, sp->gy);
-    size_t x, y, i, first = sp->ncr;
+    const qc__seg_grid *gr = &sp->grid;
+    size_t c[4], x, y, i, first = sp->ncr;
 
+    qc__seg_grid_cells(gr, p, q, c);
     sp->chord++;
-    for (y = y0; y <= y1; y++)
-        for (x = x0; x <= x1; x++)
-            for (i = sp->gstart[y * sp->gx + x]; i < sp->gstart[y * sp->gx + x + 1]; i++) {
-                uint32_t g = sp->gseg[i];
+    for (y = c[1]; y <= c[3]; y++)
+        for (x = c[0]; x <= c[2]; x++)
+            for (i = gr->start[y * gr->gx + x]; i < gr->start[y * gr->gx + x + 1]; i++) {
+                uint32_t g = gr->seg[i];
                 double t, u;
 
                 if (sp->stamp[g] == sp->chord)
@@ -471,8 +418,7 @@ static qc_vec2 centre_of(const qc_params *params, const qc__sdf *s)
 static void spiral_free(qc_ctx *ctx, spiral *sp)
 {
     free_index(ctx, sp);
-    qc__free(ctx, sp->gstart, (sp->gx * sp->gy + 1) * sizeof *sp->gstart);
-    qc__free(ctx, sp->gseg, sp->ngseg * sizeof *sp->gseg);
+    qc__seg_grid_free(ctx, &sp->grid);
     qc__free(ctx, sp->exits, sp->exits_cap * sizeof *sp->exits);
     qc__free(ctx, sp->cr, sp->cr_cap * sizeof *sp->cr);
     qc__free(ctx, sp->stamp, sp->nstamp * sizeof *sp->stamp);
