@@ -23,18 +23,13 @@ static int cmp_double(const void *pa, const void *pb)
     return (a > b) - (a < b);
 }
 
-int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0,
-                      double h, size_t nx, size_t ny, unsigned char *mask)
+/* Where the region's edges cross each row's line y0 + j h: with xs NULL
+ * counts them into start[j + 1], else stores their x at start[j]++. */
+static void row_crossings(const qc_region *region, double y0, double h, size_t ny,
+                          size_t *start, double *xs)
 {
-    size_t *start, k, rs = 0, j, total = 0;
-    double *xs;
+    size_t k, rs = 0, j;
 
-    memset(mask, 0, nx * ny);
-    start = qc__alloc_array(ctx, ny + 1, sizeof *start);
-    if (start == NULL)
-        return QC_ENOMEM;
-    memset(start, 0, (ny + 1) * sizeof *start);
-    /* pass 1 counts crossings per row, pass 2 stores them */
     for (k = 0; k < region->nrings; k++) {
         size_t end = region->ring_end[k], i, p = end - 1;
 
@@ -45,12 +40,30 @@ int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0
             row_span(fmin(a.y, b.y), fmax(a.y, b.y), y0, h, ny, &j0, &j1);
             for (j = j0; j < j1; j++) {
                 double y = y0 + (double)j * h;
-                if ((a.y > y) != (b.y > y))
+                if ((a.y > y) == (b.y > y))
+                    continue;
+                if (xs == NULL)
                     start[j + 1]++;
+                else
+                    xs[start[j]++] = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
             }
         }
         rs = end;
     }
+}
+
+int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0,
+                      double h, size_t nx, size_t ny, unsigned char *mask)
+{
+    size_t *start, j, total = 0;
+    double *xs;
+
+    memset(mask, 0, nx * ny);
+    start = qc__alloc_array(ctx, ny + 1, sizeof *start);
+    if (start == NULL)
+        return QC_ENOMEM;
+    memset(start, 0, (ny + 1) * sizeof *start);
+    row_crossings(region, y0, h, ny, start, NULL);
     for (j = 0; j < ny; j++)
         start[j + 1] += start[j];
     total = start[ny];
@@ -59,23 +72,7 @@ int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0
         qc__free(ctx, start, (ny + 1) * sizeof *start);
         return QC_ENOMEM;
     }
-    rs = 0;
-    for (k = 0; k < region->nrings; k++) {
-        size_t end = region->ring_end[k], i, p = end - 1;
-
-        for (i = rs; i < end; p = i++) {
-            qc_vec2 a = region->v[p], b = region->v[i];
-            size_t j0, j1;
-
-            row_span(fmin(a.y, b.y), fmax(a.y, b.y), y0, h, ny, &j0, &j1);
-            for (j = j0; j < j1; j++) {
-                double y = y0 + (double)j * h;
-                if ((a.y > y) != (b.y > y))
-                    xs[start[j]++] = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
-            }
-        }
-        rs = end;
-    }
+    row_crossings(region, y0, h, ny, start, xs);
     /* start[j] now ends row j; row j begins at start[j - 1] */
     for (j = ny; j-- > 0;) {
         size_t b = j ? start[j - 1] : 0, e = start[j], c;
