@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "internal.h"
+#include "region_index.h"
 
 void qc_region_free(qc_ctx *ctx, qc_region *r)
 {
@@ -31,6 +32,16 @@ int qc_region_add_ring(qc_ctx *ctx, qc_region *r, const qc_vec2 *pts, size_t n)
     return QC_OK;
 }
 
+int qc__ray_edge(qc_vec2 p, qc_vec2 a, qc_vec2 b)
+{
+    double cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+
+    if (cross == 0.0 && p.x >= fmin(a.x, b.x) && p.x <= fmax(a.x, b.x) &&
+        p.y >= fmin(a.y, b.y) && p.y <= fmax(a.y, b.y))
+        return 2;
+    return (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+}
+
 int qc_region_contains(const qc_region *r, qc_vec2 p)
 {
     size_t k, start = 0;
@@ -40,19 +51,10 @@ int qc_region_contains(const qc_region *r, qc_vec2 p)
         size_t end = r->ring_end[k], i, j = end - 1;
 
         for (i = start; i < end; j = i++) {
-            qc_vec2 a = r->v[j], b = r->v[i];
-            double cross;
-
-            /* on the edge counts as inside */
-            cross = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
-            if (cross == 0.0 && p.x >= fmin(a.x, b.x) && p.x <= fmax(a.x, b.x) &&
-                p.y >= fmin(a.y, b.y) && p.y <= fmax(a.y, b.y))
+            int m = qc__ray_edge(p, r->v[j], r->v[i]);
+            if (m == 2) /* on the edge counts as inside */
                 return 1;
-            if ((a.y > p.y) != (b.y > p.y)) {
-                double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-                if (p.x < x)
-                    inside = !inside;
-            }
+            inside ^= m;
         }
         start = end;
     }

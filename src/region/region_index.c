@@ -171,17 +171,11 @@ int qc__rindex_contains(const qc__rindex *ix, qc_vec2 p)
     b = cell_of(p.y, ix->box.min.y, ix->band, ix->nband);
     for (i = ix->band_start[b]; i < ix->band_start[b + 1]; i++) {
         uint32_t e = ix->band_edge[i];
-        qc_vec2 a = v[e], c = v[ix->next[e]];
-        double cross = (c.x - a.x) * (p.y - a.y) - (c.y - a.y) * (p.x - a.x);
+        int m = qc__ray_edge(p, v[e], v[ix->next[e]]);
 
-        if (cross == 0.0 && p.x >= fmin(a.x, c.x) && p.x <= fmax(a.x, c.x) &&
-            p.y >= fmin(a.y, c.y) && p.y <= fmax(a.y, c.y))
+        if (m == 2)
             return 1;
-        if ((a.y > p.y) != (c.y > p.y)) {
-            double x = a.x + (p.y - a.y) * (c.x - a.x) / (c.y - a.y);
-            if (p.x < x)
-                inside = !inside;
-        }
+        inside ^= m;
     }
     /* horizontal edges are not banded: a point on one is on the boundary */
     return inside || (ix->region->nv > 0 && qc__rindex_near(ix, p, 0.0));

@@ -27,6 +27,9 @@ typedef struct qc__rindex {
 /* Indexes region's edges (region must outlive the index). QC_OK, QC_ENOMEM. */
 QC__HIDDEN int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix);
 QC__HIDDEN void qc__rindex_free(qc_ctx *ctx, qc__rindex *ix);
+/* How edge ab meets the ray from p towards +x: 2 when p lies on ab, 1 when
+ * the ray crosses it (the even-odd rule's count), else 0. */
+QC__HIDDEN int qc__ray_edge(qc_vec2 p, qc_vec2 a, qc_vec2 b);
 /* As qc_region_contains. */
 QC__HIDDEN int qc__rindex_contains(const qc__rindex *ix, qc_vec2 p);
 /* Whether some boundary edge is closer to p than r. */
