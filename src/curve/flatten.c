@@ -11,15 +11,6 @@ static int finite(qc_vec2 p)
     return fabs(p.x) <= 1e300 && fabs(p.y) <= 1e300;
 }
 
-static qc_vec2 mid(qc_vec2 a, qc_vec2 b)
-{
-    qc_vec2 m;
-
-    m.x = 0.5 * (a.x + b.x);
-    m.y = 0.5 * (a.y + b.y);
-    return m;
-}
-
 /* Emits the points after c[0] of one cubic. The curve lies in the hull of
  * its control points, so control points within tol of the chord bound the
  * curve's distance from each emitted chord by tol. Iterative, depth-first,
@@ -47,26 +38,11 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2,
             sp--;
             continue;
         }
-        {
-            /* de Casteljau at t = 1/2: the left half goes on top, q
-             * becomes the right half (popped after the left one). */
-            qc_vec2 p01 = mid(q[0], q[1]), p12 = mid(q[1], q[2]);
-            qc_vec2 p23 = mid(q[2], q[3]);
-            qc_vec2 p012 = mid(p01, p12), p123 = mid(p12, p23);
-            qc_vec2 m = mid(p012, p123);
-            qc_vec2 *r = stack[sp];
-
-            r[0] = q[0];
-            r[1] = p01;
-            r[2] = p012;
-            r[3] = m;
-            q[0] = m;
-            q[1] = p123;
-            q[2] = p23;
-            depth[sp - 1] = d + 1;
-            depth[sp] = d + 1;
-            sp++;
-        }
+        /* halves: the left on top, q becomes the right (popped after it) */
+        qc_cubic_split(q, 0.5, stack[sp], q);
+        depth[sp - 1] = d + 1;
+        depth[sp] = d + 1;
+        sp++;
     }
     return QC_OK;
 }
