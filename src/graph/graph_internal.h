@@ -20,8 +20,12 @@ QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
 QC__HIDDEN int qc__check_points(qc_ctx *ctx, const qc_vec2 *p, size_t n,
                                 const char *who);
 
-/* The sign of |a - b|^2 - |c - d|^2, exactly (a float filter, then
- * expansions): the order that makes both MST modes agree on every input. */
+/* qc_delaunay for points qc__check_points has already passed (qc_mst). */
+QC__HIDDEN int qc__delaunay_checked(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mesh *out);
+
+/* The sign of |a - b|^2 - |c - d|^2, exactly (len2.c: a float filter, then
+ * 128-bit or big integers): the order that makes both MST modes agree on
+ * every input. */
 QC__HIDDEN int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d);
 /*
  * Exact squared lengths as 128-bit integers. Coordinates whose exponents

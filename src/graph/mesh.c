@@ -111,12 +111,18 @@ out_free:
 
 int qc_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mesh *out)
 {
+    memset(out, 0, sizeof *out);
+    QC__TRY(qc__check_points(ctx, p, n, "delaunay"));
+    return qc__delaunay_checked(ctx, p, n, out);
+}
+
+int qc__delaunay_checked(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mesh *out)
+{
     uint32_t *uniq;
     size_t i, m = 0;
     int rc;
 
     memset(out, 0, sizeof *out);
-    QC__TRY(qc__check_points(ctx, p, n, "delaunay"));
     out->n = n;
     if (n == 0)
         return out->status = QC_MESH_TOO_FEW, QC_OK;

@@ -239,7 +239,7 @@ static int mst_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
     size_t m, i;
     int rc;
 
-    QC__TRY(qc_delaunay(ctx, p, n, &mesh));
+    QC__TRY(qc__delaunay_checked(ctx, p, n, &mesh)); /* qc_mst checked p */
     /* The triangles are not needed: free them before the edge sort. */
     qc__free(ctx, mesh.tri, 3 * mesh.tri_cap * sizeof *mesh.tri);
     mesh.tri = NULL;
