@@ -225,32 +225,48 @@ static void len2_big(const ifloat *f, int e, big *out)
     big_add(out, &sq, out);
 }
 
-int qc__cmp_len2_big(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+/* The comparison in big integers, for f = the 8 coordinates decoded and lo
+ * their lowest exponent. */
+static int cmp_big(const ifloat *f, int lo)
 {
-    const double v[8] = {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
-    ifloat f[8];
     big l1, l2;
-    int lo, hi, i;
 
-    for (i = 0; i < 8; i++)
-        if (!ifloat_of(v[i], &f[i]))
-            return 0; /* not finite: callers check points first */
-    span_of(f, 8, &lo, &hi);
-    if (hi == INT_MIN)
-        return 0; /* all zero */
     len2_big(f, lo, &l1);
     len2_big(f + 4, lo, &l2);
     return big_cmp(&l1, &l2);
 }
 
-int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+/* The 8 coordinates of ab and cd decoded; their exponents' span in *lo,
+ * *hi (hi INT_MIN: all zero). 0 if one is not finite. */
+static int decode(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d, ifloat *f, int *lo, int *hi)
 {
     const double v[8] = {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
+    int i;
+
+    for (i = 0; i < 8; i++)
+        if (!ifloat_of(v[i], &f[i]))
+            return 0;
+    span_of(f, 8, lo, hi);
+    return 1;
+}
+
+int qc__cmp_len2_big(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    ifloat f[8];
+    int lo, hi;
+
+    if (!decode(a, b, c, d, f, &lo, &hi) || hi == INT_MIN)
+        return 0; /* not finite (callers check points first), or all zero */
+    return cmp_big(f, lo);
+}
+
+int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
     double ax = a.x - b.x, ay = a.y - b.y, cx = c.x - d.x, cy = c.y - d.y;
     double l1 = ax * ax + ay * ay, l2 = cx * cx + cy * cy;
     uint64_t h1, w1, h2, w2;
     ifloat f[8];
-    int lo, hi, i;
+    int lo, hi;
 
     /* each computed value is within 4 ulps of its exact value, unless a
      * square underflowed: a length under 2^-900 goes the exact way */
@@ -258,14 +274,10 @@ int qc__cmp_len2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
         return 1;
     if (l2 - l1 > 8.0 * EPS * (l1 + l2) && l2 > 0x1p-900)
         return -1;
-    for (i = 0; i < 8; i++)
-        if (!ifloat_of(v[i], &f[i]))
-            return 0;
-    span_of(f, 8, &lo, &hi);
-    if (hi == INT_MIN)
+    if (!decode(a, b, c, d, f, &lo, &hi) || hi == INT_MIN)
         return 0;
     if (hi - lo > QC__INT_SPAN)
-        return qc__cmp_len2_big(a, b, c, d);
+        return cmp_big(f, lo);
     len2_u128(ifloat_at(&f[0], lo) - ifloat_at(&f[2], lo),
               ifloat_at(&f[1], lo) - ifloat_at(&f[3], lo), &h1, &w1);
     len2_u128(ifloat_at(&f[4], lo) - ifloat_at(&f[6], lo),
