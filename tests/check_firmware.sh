@@ -19,16 +19,21 @@ if [ "${BUILD:-build}" != build ] || ! command -v arm-none-eabi-gcc >/dev/null 2
     exit 0
 fi
 
-# fw_link CFLAGS LIBDIR OUT: the core for CFLAGS into LIBDIR, fw_main linked to OUT.
+# fw_lib CFLAGS LIBDIR: the core for CFLAGS into LIBDIR (once).
+fw_lib() {
+    [ -f "$2/libquiltc.a" ] || make -s -C "$ROOT" firmware ARM_BUILD="$2" ARM_CFLAGS="$1" >/dev/null
+}
+
+# fw_link CFLAGS LIBDIR OUT: fw_main linked against that core to OUT.
 fw_link() {
-    make -s -C "$ROOT" firmware ARM_BUILD="$2" ARM_CFLAGS="$1" >/dev/null &&
+    fw_lib "$1" "$2" &&
         arm-none-eabi-gcc $1 -std=c99 -Wall -Wextra -Werror -I"$ROOT/include" -o "$3" \
             "$ROOT/tests/firmware/fw_main.c" "$2/libquiltc.a" -lm -specs=rdimon.specs \
             -Wl,--gc-sections
 }
 
 no_os_symbols() {
-    make -s -C "$ROOT" firmware ARM_BUILD="$WORK/m4" ARM_CFLAGS="$M4" >/dev/null || return 1
+    fw_lib "$M4" "$WORK/m4" || return 1
     extra=$(arm-none-eabi-nm -u "$WORK/m4/libquiltc.a" | awk 'NF == 2 {print $2}' | sort -u |
         grep -v -E '^(qc_|__aeabi_)' |
         grep -v -x -E 'ceil|floor|fmax|fmin|fmod|sqrt|mem(chr|cmp|cpy|move|set)|qsort' |
