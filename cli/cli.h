@@ -68,6 +68,13 @@ int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *pla
 int cli_outputs_finish(cli_output *out, size_t n, int rc);
 /* CLI_OK, or CLI_USAGE after one line when two outputs name one file. */
 int cli_outputs_distinct(const char *const *paths, size_t n);
+/* Writes outputs paths[0..n) (at most CLI_MAX_OUTPUTS) whole or not at
+ * all: each opened under a temporary name and filled by write(ud, i, out),
+ * which returns a CLI status after one line on failure; then all are
+ * renamed into place, or all removed. Two names for one file are refused. */
+#define CLI_MAX_OUTPUTS 16
+typedef int (*cli_write_one)(void *ud, size_t i, cli_output *out);
+int cli_write_outputs(const char *const *paths, size_t n, cli_write_one write, void *ud);
 int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
                     const qc_plan *plan, const qc_io_opts *opts);
 

@@ -6,11 +6,9 @@
 #include "cli.h"
 #include "stats_json.h"
 
-#define MAX_OUTPUTS 16
-
 typedef struct gen_opts {
     cli_pattern_opts pat;
-    const char *out[MAX_OUTPUTS];
+    const char *out[CLI_MAX_OUTPUTS];
     size_t nout;
     const char *format;
     const char *upload;
@@ -63,8 +61,8 @@ static int parse(int argc, char **argv, gen_opts *g)
     while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:qh", opts, NULL)) != -1) {
         switch (c) {
         case 'o':
-            if (g->nout == MAX_OUTPUTS) {
-                cli_error("at most %d outputs", MAX_OUTPUTS);
+            if (g->nout == CLI_MAX_OUTPUTS) {
+                cli_error("at most %d outputs", CLI_MAX_OUTPUTS);
                 rc = CLI_USAGE;
             } else
                 g->out[g->nout++] = optarg;
@@ -172,7 +170,7 @@ int cmd_generate(int argc, char **argv)
     qc_result res = {0};
     qc_plan plan = {0};
     cli_timer timer;
-    int fmt[MAX_OUTPUTS];
+    int fmt[CLI_MAX_OUTPUTS];
     int rc;
 
     memset(&g, 0, sizeof g);

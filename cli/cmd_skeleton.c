@@ -10,11 +10,9 @@
 #include "cli.h"
 #include "concorde.h"
 
-#define MAX_OUTPUTS 16
-
 typedef struct skel_opts {
     cli_pattern_opts pat;
-    const char *out[MAX_OUTPUTS];
+    const char *out[CLI_MAX_OUTPUTS];
     size_t nout;
     const char *format, *path, *tsp;
 } skel_opts;
@@ -51,8 +49,8 @@ static int parse(int argc, char **argv, skel_opts *s)
     optind = 1;
     opterr = 0; /* our own one-line messages */
     while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
-        if (c == 'o' && s->nout == MAX_OUTPUTS) {
-            cli_error("skeleton: at most %d outputs", MAX_OUTPUTS);
+        if (c == 'o' && s->nout == CLI_MAX_OUTPUTS) {
+            cli_error("skeleton: at most %d outputs", CLI_MAX_OUTPUTS);
             rc = CLI_USAGE;
         } else if (c == 'o')
             s->out[s->nout++] = optarg;
@@ -149,34 +147,43 @@ static int write_svg(FILE *f, const qc_region *region, const qc_result *r, int t
     return ferror(f) ? -1 : 0;
 }
 
-/* Every output (JSON, or SVG by its extension) written whole, or none. */
+typedef struct skel_job {
+    const skel_opts *s;
+    const char *const *outs;
+    const qc_region *region;
+    const qc_result *r;
+} skel_job;
+
+/* One output: SVG by its extension, else JSON. */
+static int write_one(void *ud, size_t i, cli_output *o)
+{
+    const skel_job *j = ud;
+    size_t n = strlen(j->outs[i]);
+    int tour = j->s->path != NULL && strcmp(j->s->path, "tsp") == 0;
+
+    if (n > 4 && strcmp(j->outs[i] + n - 4, ".svg") == 0) {
+        if (write_svg(o->f, j->region, j->r, tour) != 0)
+            o->failed = 1;
+    } else {
+        char *json = to_json(j->r, tour);
+        if (json == NULL || fprintf(o->f, "%s\n", json) < 0)
+            o->failed = 1;
+        free(json);
+    }
+    return CLI_OK; /* a failed write is reported when the output is closed */
+}
+
+/* Every output written whole, or none; stdout when there is none. */
 static int write_result(const skel_opts *s, const qc_region *region, const qc_result *r)
 {
     static const char *const to_stdout[] = {"-"};
-    const char *const *outs = s->nout ? s->out : to_stdout;
-    size_t nout = s->nout ? s->nout : 1, i, opened = 0;
-    int tour = s->path != NULL && strcmp(s->path, "tsp") == 0, rc;
-    cli_output o[MAX_OUTPUTS];
+    skel_job j;
 
-    rc = cli_outputs_distinct(outs, nout);
-    for (i = 0; i < nout && rc == CLI_OK; i++) {
-        size_t n = strlen(outs[i]);
-        if (cli_output_open(&o[i], outs[i]) != 0) {
-            rc = CLI_RUNTIME;
-            break;
-        }
-        opened++;
-        if (n > 4 && strcmp(outs[i] + n - 4, ".svg") == 0) {
-            if (write_svg(o[i].f, region, r, tour) != 0)
-                o[i].failed = 1;
-        } else {
-            char *json = to_json(r, tour);
-            if (json == NULL || fprintf(o[i].f, "%s\n", json) < 0)
-                o[i].failed = 1;
-            free(json);
-        }
-    }
-    return cli_outputs_finish(o, opened, rc);
+    j.s = s;
+    j.outs = s->nout ? s->out : to_stdout;
+    j.region = region;
+    j.r = r;
+    return cli_write_outputs(j.outs, s->nout ? s->nout : 1, write_one, &j);
 }
 
 int cmd_skeleton(int argc, char **argv)

@@ -11,7 +11,7 @@
 #include "cli.h"
 
 #define MAX_BLOCKS 1024
-#define MAX_JOB_OUTPUTS 16
+#define MAX_JOB_OUTPUTS CLI_MAX_OUTPUTS
 #define MAX_JOB_BYTES ((size_t)1 << 20)
 #define VALUE_LEN 48
 #define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */

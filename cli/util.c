@@ -268,21 +268,7 @@ double cli_now_ms(void)
 int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
                    const qc_io_opts *opts)
 {
-    cli_output out;
-    int rc;
-
-    if (cli_output_open(&out, path) != 0)
-        return CLI_RUNTIME;
-    rc = qc_io_write(ctx, format, plan, opts, cli_output_write, &out);
-    if (rc < 0) {
-        cli_output_abort(&out);
-        if (rc == QC_EIO)
-            cli_error("cannot write '%s': %s", path, strerror(errno ? errno : EIO));
-        else
-            cli_error("%s: %s", path, qc_errmsg(ctx));
-        return CLI_RUNTIME;
-    }
-    return cli_output_commit(&out) == 0 ? CLI_OK : CLI_RUNTIME;
+    return cli_write_plans(ctx, &path, &format, 1, plan, opts);
 }
 
 int cli_outputs_distinct(const char *const *paths, size_t n)
@@ -303,36 +289,60 @@ int cli_outputs_distinct(const char *const *paths, size_t n)
     return CLI_OK;
 }
 
-int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
-                    const qc_plan *plan, const qc_io_opts *opts)
+int cli_write_outputs(const char *const *paths, size_t n, cli_write_one write, void *ud)
 {
-    cli_output out[16];
+    cli_output out[CLI_MAX_OUTPUTS];
     size_t i, opened = 0;
     int rc = CLI_OK;
 
-    if (n > sizeof out / sizeof out[0]) {
-        cli_error("at most %lu outputs", (unsigned long)(sizeof out / sizeof out[0]));
+    if (n > CLI_MAX_OUTPUTS) {
+        cli_error("at most %d outputs", CLI_MAX_OUTPUTS);
         return CLI_USAGE;
     }
     if (cli_outputs_distinct(paths, n) != CLI_OK)
         return CLI_USAGE;
     for (i = 0; i < n && rc == CLI_OK; i++) {
-        int st;
         if (cli_output_open(&out[i], paths[i]) != 0) {
             rc = CLI_RUNTIME;
             break;
         }
         opened++;
-        st = qc_io_write(ctx, formats[i], plan, opts, cli_output_write, &out[i]);
-        if (st < 0) {
-            if (st == QC_EIO)
-                cli_error("cannot write '%s': %s", paths[i], strerror(errno ? errno : EIO));
-            else
-                cli_error("%s: %s", paths[i], qc_errmsg(ctx));
-            rc = CLI_RUNTIME;
-        }
+        rc = write(ud, i, &out[i]);
     }
     return cli_outputs_finish(out, opened, rc);
+}
+
+typedef struct plan_job {
+    qc_ctx *ctx;
+    const char *const *paths;
+    const int *formats;
+    const qc_plan *plan;
+    const qc_io_opts *opts;
+} plan_job;
+
+static int write_plan_one(void *ud, size_t i, cli_output *out)
+{
+    const plan_job *j = ud;
+    int st = qc_io_write(j->ctx, j->formats[i], j->plan, j->opts, cli_output_write, out);
+
+    if (st == QC_EIO)
+        cli_error("cannot write '%s': %s", j->paths[i], strerror(errno ? errno : EIO));
+    else if (st < 0)
+        cli_error("%s: %s", j->paths[i], qc_errmsg(j->ctx));
+    return st < 0 ? CLI_RUNTIME : CLI_OK;
+}
+
+int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
+                    const qc_plan *plan, const qc_io_opts *opts)
+{
+    plan_job j;
+
+    j.ctx = ctx;
+    j.paths = paths;
+    j.formats = formats;
+    j.plan = plan;
+    j.opts = opts;
+    return cli_write_outputs(paths, n, write_plan_one, &j);
 }
 
 int cli_outputs_finish(cli_output *out, size_t n, int rc)
