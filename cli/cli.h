@@ -27,21 +27,17 @@ void cli_bad_option(const char *command, const char *arg, int c);
 /* Reads a whole file (at most max bytes) into a NUL-terminated buffer. */
 int cli_read_file(const char *path, size_t max, char **buf, size_t *len);
 
-/* An output written whole or not at all: a temp file renamed on commit
- * (beside the file, or beside the file a symbolic link names). A device or
- * FIFO is written in place; "-" is stdout. */
+/* An output being written: a temporary file beside the file (or beside the
+ * file a symbolic link names), renamed into place when every output is
+ * done; a device or FIFO is written in place; "-" is stdout. */
 typedef struct cli_output {
     FILE *f;
     char *path, *tmp; /* tmp NULL: written in place */
-    int failed;
+    int failed;       /* a write failed: reported when it is closed */
 } cli_output;
 
-int cli_output_open(cli_output *out, const char *path);
 /* qc_write_fn over a cli_output. */
 int cli_output_write(void *ud, const void *data, size_t len);
-/* Flushes, syncs and renames into place; on failure removes the temp file. */
-int cli_output_commit(cli_output *out);
-void cli_output_abort(cli_output *out);
 
 /* Strict number parsing: the whole string, finite. 0 on success. */
 int cli_parse_double(const char *s, double *out);
@@ -56,16 +52,6 @@ int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region
 /* Monotonic milliseconds. */
 double cli_now_ms(void);
 
-/* Writes plan as format to path ("-" = stdout) atomically. */
-int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
-                   const qc_io_opts *opts);
-
-/* Writes plan to every path (formats[i]) all or nothing: each is written and
- * closed under a temporary name, then all are renamed into place. */
-/* Finishes opened outputs out[0..n) together: rc CLI_OK and every one
- * closed cleanly, then all are renamed into place; else all are removed.
- * Returns the resulting status. */
-int cli_outputs_finish(cli_output *out, size_t n, int rc);
 /* CLI_OK, or CLI_USAGE after one line when two outputs name one file. */
 int cli_outputs_distinct(const char *const *paths, size_t n);
 /* Writes outputs paths[0..n) (at most CLI_MAX_OUTPUTS) whole or not at
@@ -75,8 +61,11 @@ int cli_outputs_distinct(const char *const *paths, size_t n);
 #define CLI_MAX_OUTPUTS 16
 typedef int (*cli_write_one)(void *ud, size_t i, cli_output *out);
 int cli_write_outputs(const char *const *paths, size_t n, cli_write_one write, void *ud);
+/* The same for a stitch plan in formats[i] to each path ("-" = stdout). */
 int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, size_t n,
                     const qc_plan *plan, const qc_io_opts *opts);
+int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
+                   const qc_io_opts *opts);
 
 /* Reads a .pat or .svg pattern into a plan. CLI_* status. */
 int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan);
