@@ -119,6 +119,9 @@ $(BUILD)/obj/tests/%.o: tests/%.c $(BUILD)/obj/tests/%.d
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_SRC_CFLAGS) -Itests/fuzz $(JSON_CFLAGS) $(DEPFLAGS) -c $< -o $@
 
+# test objects are kept (not deleted as intermediate files) for the next run
+.SECONDARY: $(TEST_SRC:%.c=$(BUILD)/obj/%.o)
+
 $(UNITY_OBJ): $(UNITY_SRC) $(UNITY_OBJ:.o=.d)
 	@mkdir -p $(dir $@)
 	$(CC) $(TEST_CFLAGS) $(DEPFLAGS) -c $< -o $@

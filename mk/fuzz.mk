@@ -52,6 +52,8 @@ REPLAY_BINS := $(FUZZ_ALL:%=$(BUILD)/fuzz-replay/fuzz_%)
 REPLAY_OBJ  := $(BUILD)/obj/tests/fuzz/replay_main.o $(BUILD)/obj/tests/support/testalloc.o
 REPLAY_JOB_CLI_OBJ := $(FUZZ_JOB_CLI:%.c=$(BUILD)/obj/%.o)
 
+.SECONDARY: $(FUZZ_ALL:%=$(BUILD)/obj/tests/fuzz/fuzz_%.o)
+
 $(BUILD)/fuzz-replay/fuzz_job: $(BUILD)/obj/tests/fuzz/fuzz_job.o $(REPLAY_OBJ) $(REPLAY_JOB_CLI_OBJ) $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $^ $(JSON_LIBS) $(LIBM)
