@@ -16,9 +16,9 @@ WASM_PAGE   = $(patsubst wasm/web/%,$(WASM_DIR)/%,$(wildcard wasm/web/*))
 .PHONY: wasm serve
 wasm: $(WASM_DIR)/quiltc.mjs $(WASM_PAGE)
 
-$(WASM_OBJDIR)/%.o: %.c $(HEADERS) $(wildcard src/*/*.h) wasm/quiltc_wasm.h
+$(WASM_OBJDIR)/%.o: %.c $(WASM_OBJDIR)/%.d
 	@mkdir -p $(dir $@)
-	$(WASM_EMCC) $(WASM_CFLAGS) -c $< -o $@
+	$(WASM_EMCC) $(WASM_CFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(WASM_DIR)/quiltc.mjs: $(WASM_OBJ) wasm/exports.txt
 	@mkdir -p $(WASM_DIR)
@@ -30,9 +30,11 @@ $(WASM_DIR)/%: wasm/web/%
 
 $(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c wasm/quiltc_wasm.c wasm/quiltc_wasm.h $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
+	$(CC) $(BASE_CFLAGS) $(LDFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
 
 SERVE_PORT ?= 8000
 serve: wasm
 	@echo "quiltc page: http://localhost:$(SERVE_PORT)/ (Ctrl-C stops)"
 	cd $(WASM_DIR) && python3 -m http.server $(SERVE_PORT)
+
+DEP_FILES += $(WASM_OBJ:.o=.d)
