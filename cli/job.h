@@ -35,6 +35,10 @@ typedef struct job {
     size_t n;
 } job;
 
+/* Parses a job file's text strictly: no key twice in one object, nothing
+ * after the value, nesting within cJSON's limit. NULL after one line. */
+cJSON *cli_json_parse(const char *buf, size_t len, const char *file);
+
 /* Reads the parsed document root into *j (zeroed by the caller): every key
  * known, every value of the right type and range, each block's parameters
  * as cli_pattern_opts (converted later by cli_pattern_finish). CLI_OK, or
@@ -50,8 +54,14 @@ typedef struct cli_job_names {
 
 /* Rewrites the job's file names relative to the directory of file (the job
  * file's path); the new strings go to *names (free with
- * cli_job_names_free). CLI_OK, or an error after one line. */
-int cli_job_resolve_names(job *j, const char *file, cli_job_names *names);
+ * cli_job_names_free). Unless allow_outside, every file name must stay
+ * inside that folder (cli_path_inside). CLI_OK, or an error after one line. */
+int cli_job_resolve_names(job *j, const char *file, int allow_outside, cli_job_names *names);
 void cli_job_names_free(cli_job_names *names);
+
+/* CLI_OK when name (as the job wrote it; path, the name resolved beside the
+ * job) is relative, has no "..", and resolves inside root (the job's
+ * folder, resolved); else CLI_USAGE after one line starting with what. */
+int cli_path_inside(const char *root, const char *name, const char *path, const char *what);
 
 #endif
