@@ -23,10 +23,8 @@ static int make_block(qc_ctx *ctx, block *b)
     qc_result res = {0};
     double mm, c, s;
     size_t i;
-    int rc = cli_pattern_finish(ctx, &b->pat);
+    int rc = cli_pattern_load(ctx, &b->pat, &region, &given); /* params: cli_job_budget */
 
-    if (rc == CLI_OK)
-        rc = cli_pattern_load(ctx, &b->pat, &region, &given);
     if (rc == CLI_OK && b->pat.motifs != NULL)
         rc = cli_load_motifs(ctx, b->pat.motifs, &motifs);
     if (rc == CLI_OK && qc_generate(ctx, &region, &b->pat.params, &given,
@@ -115,6 +113,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
     size_t i;
     int rc = order == NULL ? CLI_RUNTIME : CLI_OK;
 
+    if (rc == CLI_OK)
+        rc = cli_job_budget(ctx, j);
     for (i = 0; i < j->n && rc == CLI_OK; i++) {
         order[i] = &j->blocks[i];
         rc = make_block(ctx, &j->blocks[i]);

@@ -15,6 +15,7 @@
 #define MAX_JOB_BYTES ((size_t)1 << 20)
 #define VALUE_LEN 48
 #define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
+#define JOB_MAX_TSP_MS 600000.0 /* the blocks' tsp-time together: one block's maximum */
 
 typedef struct block {
     cli_pattern_opts pat;
@@ -45,6 +46,12 @@ cJSON *cli_json_parse(const char *buf, size_t len, const char *file);
  * CLI_USAGE after one line naming the key ("job: blocks[2].at: ...").
  * Strings point into root; free j->blocks with free(). */
 int cli_job_parse(job *j, const cJSON *root);
+
+/* Converts every block's parameters (cli_pattern_finish) and checks the
+ * job's total budget before any work: the blocks' estimated points within
+ * QC_MAX_POINTS, their tsp-time within JOB_MAX_TSP_MS. CLI_OK, or an error
+ * after one line naming the block where the budget ran out. */
+int cli_job_budget(qc_ctx *ctx, job *j);
 
 /* Strings made for a job's resolved file names. */
 typedef struct cli_job_names {
