@@ -30,7 +30,9 @@ static void finding(tally *t, const char *fmt, double a, double b)
 
 static void print_dialect(void *ud, size_t line, const char *kind, const char *text)
 {
-    printf("line %lu: %s: %s\n", (unsigned long)line, kind, text);
+    printf("line %lu: %s: ", (unsigned long)line, kind);
+    cli_put_escaped(stdout, text); /* it may quote the file */
+    putchar('\n');
     ((tally *)ud)->findings++;
 }
 
@@ -222,7 +224,8 @@ int cmd_check(int argc, char **argv)
         return rc;
     if (dialect > t.findings)
         t.findings = dialect;
-    printf("%s: %lu finding%s: %s\n", o.file, (unsigned long)t.findings,
+    cli_put_escaped(stdout, o.file);
+    printf(": %lu finding%s: %s\n", (unsigned long)t.findings,
            t.findings == 1 ? "" : "s", t.findings ? "not sewable" : "sewable");
     return t.findings == 0 ? CLI_OK : CLI_RUNTIME;
 }
