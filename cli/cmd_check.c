@@ -225,13 +225,14 @@ int cmd_check(int argc, char **argv)
     rc = parse(argc, argv, &o);
     if (rc != CLI_OK)
         return rc < 0 ? CLI_OK : rc;
+    if (cli_read_file(o.file, (size_t)256 << 20, &buf, &len) != 0)
+        return CLI_RUNTIME;
     if (qc_format_from_name(o.file) < 0) {
+        free(buf);
         cli_error("check: '%s': cannot read this format (pat, qli, dxf, plt, qcc, iqp, bqm, "
                   "gcode, svg)", o.file);
         return CLI_USAGE;
     }
-    if (cli_read_file(o.file, (size_t)256 << 20, &buf, &len) != 0)
-        return CLI_RUNTIME;
     qc_ctx_init(&ctx, NULL, NULL);
     rc = read_pattern(&ctx, &o, buf, len, &t, &plan, &dialect);
     free(buf);

@@ -262,7 +262,7 @@ static void test_malformed_files_should_fail_naming_the_line(void)
     REFUSES(QC_FORMAT_QLI, "CS\nVP 1,2\nVP 1;2\n", QC_EFORMAT, "qli line 3");
     REFUSES(QC_FORMAT_QLI, "CS\nXQ 5\n", QC_EFORMAT, "unknown command");
     REFUSES(QC_FORMAT_QLI, "VP 1,1\nVP 99999999999,0\n", QC_ERANGE, "qli line 2");
-    REFUSES(QC_FORMAT_QLI, "CS\nVE\nEN\n", QC_EEMPTY, "no stitch");
+    REFUSES(QC_FORMAT_QLI, "CS\nVE\nEN\n", QC_EEMPTY, "no move");
     REFUSES(QC_FORMAT_HPGL, "IN;\nSC0,100,0,100;PD1,1;", QC_EFORMAT, "hpgl line 2: SC");
     REFUSES(QC_FORMAT_HPGL, "IN;PU1,1;PD5;", QC_EFORMAT, "y coordinate");
     REFUSES(QC_FORMAT_QCC, "p X1 Y1\n", QC_EFORMAT, "qcc line 1");
@@ -286,42 +286,58 @@ static void test_malformed_files_should_fail_naming_the_line(void)
             "after the end record");
 }
 
-/* Every failed allocation gives QC_ENOMEM, an empty plan and no leak. */
+/* Every failed allocation reading text gives QC_ENOMEM, an empty plan
+ * and no leak; the run that fails nothing reads want points. */
+static void survive_oom(int format, const char *text, size_t len, size_t want)
+{
+    size_t k;
+
+    for (k = 1;; k++) {
+        testalloc t;
+        qc_ctx c;
+        qc_plan out;
+        int rc;
+
+        memset(&t, 0, sizeof t);
+        t.fail_at = k;
+        qc_ctx_init(&c, testalloc_fn, &t);
+        rc = qc_io_read(&c, format, text, len, &out);
+        TEST_ASSERT_FALSE(t.size_mismatch);
+        if (rc == QC_OK) {
+            TEST_ASSERT_EQUAL_size_t(want, out.n);
+            qc_plan_free(&c, &out);
+            TEST_ASSERT_EQUAL_size_t(0, t.live_blocks);
+            return;
+        }
+        TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
+        TEST_ASSERT_EQUAL_size_t(0, out.n);
+        TEST_ASSERT_EQUAL_size_t(0, t.live_blocks);
+    }
+}
+
 static void test_readers_should_survive_every_failed_allocation(void)
 {
     static const int formats[] = {QC_FORMAT_QLI, QC_FORMAT_DXF, QC_FORMAT_HPGL, QC_FORMAT_QCC,
                                   QC_FORMAT_IQP, QC_FORMAT_BQM, QC_FORMAT_GCODE};
-    qc_plan in;
+    /* A rational spline: knots, weights before the control points. */
+    static const char spline[] =
+        "0\nSECTION\n2\nENTITIES\n0\nSPLINE\n70\n8\n71\n2\n72\n6\n73\n3\n"
+        "40\n0\n40\n0\n40\n0\n40\n1\n40\n1\n40\n1\n41\n1\n41\n2\n41\n1\n"
+        "10\n0\n20\n0\n10\n50\n20\n80\n10\n100\n20\n0\n0\nENDSEC\n0\nEOF\n";
+    qc_plan in, sp;
     size_t f;
 
     sample_plan(&in);
     for (f = 0; f < sizeof formats / sizeof formats[0]; f++) {
         buf b = encode(formats[f], &in);
-        size_t k;
 
-        for (k = 1;; k++) {
-            testalloc t;
-            qc_ctx c;
-            qc_plan out;
-            int rc;
-
-            memset(&t, 0, sizeof t);
-            t.fail_at = k;
-            qc_ctx_init(&c, testalloc_fn, &t);
-            rc = qc_io_read(&c, formats[f], b.p, b.n, &out);
-            if (rc == QC_OK) {
-                TEST_ASSERT_EQUAL_size_t(in.n, out.n);
-                qc_plan_free(&c, &out);
-                TEST_ASSERT_EQUAL_size_t(0, t.live_blocks);
-                break;
-            }
-            TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
-            TEST_ASSERT_EQUAL_size_t(0, out.n);
-            TEST_ASSERT_EQUAL_size_t(0, t.live_blocks);
-            TEST_ASSERT_FALSE(t.size_mismatch);
-        }
+        survive_oom(formats[f], b.p, b.n, in.n);
         free(b.p);
     }
+    read_text(QC_FORMAT_DXF, spline, &sp);
+    TEST_ASSERT_TRUE(sp.n > 100);
+    survive_oom(QC_FORMAT_DXF, spline, sizeof spline - 1, sp.n);
+    qc_plan_free(&ctx, &sp);
     qc_plan_free(&ctx, &in);
 }
 

@@ -154,7 +154,11 @@ int qc__reader_arc(qc__reader *r, qc_vec2 c, double sweep, qc_vec2 end)
 
 int qc__reader_finish(qc__reader *r)
 {
+    /* A file that only places the needle is a one-point pattern, as a PAT
+     * of one G00 line is (writers drop moves that round onto the last). */
+    if (r->plan->n == 0 && r->placed)
+        return push(r, r->pos, QC_ST_JUMP);
     if (r->plan->n == 0)
-        return qc__fail(r->ctx, QC_EEMPTY, "%s: no stitch in the file", r->format);
+        return qc__fail(r->ctx, QC_EEMPTY, "%s: no move in the file", r->format);
     return QC_OK;
 }

@@ -37,7 +37,8 @@ typedef struct dxf {
     size_t nv, v_cap;
     double *knots;
     size_t nk, k_cap;
-    size_t nw;          /* spline weights read */
+    double *w;          /* spline weights (group 41, before or after the points) */
+    size_t nw, w_cap;
     int mirrored;       /* extrusion z < 0 (group 230) */
     int in_polyline;    /* between POLYLINE and SEQEND */
     int poly_mirrored;
@@ -154,6 +155,14 @@ static int emit_polyline(dxf *d, int closed)
     return QC_OK;
 }
 
+/* A CCW sweep brought into (0, 2 pi]; fmod is exact, so huge angles from a
+ * hostile file cost nothing. */
+static double sweep_in_turn(double sweep)
+{
+    sweep = fmod(sweep, 2 * QC_PI);
+    return sweep <= 0 ? sweep + 2 * QC_PI : sweep;
+}
+
 /* ARC and CIRCLE: centre 10/20, radius 40, angles 50/51 in degrees. */
 static int emit_arc(dxf *d, int circle)
 {
@@ -161,12 +170,9 @@ static int emit_arc(dxf *d, int circle)
     double r = d->g[40] * d->unit, a0 = circle ? 0 : d->g[50] * QC_PI / 180;
     double sweep = circle ? 2 * QC_PI : (d->g[51] - d->g[50]) * QC_PI / 180;
 
-    if (!(r > 0))
-        return bad(d, "an arc or circle needs a radius > 0");
-    while (sweep <= 0)
-        sweep += 2 * QC_PI;
-    while (sweep > 2 * QC_PI)
-        sweep -= 2 * QC_PI;
+    if (!(r > 0) || !(fabs(d->g[50]) <= 1e6 && fabs(d->g[51]) <= 1e6))
+        return bad(d, "an arc or circle needs a radius > 0 and angles within 1e6 degrees");
+    sweep = sweep_in_turn(sweep);
     if (d->mirrored) { /* the world sees the OCS arc mirrored in x */
         a0 = QC_PI - a0;
         sweep = -sweep;
@@ -185,11 +191,10 @@ static int emit_ellipse(dxf *d)
     double a = sqrt(M.x * M.x + M.y * M.y), sweep = t1 - t0, step, steps;
     size_t i, n;
 
-    if (!(a > 0) || !(k > 0 && k <= 1))
+    if (!(a > 0) || !(k > 0 && k <= 1) || !(fabs(t0) <= 1e6 && fabs(t1) <= 1e6))
         return bad(d, "an ellipse needs a major axis and a ratio in (0, 1]");
     N = QC__V2(-M.y * k, M.x * k);
-    while (sweep <= 0)
-        sweep += 2 * QC_PI;
+    sweep = sweep_in_turn(sweep);
     step = sqrt(8 * 0.05 / a);
     if (step > QC_PI / 8)
         step = QC_PI / 8;
@@ -233,7 +238,7 @@ static qc_vec2 de_boor(const dxf *d, int p, size_t span, double u, double *tmp)
 
 static int emit_spline(dxf *d)
 {
-    int p = d->has[71] ? (int)d->g[71] : 3;
+    int p = d->has[71] && d->g[71] >= 1 && d->g[71] <= 11 ? (int)d->g[71] : d->has[71] ? 0 : 3;
     double tmp[3 * 12], len = 0, u0, u1, steps;
     size_t k, n, span;
 
@@ -244,9 +249,13 @@ static int emit_spline(dxf *d)
     for (k = 1; k < d->nk; k++)
         if (!(d->knots[k] >= d->knots[k - 1]))
             return bad(d, "a SPLINE's knots must not decrease");
-    for (k = 0; k < d->nv; k++)
-        if (!(d->v[k].bulge > 0))
+    if (d->nw != 0 && d->nw != d->nv)
+        return bad(d, "a SPLINE needs one weight per control point, or none");
+    for (k = 0; k < d->nw; k++) {
+        if (!(d->w[k] > 0))
             return bad(d, "a SPLINE's weights must be > 0");
+        d->v[k].bulge = d->w[k];
+    }
     for (k = 1; k < d->nv; k++)
         len += hypot(d->v[k].x - d->v[k - 1].x, d->v[k].y - d->v[k - 1].y) * d->unit;
     u0 = d->knots[p];
@@ -330,6 +339,8 @@ static int entity_group(dxf *d)
         return QC_OK; /* handles, names, layers, subclass markers */
     if (d->code >= 60 && d->code < 80) {
         QC__TRY(number(d, &v));
+        if (!(fabs(v) <= 2147483647.0) || v != floor(v))
+            return bad(d, "expected an integer");
         if (d->code == 70)
             d->flags = (int)v;
         d->g[d->code] = v;
@@ -347,10 +358,8 @@ static int entity_group(dxf *d)
         QC__TRY(QC__RESERVE(d->r.ctx, d->knots, d->k_cap, d->nk + 1));
         d->knots[d->nk++] = v;
     } else if (sp && d->code == 41) {
-        /* weights follow the control points in order */
-        if (d->nw >= d->nv)
-            return bad(d, "more SPLINE weights than control points");
-        d->v[d->nw++].bulge = v;
+        QC__TRY(QC__RESERVE(d->r.ctx, d->w, d->w_cap, d->nw + 1));
+        d->w[d->nw++] = v;
         return QC_OK;
     }
     if (d->code < 100) {
@@ -439,6 +448,8 @@ int qc__read_dxf(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
         qc__free(ctx, d.v, d.v_cap * sizeof *d.v);
     if (d.knots)
         qc__free(ctx, d.knots, d.k_cap * sizeof *d.knots);
+    if (d.w)
+        qc__free(ctx, d.w, d.w_cap * sizeof *d.w);
     if (rc == QC_OK)
         rc = qc__reader_finish(&d.r);
     return rc;

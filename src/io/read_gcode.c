@@ -67,6 +67,8 @@ static int parse_words(gcode *c, const char *s, size_t n, words *w)
         i++;
         if (!qc__scan_num(s, n, &i, &v))
             return bad(c, "expected a number after the letter", s, n);
+        if ((L == 'G' || L == 'M') && !(v >= 0 && v < 1000))
+            return bad(c, L == 'G' ? "unsupported G code" : "unsupported M code", s, n);
         if (L == 'G') {
             if (w->ng == 8)
                 return bad(c, "too many G words on one line", s, n);
