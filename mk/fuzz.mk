@@ -11,8 +11,8 @@
 FUZZ_CC      ?= clang
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= svg_region motif pat points generate job
-FUZZ_ALL     := svg_region motif pat points generate job
+FUZZ_TARGETS ?= svg_region motif pat points generate job read
+FUZZ_ALL     := svg_region motif pat points generate job read
 
 FUZZ_SAN      = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_CFLAGS   = -g -O1 $(WARN) -ffp-contract=off -Iinclude -Isrc/core $(FUZZ_SAN)
