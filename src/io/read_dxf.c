@@ -256,8 +256,11 @@ static int emit_spline(dxf *d)
             return bad(d, "a SPLINE's weights must be > 0");
         d->v[k].bulge = d->w[k];
     }
-    for (k = 1; k < d->nv; k++)
-        len += hypot(d->v[k].x - d->v[k - 1].x, d->v[k].y - d->v[k - 1].y) * d->unit;
+    for (k = 1; k < d->nv; k++) {
+        double dx = d->v[k].x - d->v[k - 1].x, dy = d->v[k].y - d->v[k - 1].y;
+
+        len += sqrt(dx * dx + dy * dy) * d->unit; /* not hypot: libm's differs by platform */
+    }
     u0 = d->knots[p];
     u1 = d->knots[d->nv];
     if (!(u1 > u0))
