@@ -11,7 +11,7 @@ ROOT=$(pwd)
 ARM_FLAGS="-mthumb -mfloat-abi=hard -ffunction-sections -fdata-sections -ffp-contract=off"
 M4="-Os -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 $ARM_FLAGS"
 A7="-Os -march=armv7-a+fp $ARM_FLAGS" # a CPU qemu-arm runs; newlib semihosting by SVC
-FAMILIES="vine branching wanderer pebbling packing fill stipple echo spiral"
+FAMILIES="vine branching wanderer pebbling packing fill stipple echo spiral meander"
 
 if [ "${BUILD:-build}" != build ] || ! command -v arm-none-eabi-gcc >/dev/null 2>&1; then
     printf '\n-----------------------\n1 Tests 0 Failures 1 Ignored\nOK\n'

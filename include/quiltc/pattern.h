@@ -26,6 +26,7 @@ typedef enum qc_family {
     QC_FAMILY_STIPPLE,   /* §7.1 stippling / meander */
     QC_FAMILY_ECHO,
     QC_FAMILY_SPIRAL,
+    QC_FAMILY_MEANDER,   /* one closed curve grown by curve evolution */
     QC_FAMILY_COUNT
 } qc_family;
 
@@ -78,6 +79,9 @@ typedef struct qc_params {
     double repeat_cols; /* tiles across (tiles) */
     double repeat_rows; /* tiles down (tiles) */
     double start_x, start_y; /* where to start: nearest point becomes the root */
+    double wiggle;      /* meander: irregularity, 0..1 */
+    double turn_radius; /* meander: smallest turn radius */
+    double iterations;  /* meander: rounds of curve evolution */
     /* Not in the table: non-zero leaves qc_stats.largest_gap_mm at 0. The
      * measure never changes the path but costs about a third of a stipple,
      * so a live preview skips it. */

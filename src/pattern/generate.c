@@ -25,13 +25,15 @@ static qc_family_fn family_fn(int family)
     case QC_FAMILY_STIPPLE: return qc_deco_stipple;
     case QC_FAMILY_ECHO: return qc_deco_echo;
     case QC_FAMILY_SPIRAL: return qc_deco_spiral;
+    case QC_FAMILY_MEANDER: return qc_deco_meander;
     default: return NULL;
     }
 }
 
 static int needs_points(int family)
 {
-    return family != QC_FAMILY_ECHO && family != QC_FAMILY_SPIRAL;
+    /* meander samples its own seed tree, 2d apart */
+    return family != QC_FAMILY_ECHO && family != QC_FAMILY_SPIRAL && family != QC_FAMILY_MEANDER;
 }
 
 static void trace(qc_ctx *ctx, const char *stage)

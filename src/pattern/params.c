@@ -17,7 +17,7 @@
 #define OFF(field) offsetof(qc_params, field)
 
 static const char family_names[] =
-    "vine|branching|wanderer|pebbling|packing|fill|stipple|echo|spiral";
+    "vine|branching|wanderer|pebbling|packing|fill|stipple|echo|spiral|meander";
 
 static const qc_param_info table[] = {
     {"family", "pattern family (default stipple)", "", QC_PARAM_ENUM, family_names,
@@ -68,6 +68,12 @@ static const qc_param_info table[] = {
      QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, F_ALL, OFF(start_x)},
     {"start-y", "start near this y", "mm", QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, F_ALL,
      OFF(start_y)},
+    {"wiggle", "meander irregularity: 0 smooth, 1 restless", "ratio", QC_PARAM_REAL, NULL, 0, 1,
+     0.5, 0, FAM(MEANDER), OFF(wiggle)},
+    {"turn-radius", "meander's smallest turn radius (default d/4)", "mm", QC_PARAM_LENGTH, NULL,
+     0.05, 1000, 0, 0.25, FAM(MEANDER), OFF(turn_radius)},
+    {"iterations", "meander: rounds of curve evolution (work, not time)", "count", QC_PARAM_INT,
+     NULL, 0, 100000, 60, 0, FAM(MEANDER), OFF(iterations)},
 };
 
 #define NPARAMS (sizeof table / sizeof table[0])
@@ -121,7 +127,7 @@ const char *qc_family_name(int family)
 {
     static const char *const names[QC_FAMILY_COUNT] = {
         "default", "vine", "branching", "wanderer", "pebbling",
-        "packing", "fill", "stipple", "echo", "spiral"};
+        "packing", "fill", "stipple", "echo", "spiral", "meander"};
 
     return family >= 0 && family < QC_FAMILY_COUNT ? names[family] : NULL;
 }
