@@ -3,7 +3,7 @@
  * that fills the region at line spacing d. It starts as the outline of a
  * spanning tree over Poisson points 2d apart, drawn d/2 to each side (so
  * neighbouring lines already lie about d apart), and is then evolved
- * (meander_grow.c) until its spacing evens out, its lobes round and it
+ * (family_meander_grow.c) until its spacing evens out, its lobes round and it
  * reaches into the corners. Sewn through a closed Catmull-Rom spline from
  * the vertex nearest the start; a requested start also gets legs out to
  * the boundary there, so patches can be joined.
@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "meander_internal.h"
+#include "family_meander.h"
 
 #define SEED_SPACING 2.0  /* tree points, times d */
 #define CLEAR 0.4         /* distance kept from the boundary, times d */

@@ -1,9 +1,9 @@
 /*
- * The meander's curve evolution (meander_grow.c), shared with meander.c
+ * The meander's curve evolution (family_meander_grow.c), shared with family_meander.c
  * and the tests.
  */
-#ifndef QC_MEANDER_INTERNAL_H
-#define QC_MEANDER_INTERNAL_H
+#ifndef QC_FAMILY_MEANDER_H
+#define QC_FAMILY_MEANDER_H
 
 #include "deco_internal.h"
 

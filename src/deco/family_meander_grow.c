@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "meander_internal.h"
+#include "family_meander.h"
 
 #define SEG_MIN 0.2      /* vertex spacing band, times d */
 #define SEG_MAX 0.45
