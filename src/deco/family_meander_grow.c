@@ -11,8 +11,8 @@
 
 #include "family_meander.h"
 
-#define SEG_MIN 0.2      /* vertex spacing band, times d */
-#define SEG_MAX 0.45
+#define SEG_MIN 0.25     /* vertex spacing band, times d */
+#define SEG_MAX 0.55
 #define STEP_MAX 0.04    /* largest move of a vertex in one round, times d */
 #define FAIR 0.12        /* Laplacian fairing weight */
 #define FAIR_TIGHT 0.45  /* fairing where the curve turns tighter than allowed */
@@ -28,6 +28,12 @@
 #define CLEAR_WAVE 2.5   /* wavelength of the clearance's waves, times d */
 #define CLEAR_SWING 0.4  /* their amplitude, times the clearance */
 #define LINE_TABLE 64
+
+/* A vertex as the repulsion pass reads it, in cell order. */
+typedef struct qc__grow_vert {
+    double x, y, reach;
+    uint32_t i;
+} qc__grow_vert;
 #define LINE_VERTEX 0.33 /* the mean vertex spacing the mirror assumes, times d */
 
 typedef struct grow {
@@ -36,7 +42,12 @@ typedef struct grow {
     uint32_t *cell;     /* per vertex: its grid cell */
     uint32_t *idx;      /* vertices sorted by cell */
     qc_vec2 *f;         /* per vertex: summed repulsion */
-    size_t idx_cap, cell_cap, f_cap;
+    double *reach;      /* per vertex: half its longer segment plus two moves */
+    unsigned char *close; /* per vertex: something not next to it is within reach */
+    qc__grow_vert *sv;  /* cell order: the vertices */
+    qc_vec2 *sf;        /* cell order: their repulsion */
+    unsigned char *sc;  /* cell order: their close flags */
+    size_t idx_cap, cell_cap, f_cap, reach_cap, close_cap, sv_cap, sf_cap, sc_cap;
     uint32_t *start;    /* per cell: first entry in idx (ncell + 1) */
     size_t gx, gy;
     double x0, y0, h;
@@ -67,6 +78,11 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->cell, g->cell_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->idx, g->idx_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->f, g->f_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->reach, g->reach_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->close, g->close_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->sv, g->sv_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->sf, g->sf_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->sc, g->sc_cap, g->n));
     memset(g->start, 0, (nc + 1) * sizeof *g->start);
     for (i = 0; i < g->n; i++) {
         g->cell[i] = (uint32_t)cell_index(g, g->p[i]);
@@ -100,38 +116,56 @@ static size_t ring_gap(size_t i, size_t j, size_t n)
     return k < n - k ? k : n - k;
 }
 
-/* The pair (i, j), each pushed off the other if they are nearer than R
- * and not neighbours along the curve. */
-static void repel_pair(grow *g, size_t i, size_t j, double R)
+/* The pair at sorted slots a, b: each pushed off the other if they are
+ * nearer than R and not neighbours along the curve. */
+static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
 {
-    double dx = g->p[i].x - g->p[j].x, dy = g->p[i].y - g->p[j].y, r2 = dx * dx + dy * dy, r, k;
+    const qc__grow_vert *u = &g->sv[a], *w = &g->sv[b];
+    double dx = u->x - w->x, dy = u->y - w->y, r2 = dx * dx + dy * dy, r, k;
 
-    if (r2 >= R * R || r2 < 1e-18 || ring_gap(i, j, g->n) <= 1)
+    if (r2 >= R2 || ring_gap(u->i, w->i, g->n) <= 1)
         return;
+    if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
+        g->sc[a] = g->sc[b] = 1;
+        return;
+    }
     r = sqrt(r2);
+    if (r < u->reach + w->reach) /* their segments might cross after the move */
+        g->sc[a] = g->sc[b] = 1;
     k = (1.0 - r / R) / r;
-    g->f[i].x += dx * k;
-    g->f[i].y += dy * k;
-    g->f[j].x -= dx * k;
-    g->f[j].y -= dy * k;
+    g->sf[a].x += dx * k;
+    g->sf[a].y += dy * k;
+    g->sf[b].x -= dx * k;
+    g->sf[b].y -= dy * k;
 }
 
 /* Every vertex's summed repulsion from the vertices within R of it (as
- * unit vectors weighted 1 - r / R) into g->f: each pair once, cell by cell
- * against the cell itself and four of its neighbours. */
+ * unit vectors weighted 1 - r / R) into g->f, and the close flags: each
+ * pair once, cell by cell against the cell itself and four of its
+ * neighbours, on copies in cell order (the curve's own order scatters in
+ * memory). */
 static void repulsion(grow *g, double R)
 {
     static const int nb[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    size_t cx, cy, a, b;
+    size_t cx, cy, a, b, n = g->n;
+    double R2 = R * R;
     int t;
 
-    memset(g->f, 0, g->n * sizeof *g->f);
+    for (a = 0; a < n; a++) {
+        uint32_t i = g->idx[a];
+        g->sv[a].x = g->p[i].x;
+        g->sv[a].y = g->p[i].y;
+        g->sv[a].reach = g->reach[i];
+        g->sv[a].i = i;
+        g->sf[a].x = g->sf[a].y = 0.0;
+        g->sc[a] = 0;
+    }
     for (cy = 0; cy < g->gy; cy++)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
             for (a = g->start[c]; a < g->start[c + 1]; a++)
                 for (b = a + 1; b < g->start[c + 1]; b++)
-                    repel_pair(g, g->idx[a], g->idx[b], R);
+                    repel_pair(g, a, b, R, R2);
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
@@ -140,9 +174,14 @@ static void repulsion(grow *g, double R)
                 cc = (size_t)y * g->gx + (size_t)x;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     for (b = g->start[cc]; b < g->start[cc + 1]; b++)
-                        repel_pair(g, g->idx[a], g->idx[b], R);
+                        repel_pair(g, a, b, R, R2);
             }
         }
+    for (a = 0; a < n; a++) {
+        uint32_t i = g->idx[a];
+        g->f[i] = g->sf[a];
+        g->close[i] |= g->sc[a];
+    }
 }
 
 /* The summed repulsion (as repulsion() gives it, in units of R) on a
@@ -222,6 +261,18 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
     double reach_b = o->clear * (1.0 + CLEAR_SWING) * REACH;
     size_t n = g->n, i;
 
+    /* Two segments that cross after moves of at most cap have endpoints,
+     * one of each, within half of each one's length plus cap of each other
+     * before: the repulsion pass flags those (close), and the guard checks
+     * only flagged segments. Sharp turns (over 90 degrees) are flagged too:
+     * there a segment may cross the one after next. */
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = g->p[i == 0 ? n - 1 : i - 1], p = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
+        double la = qc_hypot(p.x - a.x, p.y - a.y), lb = qc_hypot(b.x - p.x, b.y - p.y);
+
+        g->reach[i] = 0.5 * (la > lb ? la : lb) + cap;
+        g->close[i] = (p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) <= 0.0;
+    }
     repulsion(g, REACH * d);
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[i == 0 ? n - 1 : i - 1], p = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
@@ -253,7 +304,9 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         }
         g->q[i].x = p.x + m.x;
         g->q[i].y = p.y + m.y;
-        if (v >= 0.0) /* the boundary is a wall for what is inside */
+        /* the boundary is a wall for what is inside (the field changes by
+         * at most the move, give or take its grid's interpolation) */
+        if (v >= 0.0 && v - cap < 0.5 * o->clear + 2.0 * o->sdf->h)
             g->q[i] = keep_inside(o, g->q[i]);
     }
 }
@@ -319,12 +372,14 @@ static size_t undo_crossings(grow *g)
         size_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < g->gx ? cx + 1 : cx;
         size_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < g->gy ? cy + 1 : cy, x, y, k;
 
+        if (!g->close[i] && !g->close[i1])
+            continue;
         for (y = y0; y <= y1; y++)
             for (x = x0; x <= x1; x++) {
                 size_t cc = y * g->gx + x;
                 for (k = g->start[cc]; k < g->start[cc + 1]; k++) {
                     size_t j = g->idx[k], j1 = j + 1 == n ? 0 : j + 1;
-                    if (j <= i || ring_gap(i, j, n) < 2)
+                    if (j <= i || (!g->close[j] && !g->close[j1]) || ring_gap(i, j, n) < 2)
                         continue;
                     if (!seg_cross(g->q[i], g->q[i1], g->q[j], g->q[j1]))
                         continue;
@@ -405,6 +460,11 @@ out:
     qc__free(ctx, g.cell, g.cell_cap * sizeof *g.cell);
     qc__free(ctx, g.idx, g.idx_cap * sizeof *g.idx);
     qc__free(ctx, g.f, g.f_cap * sizeof *g.f);
+    qc__free(ctx, g.reach, g.reach_cap * sizeof *g.reach);
+    qc__free(ctx, g.close, g.close_cap * sizeof *g.close);
+    qc__free(ctx, g.sv, g.sv_cap * sizeof *g.sv);
+    qc__free(ctx, g.sf, g.sf_cap * sizeof *g.sf);
+    qc__free(ctx, g.sc, g.sc_cap * sizeof *g.sc);
     qc__free(ctx, g.start, (nc + 1) * sizeof *g.start);
     if (rc < 0)
         return qc__fail(ctx, rc, "out of memory growing a meander of %lu vertices",
