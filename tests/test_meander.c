@@ -201,6 +201,20 @@ static double farthest_fabric(const qc_region *r, const qc_points *fine, double 
         }
     }
     pgrid_free(&g);
+    if (getenv("MEANDER_DEBUG") != NULL) { /* where: the inside grid, then the rings */
+        qc_vec2 at = v2(0, 0);
+        double w2 = 0.0;
+        pgrid_build(&g, fine, box, d / 2.0);
+        for (y = box.min.y + h / 2; y < box.max.y; y += h)
+            for (x = box.min.x + h / 2; x < box.max.x; x += h)
+                if (qc_region_contains(r, v2(x, y)) && pgrid_dist(&g, v2(x, y)) > w2) {
+                    w2 = pgrid_dist(&g, v2(x, y));
+                    at = v2(x, y);
+                }
+        pgrid_free(&g);
+        printf("  farthest %.3f d, inside max %.3f d at (%.1f, %.1f) mm\n", worst / d, w2 / d,
+               at.x, at.y);
+    }
     return worst / d;
 }
 

@@ -28,10 +28,13 @@
 #define CLEAR_WAVE 2.5   /* wavelength of the clearance's waves, times d */
 #define CLEAR_SWING 0.4  /* their amplitude, times the clearance */
 #define LINE_TABLE 64
+#define SHARP 80.0       /* corners sharper than this (degrees) get ... */
+#define SHARP_REACH 2.5  /* ... a smaller spacing within this many d of the tip, */
+#define SCALE_MIN 0.5    /* down to this times d at the tip */
 
 /* A vertex as the repulsion pass reads it, in cell order. */
 typedef struct qc__grow_vert {
-    double x, y, reach;
+    double x, y, reach, scale;
     uint32_t i;
 } qc__grow_vert;
 #define LINE_VERTEX 0.33 /* the mean vertex spacing the mirror assumes, times d */
@@ -53,6 +56,9 @@ typedef struct grow {
     double x0, y0, h;
     double line_f[LINE_TABLE + 1]; /* line_force at r = k R / LINE_TABLE */
     double phase[2];    /* of the clearance's waves */
+    float *scale;       /* the spacing's local scale (1, less by sharp corners) */
+    size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
+    double sh;          /* ... at this step */
 } grow;
 
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
@@ -116,12 +122,76 @@ static size_t ring_gap(size_t i, size_t j, size_t n)
     return k < n - k ? k : n - k;
 }
 
+/* The local scale at p (nearest node). */
+static double scale_at(const grow *g, qc_vec2 p)
+{
+    double fx = floor((p.x - g->x0) / g->sh + 0.5), fy = floor((p.y - g->y0) / g->sh + 0.5);
+    size_t i, j;
+
+    if (g->scale == NULL || fx < 0.0 || fy < 0.0 || fx >= (double)g->sx || fy >= (double)g->sy)
+        return 1.0;
+    i = (size_t)fx;
+    j = (size_t)fy;
+    return g->scale[j * g->sx + i];
+}
+
+/* The scale field: 1, falling towards SCALE_MIN at convex corners sharper
+ * than SHARP (within SHARP_REACH d of the tip), so that the curve can send
+ * a narrower lobe into a star point. Returns QC_OK or QC_ENOMEM. */
+static int scale_field(qc_ctx *ctx, grow *g, const qc_region *r, double d)
+{
+    size_t k, v = 0, n;
+    double reach = SHARP_REACH * d, cos_sharp = qc_cos(SHARP * QC_PI / 180.0);
+
+    g->sh = 0.25 * d;
+    g->sx = (size_t)((double)g->gx * g->h / g->sh) + 1;
+    g->sy = (size_t)((double)g->gy * g->h / g->sh) + 1;
+    n = g->sx * g->sy;
+    g->scale = qc__alloc_array(ctx, n, sizeof *g->scale);
+    if (g->scale == NULL)
+        return QC_ENOMEM;
+    for (k = 0; k < n; k++)
+        g->scale[k] = 1.0f;
+    for (k = 0; k < r->nrings; k++) {
+        size_t first = v, end = r->ring_end[k];
+        for (; v < end; v++) {
+            qc_vec2 a = r->v[v == first ? end - 1 : v - 1], p = r->v[v];
+            qc_vec2 b = r->v[v + 1 == end ? first : v + 1];
+            double ux = a.x - p.x, uy = a.y - p.y, wx = b.x - p.x, wy = b.y - p.y;
+            double lu = qc_hypot(ux, uy), lw = qc_hypot(wx, wy), cr;
+            long i0, i1, j0, j1, i, j;
+
+            cr = (p.x - a.x) * (b.y - p.y) - (p.y - a.y) * (b.x - p.x);
+            /* convex (inside on the left) and sharp: the legs' angle is small */
+            if (!(cr > 0.0) || !(lu > 0.0 && lw > 0.0) ||
+                (ux * wx + uy * wy) / (lu * lw) < cos_sharp)
+                continue;
+            i0 = (long)floor((p.x - reach - g->x0) / g->sh);
+            i1 = (long)ceil((p.x + reach - g->x0) / g->sh);
+            j0 = (long)floor((p.y - reach - g->y0) / g->sh);
+            j1 = (long)ceil((p.y + reach - g->y0) / g->sh);
+            for (j = j0 < 0 ? 0 : j0; j <= j1 && j < (long)g->sy; j++)
+                for (i = i0 < 0 ? 0 : i0; i <= i1 && i < (long)g->sx; i++) {
+                    double t = qc_hypot(g->x0 + (double)i * g->sh - p.x,
+                                        g->y0 + (double)j * g->sh - p.y) / reach;
+                    float sc = (float)(t >= 1.0 ? 1.0 : SCALE_MIN + (1.0 - SCALE_MIN) * t);
+                    size_t at = (size_t)j * g->sx + (size_t)i;
+                    if (sc < g->scale[at])
+                        g->scale[at] = sc;
+                }
+        }
+    }
+    return QC_OK;
+}
+
 /* The pair at sorted slots a, b: each pushed off the other if they are
  * nearer than R and not neighbours along the curve. */
 static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
 {
     const qc__grow_vert *u = &g->sv[a], *w = &g->sv[b];
     double dx = u->x - w->x, dy = u->y - w->y, r2 = dx * dx + dy * dy, r, k;
+
+    double Rs;
 
     if (r2 >= R2 || ring_gap(u->i, w->i, g->n) <= 1)
         return;
@@ -132,7 +202,10 @@ static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
     r = sqrt(r2);
     if (r < u->reach + w->reach) /* their segments might cross after the move */
         g->sc[a] = g->sc[b] = 1;
-    k = (1.0 - r / R) / r;
+    Rs = R * (u->scale < w->scale ? u->scale : w->scale);
+    if (r >= Rs)
+        return;
+    k = (1.0 - r / Rs) / r;
     g->sf[a].x += dx * k;
     g->sf[a].y += dy * k;
     g->sf[b].x -= dx * k;
@@ -156,6 +229,7 @@ static void repulsion(grow *g, double R)
         g->sv[a].x = g->p[i].x;
         g->sv[a].y = g->p[i].y;
         g->sv[a].reach = g->reach[i];
+        g->sv[a].scale = scale_at(g, g->p[i]);
         g->sv[a].i = i;
         g->sf[a].x = g->sf[a].y = 0.0;
         g->sc[a] = 0;
@@ -238,9 +312,9 @@ static double clearance(const grow *g, const qc__grow_opts *o, qc_vec2 p)
 
 /* p moved back onto the clearance contour if it came nearer the boundary
  * than half the clearance. */
-static qc_vec2 keep_inside(const qc__grow_opts *o, qc_vec2 p)
+static qc_vec2 keep_inside(const grow *g, const qc__grow_opts *o, qc_vec2 p)
 {
-    double wall = 0.5 * o->clear, v = qc__sdf_at(o->sdf, p);
+    double wall = 0.5 * o->clear * scale_at(g, p), v = qc__sdf_at(o->sdf, p);
     qc_vec2 grad;
 
     if (v >= wall + o->sdf->h)
@@ -285,7 +359,8 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         if (v < reach_b + o->sdf->h && v > -d) {
             qc_vec2 grad;
             v = qc__sdf_exact(o->sdf, p, &grad);
-            push = v < 0.0 ? 2.0 * g->line_f[0] : mirror(g, v * d / clearance(g, o, p), d);
+            push = v < 0.0 ? 2.0 * g->line_f[0]
+                           : mirror(g, v * d / (clearance(g, o, p) * scale_at(g, p)), d);
             f.x += push * grad.x;
             f.y += push * grad.y;
         }
@@ -307,7 +382,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         /* the boundary is a wall for what is inside (the field changes by
          * at most the move, give or take its grid's interpolation) */
         if (v >= 0.0 && v - cap < 0.5 * o->clear + 2.0 * o->sdf->h)
-            g->q[i] = keep_inside(o, g->q[i]);
+            g->q[i] = keep_inside(g, o, g->q[i]);
     }
 }
 
@@ -432,6 +507,10 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
     memcpy(g.p, c->v, c->n * sizeof *g.p);
     g.n = c->n;
     line_table(&g, o->d);
+    if (scale_field(ctx, &g, o->sdf->region, o->d) < 0) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
     g.phase[0] = 2.0 * QC_PI * qc_rng_unit(&rng);
     g.phase[1] = 2.0 * QC_PI * qc_rng_unit(&rng);
     for (it = 0; it < o->iterations; it++) {
@@ -465,6 +544,7 @@ out:
     qc__free(ctx, g.sv, g.sv_cap * sizeof *g.sv);
     qc__free(ctx, g.sf, g.sf_cap * sizeof *g.sf);
     qc__free(ctx, g.sc, g.sc_cap * sizeof *g.sc);
+    qc__free(ctx, g.scale, g.sx * g.sy * sizeof *g.scale);
     qc__free(ctx, g.start, (nc + 1) * sizeof *g.start);
     if (rc < 0)
         return qc__fail(ctx, rc, "out of memory growing a meander of %lu vertices",
