@@ -28,6 +28,7 @@
 #define CLEAR_WAVE 2.5   /* wavelength of the clearance's waves, times d */
 #define CLEAR_SWING 0.4  /* their amplitude, times the clearance */
 #define LINE_TABLE 64
+#define WALL 0.25        /* the hard wall, times the clearance (the mirror pushes first) */
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
 #define SHARP_REACH 2.5  /* ... a smaller spacing within this many d of the tip, */
 #define SCALE_MIN 0.5    /* down to this times d at the tip */
@@ -314,7 +315,7 @@ static double clearance(const grow *g, const qc__grow_opts *o, qc_vec2 p)
  * than half the clearance. */
 static qc_vec2 keep_inside(const grow *g, const qc__grow_opts *o, qc_vec2 p)
 {
-    double wall = 0.5 * o->clear * scale_at(g, p), v = qc__sdf_at(o->sdf, p);
+    double wall = WALL * o->clear * scale_at(g, p), v = qc__sdf_at(o->sdf, p);
     qc_vec2 grad;
 
     if (v >= wall + o->sdf->h)
@@ -381,7 +382,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         g->q[i].y = p.y + m.y;
         /* the boundary is a wall for what is inside (the field changes by
          * at most the move, give or take its grid's interpolation) */
-        if (v >= 0.0 && v - cap < 0.5 * o->clear + 2.0 * o->sdf->h)
+        if (v >= 0.0 && v - cap < WALL * o->clear + 2.0 * o->sdf->h)
             g->q[i] = keep_inside(g, o, g->q[i]);
     }
 }
