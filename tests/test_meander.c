@@ -455,6 +455,30 @@ static void meander_should_start_and_end_on_the_boundary_where_asked(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* A patch smaller than d still gets one small loop, inside it. */
+static void meander_should_fit_a_patch_smaller_than_d(void)
+{
+    static const char *const specs[] = {"rect:0.05x0.05", "rect:0.3x0.3", "circle:0.5"};
+    size_t k;
+
+    for (k = 0; k < 3; k++) {
+        qc_region r = {0};
+        qc_result res;
+        measures m;
+        double d = 0.4 * IN;
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, specs[k], IN, &r));
+        TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, run(&r, d, 1, NULL, 0, &res), specs[k]);
+        TEST_ASSERT_EQUAL_size_t(1, res.stats.pieces);
+        m = measure(&r, &res.path, d);
+        TEST_ASSERT_EQUAL_size_t_MESSAGE(0, m.crossings, specs[k]);
+        TEST_ASSERT_TRUE_MESSAGE(m.outside < 0.02 * IN, specs[k]);
+        qc_result_free(&ctx, &res);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Its parameters come from the table: defaults derived from d, ranges
  * checked; more wiggle gives another curve. */
 static void meander_should_take_its_parameters_from_the_table(void)
@@ -501,5 +525,6 @@ int main(void)
     RUN_TEST(meander_should_give_the_same_bytes_for_the_same_seed);
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);
     RUN_TEST(meander_should_take_its_parameters_from_the_table);
+    RUN_TEST(meander_should_fit_a_patch_smaller_than_d);
     return UNITY_END();
 }

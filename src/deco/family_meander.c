@@ -19,6 +19,15 @@
 #define GROW_LEN 1.0      /* the curve grows to area / d times this */
 #define GAP_RES (1.0 / 6.0)
 
+/* The distance grid's step: d/3, finer for a region smaller than a few d. */
+static double sdf_step(const qc_region *region, double d)
+{
+    qc_bbox b = qc_region_bbox(region);
+    double side = fmin(b.max.x - b.min.x, b.max.y - b.min.y);
+
+    return fmin(SDF_STEP * d, side / 8.0);
+}
+
 /* The tree outline the evolution starts from, into *c. */
 static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
                       qc_points *c)
@@ -29,7 +38,7 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
     qc__ftree t;
     qc__fstyle st;
     qc_vec2 start;
-    double d = prm->spacing;
+    double d = prm->spacing, half = 0.5 * d;
     int rc;
 
     memset(&t, 0, sizeof t);
@@ -39,14 +48,18 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
     sp.margin = (CLEAR + 0.5) * d;
     sp.seed = prm->seed;
     rc = qc_sample(ctx, region, &sp, &pts);
-    if (rc == QC_OK && pts.n == 0) { /* narrow: one point at the widest place */
+    if (rc == QC_OK && pts.n == 0) { /* small: a loop that fits at the widest place */
         qc__sdf s;
         qc_vec2 at;
-        rc = qc__sdf_build(ctx, region, SDF_STEP * d, &s);
+        rc = qc__sdf_build(ctx, region, sdf_step(region, d), &s);
         if (rc == QC_OK) {
-            qc__sdf_max(&s, &at);
+            double room = qc__sdf_max(&s, &at);
             qc__sdf_free(ctx, &s);
-            rc = qc_points_push(ctx, &pts, at);
+            if (!(room > 0.0))
+                rc = qc__fail(ctx, QC_EEMPTY, "meander: the region has no inside");
+            else
+                rc = qc_points_push(ctx, &pts, at);
+            half = fmin(half, 0.6 * room);
         }
     }
     if (rc == QC_OK)
@@ -58,7 +71,7 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
                     qc__params_given(prm, offsetof(qc_params, start_y));
         start = given ? QC__V2(prm->start_x, prm->start_y) : qc_region_bbox(region).min;
         memset(&st, 0, sizeof st);
-        st.half = 0.5 * d;
+        st.half = half;
         st.arc_step = QC_PI / 8.0;
         rc = qc__ftree_loop(ctx, &t, qc_nearest_point(pts.v, pts.n, start), &st, c);
     }
@@ -135,7 +148,7 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
         return qc__fail(ctx, QC_ERANGE, "meander spacing %g mm must be > 0", d);
     rc = seed_curve(ctx, region, params, &c);
     if (rc == QC_OK)
-        rc = qc__sdf_build(ctx, region, SDF_STEP * d, &s);
+        rc = qc__sdf_build(ctx, region, sdf_step(region, d), &s);
     if (rc < 0)
         goto out;
     memset(&o, 0, sizeof o);
