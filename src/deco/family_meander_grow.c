@@ -133,7 +133,7 @@ static double scale_at(const grow *g, qc_vec2 p)
         return 1.0;
     i = (size_t)fx;
     j = (size_t)fy;
-    return g->scale[j * g->sx + i];
+    return (double)g->scale[j * g->sx + i];
 }
 
 /* The scale field: 1, falling towards SCALE_MIN at convex corners sharper
