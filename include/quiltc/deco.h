@@ -50,6 +50,10 @@ int qc_deco_echo(qc_ctx *ctx, const qc_region *region, const qc_params *params,
 int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                    const qc_skeleton *skel, const qc_motif_set *motifs,
                    qc_path *out, qc_stats *stats);
+/* Meander: one closed curve grown to fill the region (meander.c). */
+int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                    const qc_skeleton *skel, const qc_motif_set *motifs,
+                    qc_path *out, qc_stats *stats);
 
 #ifdef __cplusplus
 }

@@ -35,6 +35,7 @@ extern "C" {
     X(STIPPLE, stipple)     /* §7.1 stippling / meander */                  \
     X(ECHO, echo)           /* beyond the paper */                          \
     X(SPIRAL, spiral)       /* beyond the paper */                          \
+    X(MEANDER, meander)     /* one closed curve grown by curve evolution */ \
     /* a new family: one line above this one */
 
 typedef enum qc_family {
@@ -93,6 +94,9 @@ typedef enum qc_param_id {
     QC_PARAM_ID_REPEAT_ROWS,
     QC_PARAM_ID_START_X,
     QC_PARAM_ID_START_Y,
+    QC_PARAM_ID_WIGGLE,
+    QC_PARAM_ID_TURN_RADIUS,
+    QC_PARAM_ID_ITERATIONS,
     QC_PARAM_ID_COUNT /* at most 64: one bit each in qc_params.given */
 } qc_param_id;
 
@@ -128,6 +132,9 @@ typedef struct qc_params {
     double repeat_cols; /* tiles across (tiles) */
     double repeat_rows; /* tiles down (tiles) */
     double start_x, start_y; /* where to start: nearest point becomes the root */
+    double wiggle;      /* meander: irregularity, 0..1 */
+    double turn_radius; /* meander: smallest turn radius */
+    double iterations;  /* meander: rounds of curve evolution */
     /* Not in the table: non-zero leaves qc_stats.largest_gap_mm at 0. The
      * measure never changes the path but costs about a third of a stipple,
      * so a live preview skips it. */

@@ -76,6 +76,12 @@ static const qc_param_info table[] = {
      QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, ID(START_X), OFF(start_x)},
     {"start-y", "start near this y", "mm", QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, ID(START_Y),
      OFF(start_y)},
+    {"wiggle", "meander irregularity: 0 smooth, 1 restless", "ratio", QC_PARAM_REAL, NULL, 0, 1,
+     0.5, 0, ID(WIGGLE), OFF(wiggle)},
+    {"turn-radius", "meander's smallest turn radius (default d/4)", "mm", QC_PARAM_LENGTH, NULL,
+     0.05, 1000, 0, 0.25, ID(TURN_RADIUS), OFF(turn_radius)},
+    {"iterations", "meander: rounds of curve evolution (work, not time)", "count", QC_PARAM_INT,
+     NULL, 0, 100000, 60, 0, ID(ITERATIONS), OFF(iterations)},
 };
 
 #define NPARAMS (sizeof table / sizeof table[0])

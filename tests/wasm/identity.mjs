@@ -59,6 +59,7 @@ const extra = [
   { region: 'circle:8', params: { family: 'packing', points: 'poisson' }, motifs: ['star', 'circle'] },
   { region: 'rect:8x5', params: { family: 'echo', 'echo-join': 'spiral', spacing: '0.3' } },
   { region: 'rect:8x8', params: { family: 'spiral', spiral: 'fermat', spacing: '0.3' } },
+  { region: 'heart:7', params: { family: 'meander', wiggle: '0.9', 'turn-radius': '0.12', iterations: '80', 'start-x': '1', 'start-y': '2' } },
   { region: 'rect:20x15', units: 'cm', params: { family: 'stipple', spacing: '1.2' }, seed: '3' },
   { region: 'heart:7', params: { family: 'stipple', spacing: '9mm', margin: '0.1in' } },
   { region: 'rect:8x8', params: { family: 'stipple', spacing: '0.12' }, seed: '4242' }, // ~3000 points

@@ -1,0 +1,33 @@
+/*
+ * The meander's curve evolution (family_meander_grow.c), shared with family_meander.c
+ * and the tests.
+ */
+#ifndef QC_FAMILY_MEANDER_H
+#define QC_FAMILY_MEANDER_H
+
+#include "deco_internal.h"
+
+typedef struct qc__grow_opts {
+    double d;          /* line spacing: parts of the curve repel within d */
+    double clear;      /* distance kept from the boundary and the holes */
+    double turn;       /* smallest turn radius */
+    double wiggle;     /* 0..1: the random push, times WIGGLE_STEP d */
+    size_t iterations; /* rounds of the evolution (a work count, not a clock) */
+    double max_len;    /* the curve stops growing beyond this length, mm */
+    uint64_t seed;
+    const qc__sdf *sdf; /* the region's distance field */
+} qc__grow_opts;
+
+/*
+ * Evolves the closed curve c (points in order, closing implicitly) inside
+ * the field's region: each round resamples it (vertex spacing kept within
+ * [0.2 d, 0.45 d]), fairs it, pushes it by a seeded random amount and by
+ * short-range repulsion between non-neighbouring parts and from the
+ * boundary, every move capped so the curve never passes through itself.
+ * A uniform grid finds the neighbours: each round is linear in the curve's
+ * vertex count. Deterministic for a seed. Errors: QC_ENOMEM (c is then
+ * left valid, as it was after some round).
+ */
+QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o);
+
+#endif
