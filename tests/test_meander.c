@@ -479,6 +479,55 @@ static void meander_should_fit_a_patch_smaller_than_d(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* A tile runs from its left port to the mirrored right port, so copies
+ * join into one pantograph that never crosses itself. */
+static void meander_should_tile_edge_to_edge(void)
+{
+    static const int modes[] = {QC_TILE_EDGE_TO_EDGE, QC_TILE_ALL_OVER};
+    int k;
+
+    for (k = 0; k < 2; k++) {
+        qc_region r = {0};
+        qc_result res;
+        qc_params p;
+        qc_vec2 entry, exit, first, last;
+        qc_points flat = {0};
+        size_t crossings = 1, i;
+        double d = 0.4 * IN, w = 4 * IN;
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:4x3", IN, &r));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_ports(&ctx, &r, &entry, &exit));
+        memset(&p, 0, sizeof p);
+        qc_params_set(&ctx, &p, "family", QC_FAMILY_MEANDER);
+        qc_params_set(&ctx, &p, "spacing", d);
+        qc_params_set(&ctx, &p, "tile", modes[k]);
+        qc_params_set(&ctx, &p, "repeat-cols", 3);
+        qc_params_set(&ctx, &p, "repeat-rows", 2);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, NULL, &res));
+        TEST_ASSERT_EQUAL_size_t(1, res.stats.pieces);
+        first = res.path.pt[0];
+        last = res.path.pt[res.path.npt - 1];
+        /* starts at the first tile's entry, ends at the second row's entry
+         * (rows run right to left and back), one tile height below */
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, entry.x, first.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, entry.y + 3 * IN, first.y);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, entry.x, last.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, entry.y, last.y);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, w, exit.x - entry.x);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &res.path, 0.01, &flat, NULL));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v, flat.n, 0, &crossings));
+        TEST_ASSERT_EQUAL_size_t(0, crossings);
+        for (i = 0; i < flat.n; i++) {
+            TEST_ASSERT_TRUE(flat.v[i].x >= -0.01 && flat.v[i].x <= 3 * w + 0.01);
+            TEST_ASSERT_TRUE(flat.v[i].y >= -0.01 && flat.v[i].y <= 6 * IN + 0.01);
+        }
+        qc_points_free(&ctx, &flat);
+        qc_result_free(&ctx, &res);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Its parameters come from the table: defaults derived from d, ranges
  * checked; more wiggle gives another curve. */
 static void meander_should_take_its_parameters_from_the_table(void)
@@ -526,5 +575,6 @@ int main(void)
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);
     RUN_TEST(meander_should_take_its_parameters_from_the_table);
     RUN_TEST(meander_should_fit_a_patch_smaller_than_d);
+    RUN_TEST(meander_should_tile_edge_to_edge);
     return UNITY_END();
 }

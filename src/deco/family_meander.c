@@ -29,8 +29,25 @@ static double sdf_step(const qc_region *region, double d)
 }
 
 /* The tree outline the evolution starts from, into *c. */
+/* c with p at its front (at_end 0) or its end, unless already there. */
+static int pin(qc_ctx *ctx, qc_points *c, qc_vec2 p, int at_end)
+{
+    qc_vec2 e = at_end ? c->v[c->n - 1] : c->v[0];
+
+    if (e.x == p.x && e.y == p.y)
+        return QC_OK;
+    QC__TRY(qc_points_push(ctx, c, p));
+    if (!at_end) {
+        memmove(c->v + 1, c->v, (c->n - 1) * sizeof *c->v);
+        c->v[0] = p;
+    }
+    return QC_OK;
+}
+
+/* The tree outline the evolution starts from, into *c: closed, or with
+ * ports (a tile) open from ports[0] to ports[1]. */
 static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
-                      qc_points *c)
+                      const qc_vec2 *ports, qc_points *c)
 {
     qc_sample_params sp;
     qc_points pts = {0};
@@ -64,6 +81,18 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
     }
     if (rc == QC_OK)
         rc = qc_mst(ctx, pts.v, pts.n, QC_MST_MODE_DELAUNAY, &edges);
+    if (rc == QC_OK && ports != NULL) { /* the ports join the tree as two more leaves */
+        size_t n = pts.n;
+        uint32_t a = qc__tile_port_node(pts.v, n, edges.e, edges.n, ports[0]);
+        uint32_t b = qc__tile_port_node(pts.v, n, edges.e, edges.n, ports[1]);
+        rc = qc_points_push(ctx, &pts, ports[0]);
+        if (rc == QC_OK)
+            rc = qc_points_push(ctx, &pts, ports[1]);
+        if (rc == QC_OK)
+            rc = qc_edges_push(ctx, &edges, a, (uint32_t)n);
+        if (rc == QC_OK)
+            rc = qc_edges_push(ctx, &edges, b, (uint32_t)n + 1);
+    }
     if (rc == QC_OK)
         rc = qc__ftree_build(ctx, pts.v, pts.n, edges.e, edges.n, &t);
     if (rc == QC_OK) {
@@ -73,8 +102,15 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
         memset(&st, 0, sizeof st);
         st.half = half;
         st.arc_step = QC_PI / 8.0;
-        rc = qc__ftree_loop(ctx, &t, qc_nearest_point(pts.v, pts.n, start), &st, c);
+        if (ports != NULL)
+            rc = qc__ftree_open(ctx, &t, (uint32_t)pts.n - 2, (uint32_t)pts.n - 1, &st, c);
+        else
+            rc = qc__ftree_loop(ctx, &t, qc_nearest_point(pts.v, pts.n, start), &st, c);
     }
+    if (rc == QC_OK && ports != NULL && c->n > 0)
+        rc = pin(ctx, c, ports[0], 0);
+    if (rc == QC_OK && ports != NULL && c->n > 0)
+        rc = pin(ctx, c, ports[1], 1);
     qc__ftree_free(ctx, &t);
     qc_points_free(ctx, &pts);
     qc_edges_free(ctx, &edges);
@@ -135,10 +171,12 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
                     qc_stats *stats)
 {
     qc_points c = {0};
-    qc_path one = {0};
+    qc_path one = {0}, rep = {0};
     qc__sdf s;
     qc__grow_opts o;
+    qc_vec2 ports[2];
     double d = params->spacing;
+    int tiled = params->tile == QC_TILE_EDGE_TO_EDGE || params->tile == QC_TILE_ALL_OVER;
     int rc;
 
     (void)skel;
@@ -146,7 +184,9 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
     memset(&s, 0, sizeof s);
     if (!(d > 0.0))
         return qc__fail(ctx, QC_ERANGE, "meander spacing %g mm must be > 0", d);
-    rc = seed_curve(ctx, region, params, &c);
+    rc = tiled ? qc_tile_ports(ctx, region, &ports[0], &ports[1]) : QC_OK;
+    if (rc == QC_OK)
+        rc = seed_curve(ctx, region, params, tiled ? ports : NULL, &c);
     if (rc == QC_OK)
         rc = qc__sdf_build(ctx, region, sdf_step(region, d), &s);
     if (rc < 0)
@@ -160,9 +200,11 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
     o.max_len = GROW_LEN * fabs(qc_region_area(region)) / d;
     o.seed = params->seed;
     o.sdf = &s;
+    o.open = tiled;
     rc = qc__meander_grow(ctx, &c, &o);
     if (rc == QC_OK)
-        rc = sew(ctx, &c, &s, region, params, &one);
+        rc = tiled ? qc_curve_catmull_rom(ctx, c.v, c.n, 0, &one)
+                   : sew(ctx, &c, &s, region, params, &one);
     if (rc == QC_OK && stats != NULL && !params->skip_gap_stat) {
         double g = qc_path_largest_gap(ctx, region, &one, GAP_RES * d, NULL);
         if (g < 0.0)
@@ -170,12 +212,26 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
         else
             stats->largest_gap_mm = g;
     }
-    if (rc == QC_OK)
+    if (rc == QC_OK && tiled) { /* laid out as stipple lays its tiles (tile.c) */
+        qc_bbox box = qc_region_bbox(region);
+        unsigned cols = params->repeat_cols >= 1.0 ? (unsigned)params->repeat_cols : 1u;
+        unsigned rows = params->repeat_rows >= 1.0 ? (unsigned)params->repeat_rows : 1u;
+        double h = box.max.y - box.min.y;
+        size_t k;
+
+        rc = qc_tile_repeat(ctx, &one, ports[1].x - ports[0].x, h, cols, rows, &rep);
+        for (k = 0; k < rep.npt; k++) /* the bottom row on the tile's own box */
+            rep.pt[k].y += (double)(rows - 1) * h;
+        if (rc == QC_OK)
+            rc = qc_path_append(ctx, out, &rep, 1);
+    } else if (rc == QC_OK) {
         rc = qc_path_append(ctx, out, &one, 1);
+    }
 out:
     qc__sdf_free(ctx, &s);
     qc_points_free(ctx, &c);
     qc_path_free(ctx, &one);
+    qc_path_free(ctx, &rep);
     return rc;
 }
 
@@ -183,5 +239,6 @@ const qc_family_desc qc__family_meander = {
     QC_FAMILY_MEANDER, "meander", "one closed curve grown by curve evolution, filling the block",
     0, /* it samples its own seed tree, 2d apart */
     QC_PARAM_BIT(QC_PARAM_ID_WIGGLE) | QC_PARAM_BIT(QC_PARAM_ID_TURN_RADIUS) |
-        QC_PARAM_BIT(QC_PARAM_ID_ITERATIONS),
+        QC_PARAM_BIT(QC_PARAM_ID_ITERATIONS) | QC_PARAM_BIT(QC_PARAM_ID_TILE) |
+        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS),
     qc_deco_meander, NULL};

@@ -15,11 +15,13 @@ typedef struct qc__grow_opts {
     size_t iterations; /* rounds of the evolution (a work count, not a clock) */
     double max_len;    /* the curve stops growing beyond this length, mm */
     uint64_t seed;
+    int open;          /* c is open: its first and last vertex stay put */
     const qc__sdf *sdf; /* the region's distance field */
 } qc__grow_opts;
 
 /*
- * Evolves the closed curve c (points in order, closing implicitly) inside
+ * Evolves the closed curve c (points in order, closing implicitly; or open,
+ * ends pinned, with o->open) inside
  * the field's region: each round resamples it (vertex spacing kept within
  * [0.2 d, 0.45 d]), fairs it, pushes it by a seeded random amount and by
  * short-range repulsion between non-neighbouring parts and from the

@@ -60,6 +60,7 @@ typedef struct grow {
     float *scale;       /* the spacing's local scale (1, less by sharp corners) */
     size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
     double sh;          /* ... at this step */
+    int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
@@ -116,11 +117,22 @@ static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c)
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
 
-/* Cyclic index distance. */
-static size_t ring_gap(size_t i, size_t j, size_t n)
+/* Index distance along the curve (cyclic when it is closed). */
+static size_t ring_gap(const grow *g, size_t i, size_t j)
 {
     size_t k = i > j ? i - j : j - i;
-    return k < n - k ? k : n - k;
+    return g->open || k < g->n - k ? k : g->n - k;
+}
+
+/* The vertices before and after i (an open curve's ends are their own). */
+static size_t before(const grow *g, size_t i)
+{
+    return i > 0 ? i - 1 : g->open ? 0 : g->n - 1;
+}
+
+static size_t after(const grow *g, size_t i)
+{
+    return i + 1 < g->n ? i + 1 : g->open ? i : 0;
 }
 
 /* The local scale at p (nearest node). */
@@ -194,7 +206,7 @@ static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
 
     double Rs;
 
-    if (r2 >= R2 || ring_gap(u->i, w->i, g->n) <= 1)
+    if (r2 >= R2 || ring_gap(g, u->i, w->i) <= 1)
         return;
     if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
         g->sc[a] = g->sc[b] = 1;
@@ -342,7 +354,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
      * only flagged segments. Sharp turns (over 90 degrees) are flagged too:
      * there a segment may cross the one after next. */
     for (i = 0; i < n; i++) {
-        qc_vec2 a = g->p[i == 0 ? n - 1 : i - 1], p = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
+        qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         double la = qc_hypot(p.x - a.x, p.y - a.y), lb = qc_hypot(b.x - p.x, b.y - p.y);
 
         g->reach[i] = 0.5 * (la > lb ? la : lb) + cap;
@@ -350,12 +362,16 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
     }
     repulsion(g, REACH * d);
     for (i = 0; i < n; i++) {
-        qc_vec2 a = g->p[i == 0 ? n - 1 : i - 1], p = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
+        qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         qc_vec2 f = g->f[i], m;
         double w = circumradius(a, p, b) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
         double push = 0.0;
         double mx, my, len, v;
 
+        if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
+            g->q[i] = p;
+            continue;
+        }
         v = qc__sdf_at(o->sdf, p);
         if (v < reach_b + o->sdf->h && v > -d) {
             qc_vec2 grad;
@@ -395,7 +411,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
     size_t n = g->n, i, m = 0, dropped = 0;
     int may_grow;
 
-    for (i = 0; i < n; i++) {
+    for (i = 0; i + (g->open ? 1 : 0) < n; i++) {
         qc_vec2 a = g->q[i], b = g->q[i + 1 == n ? 0 : i + 1];
         total += qc_hypot(b.x - a.x, b.y - a.y);
     }
@@ -405,7 +421,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
         qc_vec2 a = g->q[i], b = g->q[i + 1 == n ? 0 : i + 1];
         double len;
 
-        if (m > 0) {
+        if (m > 0 && !(g->open && i + 1 == n)) {
             qc_vec2 l = g->p[m - 1];
             if (qc_hypot(a.x - l.x, a.y - l.y) < lo && n - dropped > 8) {
                 dropped++;
@@ -413,6 +429,8 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
             }
         }
         g->p[m++] = a;
+        if (g->open && i + 1 == n)
+            break;
         len = qc_hypot(b.x - a.x, b.y - a.y);
         if (len > hi && (may_grow || len > 2.0 * hi)) {
             qc_vec2 mid = QC__V2(0.5 * (a.x + b.x), 0.5 * (a.y + b.y));
@@ -448,14 +466,15 @@ static size_t undo_crossings(grow *g)
         size_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < g->gx ? cx + 1 : cx;
         size_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < g->gy ? cy + 1 : cy, x, y, k;
 
-        if (!g->close[i] && !g->close[i1])
+        if ((!g->close[i] && !g->close[i1]) || (g->open && i1 == 0))
             continue;
         for (y = y0; y <= y1; y++)
             for (x = x0; x <= x1; x++) {
                 size_t cc = y * g->gx + x;
                 for (k = g->start[cc]; k < g->start[cc + 1]; k++) {
                     size_t j = g->idx[k], j1 = j + 1 == n ? 0 : j + 1;
-                    if (j <= i || (!g->close[j] && !g->close[j1]) || ring_gap(i, j, n) < 2)
+                    if (j <= i || (!g->close[j] && !g->close[j1]) || ring_gap(g, i, j) < 2 ||
+                        (g->open && j1 == 0))
                         continue;
                     if (!seg_cross(g->q[i], g->q[i1], g->q[j], g->q[j1]))
                         continue;
@@ -507,6 +526,7 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
     }
     memcpy(g.p, c->v, c->n * sizeof *g.p);
     g.n = c->n;
+    g.open = o->open;
     line_table(&g, o->d);
     if (scale_field(ctx, &g, o->sdf->region, o->d) < 0) {
         rc = QC_ENOMEM;
