@@ -104,4 +104,27 @@ open("m.svg", "w").write("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 
 }
 check packing_copies_of_a_huge_motif_are_refused packed_budget
 
+# A fake concorde on PATH: it leaves junk beside its files and writes the
+# tour FAKE_TOUR asks for ("repeat": point 0 n times; "good": 0..n-1).
+fake_concorde() {
+    mkdir -p bin && cat >bin/concorde <<'SH' && chmod +x bin/concorde
+#!/bin/sh
+pwd >>"$FAKE_LOG"
+n=$(sed -n 's/^DIMENSION: //p' in.tsp)
+echo junk >in.mas; echo junk >Oin.sav
+{ echo "$n"; i=0; while [ $i -lt "$n" ]; do
+    if [ "$FAKE_TOUR" = good ]; then echo $i; else echo 0; fi; i=$((i + 1)); done; } >out.sol
+SH
+}
+
+concorde_tour_checked() {
+    fresh && fake_concorde && export FAKE_LOG="$d/log" &&
+        FAKE_TOUR=repeat PATH="$d/bin:$PATH" expect_fail 1 "does not visit each point once" \
+            "$QC" skeleton --path tsp --tsp concorde -o s.json && [ ! -e s.json ] &&
+        FAKE_TOUR=good PATH="$d/bin:$PATH" "$QC" skeleton --path tsp --tsp concorde -o s.json &&
+        [ -s s.json ] && [ "$(wc -l <log)" -eq 2 ] &&
+        while read -r dir; do [ ! -e "$dir" ] || { echo "left $dir"; exit 1; }; done <log
+}
+check concorde_tour_must_be_a_permutation_and_its_folder_goes concorde_tour_checked
+
 finish
