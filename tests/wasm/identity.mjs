@@ -65,6 +65,10 @@ const extra = [
   // errors: both sides must refuse with the same message
   { region: 'rect:8x8', params: { family: 'stipple', spacing: '0.001' }, error: true },
   { region: 'rect:1x1', params: { family: 'vine', spacing: '0.5', margin: '2' }, error: true },
+  // Number() and BigInt() take 0b11, 0o17, 0x10: the page must refuse them as the CLI does
+  { region: 'rect:8x8', params: { family: 'stipple', spacing: '0b11' }, error: true },
+  { region: 'rect:8x8', params: { family: 'stipple', margin: '0x10' }, error: true },
+  { region: 'rect:8x8', params: { family: 'stipple' }, seed: '0o17', error: true },
 ];
 for (const c of extra) cases.push({ units: 'in', seed: '1', ...c });
 
