@@ -182,6 +182,12 @@ QC__HIDDEN int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_p
                                 const qc_skeleton *skel, const qc__outline_style *style,
                                 qc_path *out, qc_stats *stats);
 
+/* The parameters fill and stipple read. */
+#define QC__FILL_PARAMS                                                              \
+    (QC_PARAM_BIT(QC_PARAM_ID_TILE) | QC_PARAM_BIT(QC_PARAM_ID_TIP) |               \
+     QC_PARAM_BIT(QC_PARAM_ID_WIDTH) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) |       \
+     QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS))
+
 /* ---- tiles (tile.c) ---- */
 
 /* Port stubs: the nearest this many points are tried. */
