@@ -72,6 +72,12 @@ int cli_write_plans(qc_ctx *ctx, const char *const *paths, const int *formats, s
 int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *plan,
                    const qc_io_opts *opts);
 
+/* CLI_OK when p[0..n) lies in the region's box (times the tiles of a tiled
+ * pattern), else CLI_RUNTIME after one line naming the family and region:
+ * no writer emits a point another would refuse. */
+int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
+                     const qc_region *region, const char *region_name, const char *what);
+
 /* Reads a .pat or .svg pattern into a plan. CLI_* status. */
 int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan);
 

@@ -204,6 +204,9 @@ int cmd_generate(int argc, char **argv)
                        &timer);
     cli_timer_mark(&timer, "write");
     if (rc == CLI_OK)
+        rc = cli_check_inside(plan.p, plan.n, &res.params, &region,
+                              g.pat.region != NULL ? g.pat.region : "rect:8x8", "generate");
+    if (rc == CLI_OK)
         rc = write_outputs(&ctx, &g, fmt, &region, &plan);
     cli_timer_mark(&timer, NULL);
     if (rc == CLI_OK && g.stats)

@@ -30,6 +30,9 @@ static int make_block(qc_ctx *ctx, block *b)
     if (rc == CLI_OK && qc_generate(ctx, &region, &b->pat.params, &given,
                                     motifs.n ? &motifs : NULL, &res) < 0)
         rc = cli_fail(ctx, b->label, ctx->status);
+    if (rc == CLI_OK)
+        rc = cli_check_inside(res.path.pt, res.path.npt, &res.params, &region,
+                              b->pat.region != NULL ? b->pat.region : "rect:8x8", b->label);
     if (rc == CLI_OK) {
         mm = b->pat.mm_per_unit;
         c = qc_cos(b->rotate * QC_PI / 180);

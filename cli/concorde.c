@@ -3,6 +3,7 @@
  * points in micrometres and reads its tour back. Concorde is not in Debian;
  * without it on PATH we say how to get it.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -68,25 +69,49 @@ static int run_concorde(const char *dir, const char *tsp, const char *sol)
     return 0;
 }
 
-/* The solution file: the count, then the 0-based tour. */
+/* The solution file: the count, then the 0-based tour, which must visit
+ * every point once (a solver's file is not trusted: a tour repeating one
+ * point would have length 0). */
 static int read_tour(qc_ctx *ctx, const char *path, size_t n, qc_order *out)
 {
     FILE *f = fopen(path, "r");
     unsigned long count, v;
+    unsigned char *seen = calloc(n ? n : 1, 1);
     size_t i;
+    int rc = -1;
 
-    if (f == NULL || fscanf(f, "%lu", &count) != 1 || count != n) {
-        if (f != NULL)
-            fclose(f);
-        return -1;
+    if (f == NULL || seen == NULL || fscanf(f, "%lu", &count) != 1 || count != n)
+        goto out;
+    for (i = 0; i < n; i++) {
+        if (fscanf(f, "%lu", &v) != 1 || v >= n || seen[v]++ ||
+            qc_order_push(ctx, out, (uint32_t)v) < 0)
+            goto out;
     }
-    for (i = 0; i < n; i++)
-        if (fscanf(f, "%lu", &v) != 1 || v >= n || qc_order_push(ctx, out, (uint32_t)v) < 0) {
-            fclose(f);
-            return -1;
-        }
-    fclose(f);
-    return 0;
+    rc = 0;
+out:
+    free(seen);
+    if (f != NULL)
+        fclose(f);
+    return rc;
+}
+
+/* Empties and removes the temporary folder, whatever the solver left in it
+ * (concorde writes in.mas, in.pul, Oin.sav, ... beside its files). */
+static void remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char path[96];
+
+    while (d != NULL && (e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, e->d_name) < sizeof path)
+            remove(path);
+    }
+    if (d != NULL)
+        closedir(d);
+    rmdir(dir);
 }
 
 int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region *region,
@@ -114,7 +139,8 @@ int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region 
     snprintf(sol, sizeof sol, "%s/out.sol", dir);
     if (write_tsplib(tsp, &res->points) != 0 || run_concorde(dir, "in.tsp", "out.sol") != 0 ||
         read_tour(ctx, sol, res->points.n, &tour) != 0) {
-        cli_error("--tsp concorde: concorde failed on %lu points",
+        cli_error("--tsp concorde: concorde failed on %lu points (or its tour does not visit "
+                  "each point once)",
                   (unsigned long)res->points.n);
         goto out;
     }
@@ -129,8 +155,6 @@ int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region 
     rc = CLI_OK;
 out:
     qc_order_free(ctx, &tour);
-    remove(tsp);
-    remove(sol);
-    rmdir(dir);
+    remove_dir(dir);
     return rc;
 }

@@ -8,6 +8,7 @@
 ROOT=$(pwd)
 
 fresh() { d=$(mktemp -d "$WORK/c.XXXXXX") && cd "$d"; }
+have_usb() { "$QC" udev-rule 0bad:1001 >/dev/null 2>&1; } # not built with USB=0
 
 job_link_out() {
     fresh && mkdir job out && ln -s ../out job/link &&
@@ -71,7 +72,7 @@ fifo_inputs() {
         expect_fail 1 "'p' is not a regular file" "$QC" job p &&
         echo '{"blocks":[{"region":"p"}]}' >j.json &&
         expect_fail 1 "'p' is not a regular file" "$QC" job j.json &&
-        expect_fail 1 "'p' is not a regular file" "$QC" upload p --device 0bad:1001
+        { ! have_usb || expect_fail 1 "'p' is not a regular file" "$QC" upload p --device 0bad:1001; }
 }
 check fifos_are_refused_not_waited_on fifo_inputs
 
@@ -88,7 +89,8 @@ escaped() {
         ! grep -q "$(printf '\033')" err && ! grep -q "$(printf '\007')" err &&
         ! grep -q "$(printf '\302\233')" err && grep -qF '\x1B]0;x\x07\u009By\nz' err &&
         "$QC" generate --region "$(printf 'a\033[2Jb.svg')" 2>err; [ "$(wc -l <err)" -eq 1 ] &&
-        grep -qF 'a\x1B[2Jb.svg' err
+        grep -qF 'a\x1B[2Jb.svg' err &&
+        { ! have_usb || expect_fail 2 "bad --group 'a.nb'" "$QC" udev-rule 0bad:1001 --group "$(printf 'a\nb')"; }
 }
 check control_characters_are_escaped_in_errors escaped
 
@@ -103,5 +105,28 @@ open("m.svg", "w").write("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 
             "$QC" generate --family packing --motif m.svg -o p.pat && [ ! -e p.pat ]
 }
 check packing_copies_of_a_huge_motif_are_refused packed_budget
+
+# A fake concorde on PATH: it leaves junk beside its files and writes the
+# tour FAKE_TOUR asks for ("repeat": point 0 n times; "good": 0..n-1).
+fake_concorde() {
+    mkdir -p bin && cat >bin/concorde <<'SH' && chmod +x bin/concorde
+#!/bin/sh
+pwd >>"$FAKE_LOG"
+n=$(sed -n 's/^DIMENSION: //p' in.tsp)
+echo junk >in.mas; echo junk >Oin.sav
+{ echo "$n"; i=0; while [ $i -lt "$n" ]; do
+    if [ "$FAKE_TOUR" = good ]; then echo $i; else echo 0; fi; i=$((i + 1)); done; } >out.sol
+SH
+}
+
+concorde_tour_checked() {
+    fresh && fake_concorde && export FAKE_LOG="$d/log" &&
+        FAKE_TOUR=repeat PATH="$d/bin:$PATH" expect_fail 1 "does not visit each point once" \
+            "$QC" skeleton --path tsp --tsp concorde -o s.json && [ ! -e s.json ] &&
+        FAKE_TOUR=good PATH="$d/bin:$PATH" "$QC" skeleton --path tsp --tsp concorde -o s.json &&
+        [ -s s.json ] && [ "$(wc -l <log)" -eq 2 ] &&
+        while read -r dir; do [ ! -e "$dir" ] || { echo "left $dir"; exit 1; }; done <log
+}
+check concorde_tour_must_be_a_permutation_and_its_folder_goes concorde_tour_checked
 
 finish

@@ -49,7 +49,7 @@ check generate_svg_region_every_format vg 0 generate --region \
     "$ROOT/tests/fixtures/svg/block_with_hole.svg" --units mm --spacing 12 \
     -o a.pat -o a.qli -o a.dxf -o a.plt -o a.qcc -o a.iqp -o a.bqm -o a.gcode -o a.svg --stats
 check generate_given_points vg 0 generate --points "$ROOT/tests/fuzz/corpus/points/berlin52.tsp" \
-    --units mm --region rect:2000x2000 --family wanderer --spacing 100 --margin 2 -o w.svg
+    --units mm --region rect:2000x2000 --family wanderer --spacing 20 --margin 2 -o w.svg # at 100 its loops leave the block
 check skeleton_json_and_svg vg 0 skeleton --region square:60 --units mm -o s.json -o s.svg
 small_job() {
     cat > job.json <<'JSON'

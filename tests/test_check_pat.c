@@ -88,6 +88,33 @@ static void content_after_m02_and_garbage_should_be_reported(void)
     qc_plan_free(&ctx, &plan);
 }
 
+/* What the strict reader (qc_io_read_pat) refuses is a finding here too:
+ * a '+' sign, more than 6 integer digits, and a coordinate beyond the
+ * writers' 1e6 mm (a 25 km stitch). */
+static void what_the_reader_refuses_should_be_reported(void)
+{
+    static const char *const bad[] = {
+        "N1G00X0.000Y0.000\r\nN2G01X+1.000Y0.000\r\nN3M02\r\n",
+        "N1G00X0.000Y0.000\r\nN2G01X1234567.000Y0.000\r\nN3M02\r\n",
+        "N1G00X0.000Y0.000\r\nN2G01X984252.000Y0.000\r\nN3M02\r\n",
+    };
+    static const char *const want[] = {"dialect ", "dialect range ", "range "};
+    size_t i;
+
+    for (i = 0; i < 3; i++) {
+        qc_plan plan, strict = {0};
+        kinds[0] = '\0';
+        TEST_ASSERT_EQUAL_size_t(strlen(want[i]) / 6, lint(bad[i], &plan));
+        TEST_ASSERT_EQUAL_STRING(want[i], kinds);
+        TEST_ASSERT_TRUE(plan.p[1].x <= 1e6); /* measures stay finite and bounded */
+        TEST_ASSERT_TRUE(qc_io_read_pat(&ctx, bad[i], strlen(bad[i]), &strict) < 0 ||
+                         strict.p[1].x > 1e6);
+        qc_plan_free(&ctx, &strict);
+        qc_plan_free(&ctx, &plan);
+    }
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 static void out_of_memory_should_leave_nothing(void)
 {
     static const char text[] = "N1G00X1.000Y2.000\r\nN2G01X1.500Y2.250\r\nN3M02\r\n";
@@ -115,6 +142,7 @@ int main(void)
     RUN_TEST(good_file_should_have_no_findings);
     RUN_TEST(each_fault_should_be_reported);
     RUN_TEST(content_after_m02_and_garbage_should_be_reported);
+    RUN_TEST(what_the_reader_refuses_should_be_reported);
     RUN_TEST(out_of_memory_should_leave_nothing);
     return UNITY_END();
 }

@@ -737,7 +737,8 @@ static void malformed_xml_should_fail_with_where(void)
     expect_fail_str("</svg>", QC_EFORMAT, "end tag without");
     expect_fail_str("<html xmlns=\"http://www.w3.org/1999/xhtml\"><svg/></html>", QC_EFORMAT,
                     "root element is <html>");
-    expect_fail_str("<svg xmlns=\"http://www.w3.org/1999/xhtml\"/>", QC_EFORMAT, "not <svg>");
+    expect_fail_str("<svg xmlns=\"http://www.w3.org/1999/xhtml\"/>", QC_EFORMAT,
+                    "the root element <svg> is not in the SVG namespace");
     expect_fail_str("<!-- only a comment -->", QC_EFORMAT, "no root element");
     expect_fail_str("<svg>\n\n<rect x='1' \x01/></svg>", QC_EFORMAT, "svg line 3 (byte 19): control character 0x01");
     expect_fail("\xFF\xFE<\0s\0v\0g\0/\0>\0", 14, QC_EFORMAT, QC_EFORMAT, "UTF-16");

@@ -6,6 +6,7 @@
  */
 #include <stdarg.h>
 #include <stdio.h>
+#include <math.h>
 #include <string.h>
 
 #include "io_internal.h"
@@ -45,14 +46,22 @@ static void excerpt(const char *s, size_t n, char *out, size_t cap)
     out[k] = '\0';
 }
 
-/* A number [-]digits[.digits]: value in thousandths-exact double, decimals counted. */
-static const char *number(const char *s, const char *end, double *v, int *decimals)
+/* A number [-]digits[.digits]: value in thousandths-exact double, decimals
+ * counted; *form gets NUM_PLUS for a '+' sign and NUM_LONG for more integer
+ * digits than the strict reader takes (read_pat.c), so either is a finding. */
+#define NUM_PLUS 1
+#define NUM_LONG 2
+#define PAT_INT_DIGITS 6
+#define PAT_MAX_MM 1e6 /* the writers' and the library's coordinate limit */
+static const char *number(const char *s, const char *end, double *v, int *decimals, int *form)
 {
     const char *p = s;
     double ip = 0.0, frac = 0.0, scale = 1.0;
     int neg = 0, digits = 0;
 
     *decimals = -1;
+    if (p < end && *p == '+')
+        *form |= NUM_PLUS;
     if (p < end && (*p == '-' || *p == '+'))
         neg = *p++ == '-';
     while (p < end && *p >= '0' && *p <= '9' && digits < 12) {
@@ -72,6 +81,8 @@ static const char *number(const char *s, const char *end, double *v, int *decima
     }
     if (digits == 0 && *decimals <= 0)
         return NULL;
+    if (digits > PAT_INT_DIGITS)
+        *form |= NUM_LONG;
     *v = (ip + frac) * (neg ? -1.0 : 1.0);
     return p;
 }
@@ -108,18 +119,29 @@ static int lint_line(linter *l, size_t line, const char *s, const char *end,
         return QC_OK;
     }
     if (end - p >= 3 && (memcmp(p, "G00", 3) == 0 || memcmp(p, "G01", 3) == 0)) {
-        int jump = p[2] == '0', dx, dy;
+        int jump = p[2] == '0', dx, dy, form = 0;
         double x, y;
         const char *q = p + 3;
 
-        if (q < end && *q == 'X' && (q = number(q + 1, end, &x, &dx)) != NULL && q < end &&
-            *q == 'Y' && (q = number(q + 1, end, &y, &dy)) != NULL && q == end) {
+        if (q < end && *q == 'X' && (q = number(q + 1, end, &x, &dx, &form)) != NULL && q < end &&
+            *q == 'Y' && (q = number(q + 1, end, &y, &dy, &form)) != NULL && q == end) {
             qc_vec2 v;
 
             if (dx != 3 || dy != 3)
                 finding(l, line, "decimals", "X has %d and Y %d decimals, expected 3", dx, dy);
+            if (form & NUM_PLUS)
+                finding(l, line, "dialect", "a '+' sign in '%s' (readers take only '-')", ex);
+            if (form & NUM_LONG)
+                finding(l, line, "dialect", "more than %d integer digits in '%s'", PAT_INT_DIGITS,
+                        ex);
             v.x = x * 25.4;
             v.y = y * 25.4;
+            if (!(fabs(v.x) <= PAT_MAX_MM && fabs(v.y) <= PAT_MAX_MM)) {
+                finding(l, line, "range", "(%g, %g) in is beyond 1e6 mm (39370 in) of the origin",
+                        x, y);
+                v.x = fmax(-PAT_MAX_MM, fmin(PAT_MAX_MM, v.x)); /* kept finite for the measures */
+                v.y = fmax(-PAT_MAX_MM, fmin(PAT_MAX_MM, v.y));
+            }
             return qc_plan_push(l->ctx, out, v, jump || out->n == 0 ? QC_ST_JUMP : 0);
         }
         finding(l, line, "dialect", "malformed move '%s'", ex);

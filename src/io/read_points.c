@@ -424,9 +424,10 @@ static int tsplib_header(reader *r, unsigned long *dim)
                 return syntax(r, "DIMENSION needs a whole number");
             if (*dim == 0)
                 return qc__fail(r->ctx, QC_EEMPTY, "tsplib line %lu: DIMENSION 0", r->line);
-            if (*dim > QC_MAX_POINTS)
-                return qc__fail(r->ctx, QC_ELIMIT, "tsplib line %lu: DIMENSION %lu is above "
-                                "%lu points", r->line, *dim, (unsigned long)QC_MAX_POINTS);
+            if (*dim > QC_MAX_POINTS) /* as written: the value saturates at 1e9 */
+                return qc__fail(r->ctx, QC_ELIMIT, "tsplib line %lu: DIMENSION %.*s is above "
+                                "%lu points", r->line, (int)(ve - v > 40 ? 40 : ve - v), v,
+                                (unsigned long)QC_MAX_POINTS);
             have_dim = 1;
         }
     }

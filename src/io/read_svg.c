@@ -121,8 +121,18 @@ static int ring_done(region_sink *s)
     }
     size = fmax(maxx - minx, maxy - miny);
     a = fabs(area2(s->cur, n)) / 2;
-    if (!(a > 1e-10 * size * size) || a < 1e-12)
+    if (!(a > 1e-10 * size * size) || a < 1e-12) {
+        /* no net area; with unsigned area it is a figure-8 whose lobes
+         * cancel: it crosses itself (normalizing would say so for any other) */
+        double fan = 0;
+        for (i = 1; i + 1 < n; i++)
+            fan += fabs((s->cur[i].x - s->cur[0].x) * (s->cur[i + 1].y - s->cur[0].y) -
+                        (s->cur[i].y - s->cur[0].y) * (s->cur[i + 1].x - s->cur[0].x));
+        if (fan / 2 > 1e-6 * size * size && fan / 2 > 1e-12)
+            return qc__fail(s->ctx, QC_EINTERSECT,
+                            "svg: a shape crosses itself (its lobes cancel to zero area)");
         return QC_OK;
+    }
     QC__TRY(QC__RESERVE(s->ctx, s->rings.v, s->rings.v_cap, s->rings.nv + n));
     QC__TRY(QC__RESERVE(s->ctx, s->rings.end, s->rings.end_cap, s->rings.n + 1));
     memcpy(s->rings.v + s->rings.nv, s->cur, n * sizeof *s->cur);

@@ -435,6 +435,10 @@ static int emit(walker *k, const frame *f, int closed)
     for (i = 0; i < k->shape.npt; i++) {
         qc_vec2 p = qc__svg_mat_apply(&f->m, k->shape.pt[i]);
 
+        if (!isfinite(p.x) || !isfinite(p.y)) /* nested scales overflowed: no "(-nan, -nan)" */
+            return qc__fail(k->ctx, QC_ERANGE,
+                            "svg line %lu, <%s>: a point overflows after transforms (nested "
+                            "scales beyond any size)", k->w.line, k->w.elem);
         if (!(fabs(p.x) <= QC__SVG_MAX_MM) || !(fabs(p.y) <= QC__SVG_MAX_MM))
             return qc__fail(k->ctx, QC_ERANGE,
                             "svg line %lu, <%s>: point (%g, %g) mm after transforms is "
@@ -465,6 +469,9 @@ static int open_element(walker *k)
     k->w.attr = "";
     *f = *parent;
     if (d == 1) {
+        if (!k->x.svg && name_is(k, "svg"))
+            return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element <svg> is not in "
+                            "the SVG namespace (xmlns=\"http://www.w3.org/2000/svg\")", k->w.line);
         if (!k->x.svg || !name_is(k, "svg"))
             return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element is <%.*s>, not <svg>",
                             k->w.line, (int)(k->x.name_len > 40 ? 40 : k->x.name_len), k->x.name);

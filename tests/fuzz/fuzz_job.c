@@ -4,7 +4,7 @@
  * then the job's own validation (cli_job_parse of cli/job_parse.c: keys,
  * units, tie, outputs, blocks, params) and, per block, the parameter
  * conversion and range check (cli_pattern_finish) and, for built-in
- * shapes, the region. No block is generated and no file is written
+ * shapes, the region, and the job's total budget. No block is generated and no file is written
  * (generation has its own target, fuzz_generate). Runs with stderr closed (-close_fd_mask=2): the
  * CLI prints its one-line errors there.
  */
@@ -20,6 +20,24 @@ static int builtin_shape(const char *spec)
     const char *c = strchr(spec, ':');
 
     return c != NULL && c != spec && strchr(spec, '/') == NULL && strstr(spec, ".svg") == NULL;
+}
+
+/* The job's total budget (cli/job_budget.c), when every region is a
+ * built-in shape and no block reads a points file. */
+static void budget(job *j)
+{
+    fuzz_alloc a;
+    qc_ctx ctx;
+    size_t i;
+    int rc;
+
+    for (i = 0; i < j->n; i++)
+        if (j->blocks[i].pat.points_file != NULL || !builtin_shape(j->blocks[i].pat.region))
+            return;
+    fuzz_ctx_init(&ctx, &a);
+    rc = cli_job_budget(&ctx, j);
+    FUZZ_CHECK(rc == CLI_OK || rc == CLI_USAGE || rc == CLI_RUNTIME, "a budget status");
+    fuzz_check_clean(&a, "job budget leaked");
 }
 
 static void validate(job *j)
@@ -45,6 +63,7 @@ static void validate(job *j)
         }
         fuzz_check_clean(&a, "job block leaked");
     }
+    budget(j);
 }
 
 /* The job text as quiltc reads it: NUL-terminated, then strictly. */

@@ -46,6 +46,9 @@ def urbs(ops):
         if name == 'devid':
             text = a[0].encode('ascii')
             reply = struct.pack('>H', len(text) + 2) + text
+            # a device sends at most the wLength asked for, whatever its ID's
+            # length prefix says (a longer reply corrupts umockdev's heap)
+            reply = reply[:USB_DEVICE_ID_LEN]
             setup = struct.pack('<BBHHH', 0xA1, 0, 0, 0, USB_DEVICE_ID_LEN)
             out.append(('ctrl', setup, reply))
         elif name == 'status':

@@ -176,7 +176,13 @@ function commandLine(s) {
 
 function setState(state) { document.body.dataset.state = state; }
 
+// Text from files (SVG names, library messages) may hold control
+// characters, C1 (U+0080..U+009F) included: shown as \uXXXX, as the CLI does.
+const visible = (m) => String(m).replace(/[\u0000-\u001f\u007f-\u009f]/g,
+  (c) => `\\u${c.charCodeAt(0).toString(16).padStart(4, '0')}`);
+
 function showError(message) {
+  message = message && visible(message);
   $('error').hidden = !message;
   $('error').textContent = message || '';
   if (message) $('error').dataset.count = Number($('error').dataset.count || 0) + 1;

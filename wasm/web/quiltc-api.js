@@ -119,7 +119,7 @@ export class Quiltc {
           text = value.slice(0, suffix.index);
         }
         v = typeof text === 'number' ? text : strictNumber(text);
-        if (!Number.isFinite(v)) throw new Error(`${name}: '${value}' is not a ${row.type === 'length' ? 'length' : 'number'}`);
+        if (!Number.isFinite(v)) throw new Error(`${name}: '${value}' is not a ${row.type === 'length' ? 'length (a number, optionally with mm, cm or in)' : 'number'}`);
         v *= scale;
       }
       this.withString(name, (p) => this.check(this.m._qcw_param(this.job, p, v)));
@@ -136,9 +136,11 @@ export class Quiltc {
   seed(value) {
     let s;
     try {
-      s = BigInt(typeof value === 'string' ? value.trim() : value);
+      const t = typeof value === 'string' ? value.trim() : value;
+      if (typeof t === 'string' && !/^\d+$/.test(t)) throw new Error('not decimal'); // BigInt takes 0x10
+      s = BigInt(t);
     } catch {
-      throw new Error(`seed: '${value}' is not a whole number`);
+      throw new Error(`seed: '${value}' is not a whole number from 0 to 2^64-1`);
     }
     if (s < 0n || s >= 1n << 64n) throw new Error(`seed: '${value}' is not a whole number from 0 to 2^64-1`);
     this.check(this.m._qcw_seed(this.job, Number(s >> 32n), Number(s & 0xffffffffn)));
@@ -186,8 +188,9 @@ function unitScale(units) {
   return mm;
 }
 
-// The whole string as a finite number, like the CLI's strict parser.
+// The whole string as a finite number, like the CLI's strict parser: plain
+// decimals only (Number() also takes 0x10, 0b11, 0o17, which the CLI refuses).
 function strictNumber(s) {
   const t = String(s).trim();
-  return t === '' ? NaN : Number(t);
+  return /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(t) ? Number(t) : NaN;
 }

@@ -1,0 +1,41 @@
+/*
+ * The writers' common guard: a pattern reaching outside its block (a family
+ * at --margin 0 may stray 2 mm past the edge) is refused with one message
+ * for every output format, before any file is opened. Before this, .pat
+ * alone refused (a negative coordinate) while .svg, .dxf and .gcode were
+ * written silently.
+ */
+#include "cli.h"
+
+#define SLACK_MM 1e-6 /* rounding in the tile layout; nothing a machine would sew */
+
+int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
+                     const qc_region *region, const char *region_name, const char *what)
+{
+    qc_bbox box = qc_region_bbox(region), got;
+    double w = box.max.x - box.min.x, h = box.max.y - box.min.y;
+    size_t i;
+
+    if (n == 0)
+        return CLI_OK;
+    if (resolved->tile == QC_TILE_EDGE_TO_EDGE || resolved->tile == QC_TILE_ALL_OVER) {
+        /* tiles are laid out right and up from the first tile's box */
+        box.max.x = box.min.x + w * (resolved->repeat_cols >= 1 ? resolved->repeat_cols : 1);
+        box.max.y = box.min.y + h * (resolved->repeat_rows >= 1 ? resolved->repeat_rows : 1);
+    }
+    got.min = got.max = p[0];
+    for (i = 1; i < n; i++) {
+        got.min.x = p[i].x < got.min.x ? p[i].x : got.min.x;
+        got.min.y = p[i].y < got.min.y ? p[i].y : got.min.y;
+        got.max.x = p[i].x > got.max.x ? p[i].x : got.max.x;
+        got.max.y = p[i].y > got.max.y ? p[i].y : got.max.y;
+    }
+    if (got.min.x >= box.min.x - SLACK_MM && got.min.y >= box.min.y - SLACK_MM &&
+        got.max.x <= box.max.x + SLACK_MM && got.max.y <= box.max.y + SLACK_MM)
+        return CLI_OK;
+    cli_error("%s: the %s pattern reaches %.4g..%.4g, %.4g..%.4g mm, outside the region %s "
+              "(%.4g..%.4g, %.4g..%.4g mm); no file is written (a larger margin keeps it inside)",
+              what, qc_family_name(resolved->family), got.min.x, got.max.x, got.min.y, got.max.y,
+              region_name, box.min.x, box.max.x, box.min.y, box.max.y);
+    return CLI_RUNTIME;
+}
