@@ -33,7 +33,7 @@ int qc_region_add_ring(qc_ctx *ctx, qc_region *r, const qc_vec2 *pts, size_t n);
  */
 int qc_region_normalize(qc_ctx *ctx, qc_region *r);
 
-/* Built-in shapes: "rect:WxH", "circle:D", "hexagon:D", "star:D", "heart:D";
+/* Built-in shapes: "rect:WxH", "square:S", "circle:D", "hexagon:D", "star:D", "heart:D";
  * sizes in the caller's unit, mm_per_unit converts (25.4 for inches).
  * The shape's bounding box has its lower-left corner at (0, 0). Normalized. */
 int qc_region_shape(qc_ctx *ctx, const char *spec, double mm_per_unit,
