@@ -46,7 +46,8 @@ double qc_region_boundary_distance(const qc_region *r, qc_vec2 p);
 /* Signed area sum (outer positive, holes negative), mm^2. */
 double qc_region_area(const qc_region *r);
 qc_bbox qc_region_bbox(const qc_region *r);
-/* Copies src into dst (dst is overwritten, not freed first). */
+/* Copies src into dst, built as every output is (core.h): zeroed first, not
+ * freed, so pass an empty or freed dst; on error dst is empty. */
 int qc_region_copy(qc_ctx *ctx, qc_region *dst, const qc_region *src);
 /* Moves every vertex by (dx, dy). */
 void qc_region_translate(qc_region *r, double dx, double dy);

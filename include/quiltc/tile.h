@@ -33,7 +33,7 @@ int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 
  * so the joins are exact and out is one piece. A MOVE starts out only when
  * out is empty (else the first point is joined by a LINE).
  * Errors: QC_EINVAL (tile empty or not one piece, cols or rows 0, or
- * dx/dy not finite), QC_ENOMEM (out keeps what was appended; free it).
+ * dx/dy not finite), QC_ENOMEM (out as on entry, core.h).
  */
 int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
                    unsigned rows, qc_path *out);
