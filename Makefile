@@ -182,7 +182,7 @@ uninstall:
 # Every build directory: build, build-san, build-unity, build-clang,
 # build-arm, build-arm-lib, build-fuzz, and any other BUILD=build-*.
 clean:
-	rm -rf build build-* $(BUILD) quiltc.pc
+	rm -rf build build-* $(filter-out build build-%,$(BUILD)) quiltc.pc
 
 # make soname: the soname the library is linked with (tests/check_install.sh).
 .PHONY: soname
