@@ -1,6 +1,6 @@
 # make wasm: the unchanged core + wasm/quiltc_wasm.c as build/web/quiltc.mjs + .wasm, with the page.
 # Debian's emscripten needs the system Node modules (acorn) on NODE_PATH.
-# make serve: serves build/web on http://localhost:8000/ (SERVE_PORT=...; any static server works).
+# make serve: serves build/web on http://127.0.0.1:8000/ only (SERVE_PORT=...; any static server works).
 # $(BUILD)/tests/qcw_native: the same bindings built natively (tests/wasm/identity.mjs).
 WASM_DIR    = $(BUILD)/web
 WASM_OBJDIR = $(BUILD)/wasm-obj
@@ -34,7 +34,7 @@ $(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c wasm/quiltc_wasm.c wasm/quilt
 
 SERVE_PORT ?= 8000
 serve: wasm
-	@echo "quiltc page: http://localhost:$(SERVE_PORT)/ (Ctrl-C stops)"
-	cd $(WASM_DIR) && python3 -m http.server $(SERVE_PORT)
+	@echo "quiltc page: http://127.0.0.1:$(SERVE_PORT)/ (this machine only; Ctrl-C stops)"
+	cd $(WASM_DIR) && python3 -m http.server --bind 127.0.0.1 $(SERVE_PORT)
 
 DEP_FILES += $(WASM_OBJ:.o=.d)

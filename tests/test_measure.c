@@ -195,6 +195,31 @@ static void self_crossings_should_count_proper_crossings(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Hostile check inputs: stitches repeated on one spot are free (zero-length
+ * segments are skipped); segments all through one spot are refused before
+ * the quadratic pair loop. */
+static void self_crossings_should_refuse_piles_and_skip_repeats(void)
+{
+    size_t n = 8000, i, count = 7;
+    qc_vec2 *p = malloc(100000 * sizeof *p);
+
+    TEST_ASSERT_NOT_NULL(p);
+    for (i = 0; i < 100000; i++)
+        p[i] = v2(5, 5);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, p, 100000, 0, &count));
+    TEST_ASSERT_EQUAL_UINT(0, count);
+    for (i = 0; i < n; i++) { /* chords through the centre of a circle */
+        double t = (double)i * QC_PI * (1 + 0.37 / (double)n);
+        p[i] = v2(5 + 4 * qc_cos(t), 5 + 4 * qc_sin(t));
+    }
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_path_self_crossings(&ctx, p, n, 0, &count));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "over the limit of 20000000"));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, p, 200, 0, &count));
+    TEST_ASSERT_EQUAL_UINT(brute_crossings(p, 200, 0), count);
+    free(p);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -205,5 +230,6 @@ int main(void)
     RUN_TEST(largest_gap_should_reject_bad_input);
     RUN_TEST(largest_gap_should_survive_allocation_failures);
     RUN_TEST(self_crossings_should_count_proper_crossings);
+    RUN_TEST(self_crossings_should_refuse_piles_and_skip_repeats);
     return UNITY_END();
 }
