@@ -79,9 +79,12 @@ CLI_LIBS   = $(USB_LIBS) $(JSON_LIBS) $(LIBM)
 ifdef UNITY_DIR
 UNITY_SRC    = $(UNITY_DIR)/unity.c
 UNITY_CFLAGS = -I$(UNITY_DIR) -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64
+# vendored code: built as C99, not held to our warning set
+UNITY_OBJ_CFLAGS = -std=c99 $(CFLAGS) $(SANFLAGS) $(UNITY_CFLAGS)
 else
 UNITY_SRC    = tests/unity/unity.c
 UNITY_CFLAGS = -Itests/unity
+UNITY_OBJ_CFLAGS = $(TEST_CFLAGS)
 endif
 UNITY_OBJ    := $(BUILD)/obj/unity/unity.o
 TEST_SRC     := $(sort $(wildcard tests/test_*.c))
@@ -124,7 +127,7 @@ $(BUILD)/obj/tests/%.o: tests/%.c $(BUILD)/obj/tests/%.d
 
 $(UNITY_OBJ): $(UNITY_SRC) $(UNITY_OBJ:.o=.d)
 	@mkdir -p $(dir $@)
-	$(CC) $(TEST_CFLAGS) $(DEPFLAGS) -c $< -o $@
+	$(CC) $(UNITY_OBJ_CFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(BUILD)/libquiltc.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -179,7 +182,7 @@ uninstall:
 # Every build directory: build, build-san, build-unity, build-clang,
 # build-arm, build-arm-lib, build-fuzz, and any other BUILD=build-*.
 clean:
-	rm -rf build build-* $(BUILD) quiltc.pc
+	rm -rf build build-* $(filter-out build build-%,$(BUILD)) quiltc.pc
 
 # make soname: the soname the library is linked with (tests/check_install.sh).
 .PHONY: soname

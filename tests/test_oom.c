@@ -49,6 +49,45 @@ static int all_zero(const void *p, size_t n)
     return 1;
 }
 
+/* The output contract (core.h): an appended-to output holds on error exactly
+ * what it held on entry. Each appender's output starts with one sentinel. */
+static const qc_vec2 sentinel_pt = {-7, -9};
+#define SENTINEL_INDEX 12345u
+
+static void prefill_points(oom_run *r, qc_points *pts)
+{
+    memset(pts, 0, sizeof *pts);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&r->ctx, pts, sentinel_pt));
+}
+
+static void prefill_order(oom_run *r, qc_order *o)
+{
+    memset(o, 0, sizeof *o);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_order_push(&r->ctx, o, SENTINEL_INDEX));
+}
+
+static void prefill_path(oom_run *r, qc_path *p)
+{
+    memset(p, 0, sizeof *p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&r->ctx, p, sentinel_pt));
+}
+
+static int points_as_on_entry(const qc_points *pts)
+{
+    return pts->n == 1 && pts->v[0].x == sentinel_pt.x && pts->v[0].y == sentinel_pt.y;
+}
+
+static int order_as_on_entry(const qc_order *o)
+{
+    return o->n == 1 && o->i[0] == SENTINEL_INDEX;
+}
+
+static int path_as_on_entry(const qc_path *p)
+{
+    return p->ncmd == 1 && p->npt == 1 && p->cmd[0] == QC_PATH_MOVE &&
+           p->pt[0].x == sentinel_pt.x && p->pt[0].y == sentinel_pt.y;
+}
+
 /* Runs op failing allocation k = 1, 2, ...; returns how many allocations
  * the call makes when nothing fails. */
 static size_t oom_loop(const char *name, oom_op op)
@@ -221,8 +260,11 @@ static int op_normalize(oom_run *r)
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
     arm(r);
     rc = qc_region_normalize(&r->ctx, &reg);
-    if (rc == QC_OK)
+    if (rc == QC_OK) {
         rc = qc_region_copy(&r->ctx, &copy, &reg);
+        if (rc < 0)
+            TEST_ASSERT_TRUE_MESSAGE(all_zero(&copy, sizeof copy), "a failed copy leaves dst empty");
+    }
     disarm(r);
     qc_region_free(&r->ctx, &copy);
     qc_region_free(&r->ctx, &reg);
@@ -242,11 +284,12 @@ static int sample_kind;
 static int op_sample(oom_run *r)
 {
     qc_region reg;
-    qc_points pts = {0};
+    qc_points pts;
     qc_sample_params sp;
     int rc = block(r, &reg);
 
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    prefill_points(r, &pts);
     memset(&sp, 0, sizeof sp);
     sp.kind = sample_kind;
     sp.spacing = 6;
@@ -257,6 +300,8 @@ static int op_sample(oom_run *r)
     disarm(r);
     if (rc == QC_OK)
         TEST_ASSERT_TRUE(pts.n > 10);
+    else
+        TEST_ASSERT_TRUE_MESSAGE(points_as_on_entry(&pts), "qc_sample: out as on entry");
     qc_points_free(&r->ctx, &pts);
     qc_region_free(&r->ctx, &reg);
     return rc;
@@ -328,7 +373,7 @@ static int op_walk(oom_run *r)
     qc_region reg;
     qc_points pts;
     qc_edges e = {0};
-    qc_order o = {0};
+    qc_order o;
     int rc = block(r, &reg);
 
     if (rc == QC_OK)
@@ -336,15 +381,18 @@ static int op_walk(oom_run *r)
     if (rc == QC_OK)
         rc = qc_mst(&r->ctx, pts.v, pts.n, QC_MST_MODE_DELAUNAY, &e);
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    prefill_order(r, &o);
     arm(r);
     rc = walk_to_last ? qc_tree_walk_to(&r->ctx, pts.v, pts.n, e.e, e.n, 0,
                                         (uint32_t)(pts.n - 1), &o)
                       : qc_tree_walk(&r->ctx, pts.v, pts.n, e.e, e.n, 0, &o);
     disarm(r);
     if (rc == QC_OK && !walk_to_last)
-        TEST_ASSERT_EQUAL_size_t(2 * (pts.n - 1) + 1, o.n);
+        TEST_ASSERT_EQUAL_size_t(1 + 2 * (pts.n - 1) + 1, o.n);
     if (rc == QC_OK && walk_to_last)
         TEST_ASSERT_EQUAL_UINT32(pts.n - 1, o.i[o.n - 1]);
+    if (rc < 0)
+        TEST_ASSERT_TRUE_MESSAGE(order_as_on_entry(&o), "qc_tree_walk: out as on entry");
     qc_order_free(&r->ctx, &o);
     qc_edges_free(&r->ctx, &e);
     qc_points_free(&r->ctx, &pts);
@@ -358,13 +406,14 @@ static int op_tsp(oom_run *r)
 {
     qc_region reg;
     qc_points pts;
-    qc_order o = {0};
+    qc_order o;
     qc_tsp_params tp;
     int rc = block(r, &reg);
 
     if (rc == QC_OK)
         rc = block_points(r, &reg, &pts);
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    prefill_order(r, &o);
     memset(&tp, 0, sizeof tp);
     tp.method = tsp_method;
     tp.perturb_iterations = 20;
@@ -372,7 +421,9 @@ static int op_tsp(oom_run *r)
     rc = qc_tsp(&r->ctx, pts.v, pts.n, &tp, &o);
     disarm(r);
     if (rc == QC_OK)
-        TEST_ASSERT_EQUAL_size_t(pts.n, o.n);
+        TEST_ASSERT_EQUAL_size_t(1 + pts.n, o.n);
+    else
+        TEST_ASSERT_TRUE_MESSAGE(order_as_on_entry(&o), "qc_tsp: out as on entry");
     qc_order_free(&r->ctx, &o);
     qc_points_free(&r->ctx, &pts);
     qc_region_free(&r->ctx, &reg);
@@ -401,16 +452,28 @@ static void test_graph_and_tour_should_survive_every_failed_allocation(void)
 static int op_curves(oom_run *r)
 {
     static const qc_vec2 pts[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 5}, {5, 5}, {2, 8}};
-    qc_path p = {0};
-    qc_points flat = {0};
-    qc_order ends = {0};
+    qc_path p, spline = {0};
+    qc_points flat;
+    qc_order ends;
     int rc;
 
+    prefill_path(r, &p);
+    prefill_points(r, &flat);
+    prefill_order(r, &ends);
     arm(r);
     rc = qc_curve_catmull_rom(&r->ctx, pts, 7, 1, &p);
+    if (rc < 0)
+        TEST_ASSERT_TRUE_MESSAGE(path_as_on_entry(&p), "qc_curve_catmull_rom: out as on entry");
     if (rc == QC_OK)
-        rc = qc_curve_flatten(&r->ctx, &p, 0.01, &flat, &ends);
+        rc = qc_curve_catmull_rom(&r->ctx, pts, 7, 1, &spline);
+    if (rc == QC_OK) {
+        rc = qc_curve_flatten(&r->ctx, &spline, 0.01, &flat, &ends);
+        if (rc < 0)
+            TEST_ASSERT_TRUE_MESSAGE(points_as_on_entry(&flat) && order_as_on_entry(&ends),
+                                     "qc_curve_flatten: out and piece_end as on entry");
+    }
     disarm(r);
+    qc_path_free(&r->ctx, &spline);
     qc_order_free(&r->ctx, &ends);
     qc_points_free(&r->ctx, &flat);
     qc_path_free(&r->ctx, &p);
@@ -419,16 +482,19 @@ static int op_curves(oom_run *r)
 
 static int op_tile(oom_run *r)
 {
-    qc_path tile = {0}, out = {0};
+    qc_path tile = {0}, out;
     qc_vec2 a = {0, 5}, b = {4, 9}, c = {8, 1}, d = {10, 5};
     int rc = qc_path_move_to(&r->ctx, &tile, a);
 
     if (rc == QC_OK)
         rc = qc_path_cubic_to(&r->ctx, &tile, b, c, d);
     TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    prefill_path(r, &out);
     arm(r);
     rc = qc_tile_repeat(&r->ctx, &tile, 10, 10, 3, 2, &out);
     disarm(r);
+    if (rc < 0)
+        TEST_ASSERT_TRUE_MESSAGE(path_as_on_entry(&out), "qc_tile_repeat: out as on entry");
     qc_path_free(&r->ctx, &out);
     qc_path_free(&r->ctx, &tile);
     return rc;
@@ -535,8 +601,13 @@ static int op_generate_motifs(oom_run *r)
     qc_params_set(&r->ctx, &p, "spacing", 10);
     arm(r);
     rc = qc_motif_builtin(&r->ctx, "leaf,heart", &set);
-    if (rc == QC_OK)
+    if (rc < 0)
+        TEST_ASSERT_TRUE_MESSAGE(set.n == 0, "qc_motif_builtin: out as on entry");
+    if (rc == QC_OK) {
         rc = qc_motif_from_svg(&r->ctx, motif_doc, sizeof motif_doc - 1, "drop", &set);
+        if (rc < 0)
+            TEST_ASSERT_TRUE_MESSAGE(set.n == 2, "qc_motif_from_svg: out as on entry");
+    }
     if (rc == QC_OK)
         rc = qc_generate(&r->ctx, &reg, &p, NULL, &set, &res);
     else

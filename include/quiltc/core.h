@@ -6,7 +6,20 @@
  * functions return int, QC_OK (0) or a negative QC_E* code; a detail message
  * is kept in the qc_ctx; outputs are caller-owned structs filled by the call
  * and released with the matching qc_*_free(ctx, x), which accepts a zeroed or
- * already freed struct.
+ * already freed struct and leaves it zeroed, ready for reuse.
+ *
+ * One contract for every output, in every stage:
+ * - A call that builds an output ("into *out": qc_region_shape, qc_region_copy,
+ *   qc_delaunay, qc_stitch_plan, qc_io_read_pat, qc_generate, ...) zeroes it
+ *   first and never reads or frees what it held: pass a fresh or freed struct
+ *   (one still holding data would leak).
+ * - A call that appends ("appended to *out": qc_*_push, qc_sample, qc_mst,
+ *   qc_tree_walk, qc_tsp, qc_curve_*, qc_tile_repeat, qc_io_read_points,
+ *   qc_motif_*, ...) adds after what *out holds.
+ * - On error, a built output is empty (zeroed: nothing to free, freeing is
+ *   harmless) and an appended output holds exactly what it held on entry
+ *   (its capacity may have grown). tests/test_oom.c checks both at every
+ *   failing allocation.
  */
 #ifndef QUILTC_CORE_H
 #define QUILTC_CORE_H

@@ -32,7 +32,7 @@ int qc_curve_catmull_rom(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed,
  * piece_end (may be NULL) receives, for each piece (MOVE), the index in out
  * one past its last point. A path not starting with MOVE starts at (0, 0).
  * Deterministic. Errors: QC_ERANGE (tol not > 0, a point NaN or inf), QC_ELIMIT (2^32 points),
- * QC_ENOMEM (out and piece_end hold what was appended; free them).
+ * QC_ENOMEM (out and piece_end as on entry, core.h).
  */
 int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
                      qc_points *out, qc_order *piece_end);

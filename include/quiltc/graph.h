@@ -1,7 +1,7 @@
 /*
  * Graphs over point sets (paper §4.2): the Delaunay triangulation with
- * robust adaptive predicates, and the Euclidean minimum spanning tree by
- * Kruskal over the Delaunay edges or the complete graph.
+ * robust adaptive predicates, and the Euclidean minimum spanning tree:
+ * Kruskal over the Delaunay edges, or a dense Prim over the complete graph.
  */
 #ifndef QUILTC_GRAPH_H
 #define QUILTC_GRAPH_H
@@ -60,7 +60,7 @@ void qc_mesh_free(qc_ctx *ctx, qc_mesh *mesh);
 typedef enum qc_mst_mode {
     QC_MST_MODE_DEFAULT = 0,  /* Delaunay */
     QC_MST_MODE_DELAUNAY = 1, /* Kruskal over the Delaunay edges, O(n log n) */
-    QC_MST_MODE_COMPLETE = 2  /* the complete graph (the paper's), O(n^2) */
+    QC_MST_MODE_COMPLETE = 2  /* the paper's complete graph: dense Prim, O(n^2) time, O(n) memory */
 } qc_mst_mode;
 
 /*

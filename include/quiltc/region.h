@@ -39,7 +39,7 @@ int qc_region_add_ring(qc_ctx *ctx, qc_region *r, const qc_vec2 *pts, size_t n);
  */
 int qc_region_normalize(qc_ctx *ctx, qc_region *r);
 
-/* Built-in shapes: "rect:WxH", "circle:D", "hexagon:D", "star:D", "heart:D";
+/* Built-in shapes: "rect:WxH", "square:S", "circle:D", "hexagon:D", "star:D", "heart:D";
  * sizes in the caller's unit, mm_per_unit converts (25.4 for inches).
  * The shape's bounding box has its lower-left corner at (0, 0). Normalized. */
 int qc_region_shape(qc_ctx *ctx, const char *spec, double mm_per_unit,
@@ -52,7 +52,8 @@ double qc_region_boundary_distance(const qc_region *r, qc_vec2 p);
 /* Signed area sum (outer positive, holes negative), mm^2. */
 double qc_region_area(const qc_region *r);
 qc_bbox qc_region_bbox(const qc_region *r);
-/* Copies src into dst (dst is overwritten, not freed first). */
+/* Copies src into dst, built as every output is (core.h): zeroed first, not
+ * freed, so pass an empty or freed dst; on error dst is empty. */
 int qc_region_copy(qc_ctx *ctx, qc_region *dst, const qc_region *src);
 /* Moves every vertex by (dx, dy). */
 void qc_region_translate(qc_region *r, double dx, double dy);

@@ -16,7 +16,8 @@ extern "C" {
  * from root. At each node the children are visited counter-clockwise,
  * starting from the direction of the parent (for the root: from the +x
  * axis). Every tree edge is traversed twice, down and back, so the walk has
- * 2(n-1)+1 entries and starts and ends at root. Appended to *out.
+ * 2(n-1)+1 entries and starts and ends at root. Appended to *out (on error
+ * as on entry, core.h).
  * Errors: QC_EINVAL (root out of range, or the edges are not a spanning
  * tree: the message says why), QC_ENOMEM.
  */

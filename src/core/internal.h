@@ -39,6 +39,12 @@ QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
 #define QC__RESERVE(ctx, arr, capv, need) \
     qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
 
+/* Scans a decimal number ([+-] digits [. digits] [(e|E) [+-] digits]; no
+ * hex, nan, inf or locale) at s[*pos..n): 1 with *v correctly rounded
+ * (possibly +-inf for a huge exponent) and *pos past it, or 0 when none
+ * starts there. An 'e' without exponent digits is left unread. number.c. */
+QC__HIDDEN int qc__scan_number(const char *s, size_t n, size_t *pos, double *v);
+
 /* Squared distance from p to segment ab (a point when a == b); the one
  * formula every stage uses, so their answers agree to the bit. */
 QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);

@@ -109,7 +109,8 @@ int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
                      qc_points *out, qc_order *piece_end)
 {
     flat_out o;
-    size_t i;
+    size_t i, n0 = out->n, e0 = piece_end != NULL ? piece_end->n : 0;
+    int rc;
 
     if (!(tol > 0) || tol > 1e6)
         return qc__fail(ctx, QC_ERANGE,
@@ -122,10 +123,15 @@ int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
     o.pts = out;
     o.ends = piece_end;
     o.any = 0;
-    QC__TRY(qc__curve_walk(path, tol, collect, &o));
-    if (o.any && piece_end != NULL)
-        QC__TRY(qc_order_push(ctx, piece_end, (uint32_t)out->n));
-    return QC_OK;
+    rc = qc__curve_walk(path, tol, collect, &o);
+    if (rc == QC_OK && o.any && piece_end != NULL)
+        rc = qc_order_push(ctx, piece_end, (uint32_t)out->n);
+    if (rc < 0) { /* as on entry (core.h) */
+        out->n = n0;
+        if (piece_end != NULL)
+            piece_end->n = e0;
+    }
+    return rc;
 }
 
 typedef struct measure {

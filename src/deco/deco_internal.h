@@ -1,7 +1,6 @@
 /*
  * Internals shared by the decoration families (src/deco/): motif geometry,
- * the collision grid, affine placement. Family engineers: only ADD
- * declarations here.
+ * the collision grid, affine placement.
  */
 #ifndef QC_DECO_INTERNAL_H
 #define QC_DECO_INTERNAL_H

@@ -110,7 +110,8 @@ static qc_vec2 sub2(qc_vec2 a, qc_vec2 b)
     return r;
 }
 
-static double dist2(qc_vec2 a, qc_vec2 b)
+/* The distance from a to b (not squared). */
+static double point_dist(qc_vec2 a, qc_vec2 b)
 {
     return qc_hypot(a.x - b.x, a.y - b.y);
 }
@@ -233,12 +234,12 @@ static int cut_round(const joiner *j, uint32_t g, double half, uint32_t *lo, uin
         return 0;
     for (arc = 0.0, steps = 0; (arc < half && steps < most) || steps == 0; steps++) {
         x = step_v(j, a, -1);
-        arc += dist2(p[x], p[a]);
+        arc += point_dist(p[x], p[a]);
         a = x;
     }
     for (arc = 0.0, steps = 0; (arc < half && steps < most) || steps == 0; steps++) {
         x = step_v(j, b, 1);
-        arc += dist2(p[x], p[b]);
+        arc += point_dist(p[x], p[b]);
         b = x;
     }
     for (x = step_v(j, a, -1);; x = step_v(j, x, 1)) { /* the cut and a vertex either side */
@@ -424,7 +425,7 @@ static int link_round(qc_ctx *ctx, joiner *j, double every, double reach, double
             uint32_t prv = step_v(j, (uint32_t)i, -1);
             int side;
 
-            acc += dist2(p[i], p[prv]);
+            acc += point_dist(p[i], p[prv]);
             if (acc < every || j->used[i])
                 continue;
             acc = 0.0;
@@ -462,7 +463,7 @@ static uint32_t tail_origin(const joiner *j, uint32_t x, double gap, uint32_t ex
         return NONE;
     while (arc < gap || steps == 0) {
         z = step_v(j, y, -1);
-        arc += dist2(j->p[z], j->p[y]);
+        arc += point_dist(j->p[z], j->p[y]);
         y = z;
         if (++steps > size / 4 || !is_free(j, y, except))
             return NONE;
@@ -480,7 +481,7 @@ static uint32_t advance(const joiner *j, uint32_t x, double arc)
 
     while (run < arc && ++steps < size) {
         uint32_t z = step_v(j, x, 1);
-        run += dist2(j->p[z], j->p[x]);
+        run += point_dist(j->p[z], j->p[x]);
         x = z;
     }
     return x;
@@ -673,7 +674,7 @@ static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, siz
             for (x = c[0]; x <= c[2]; x++)
                 for (q = j->grid.start[y * j->grid.gx + x]; q < j->grid.start[y * j->grid.gx + x + 1]; q++) {
                     uint32_t h = j->grid.seg[q];
-                    double dd = dist2(p[g], p[h]);
+                    double dd = point_dist(p[g], p[h]);
                     if (dd < bd && !j->used[h] && uf_find(j->uf, j->ring[h]) != rg) {
                         bd = dd;
                         best = h;

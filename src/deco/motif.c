@@ -346,12 +346,37 @@ done:
     return rc;
 }
 
+/* Frees the motifs of set from index n on: set back to its first n. */
+static void set_truncate(qc_ctx *ctx, qc_motif_set *set, size_t n)
+{
+    for (; set->n > n; set->n--) {
+        qc_motif *m = &set->m[set->n - 1];
+        qc_path_free(ctx, &m->path);
+        qc__free(ctx, m->hull, m->nhull * sizeof *m->hull);
+    }
+}
+
+static int add_builtins(qc_ctx *ctx, const char *names, qc_motif_set *out);
+
 int qc_motif_builtin(qc_ctx *ctx, const char *names, qc_motif_set *out)
 {
-    const char *s = names;
+    size_t n0;
+    int rc;
 
     if (names == NULL || out == NULL)
         return qc__fail(ctx, QC_EINVAL, "motif names missing");
+    n0 = out->n;
+    rc = add_builtins(ctx, names, out);
+    if (rc < 0)
+        set_truncate(ctx, out, n0); /* as on entry (core.h) */
+    return rc;
+}
+
+/* Appends each named built-in motif to out. */
+static int add_builtins(qc_ctx *ctx, const char *names, qc_motif_set *out)
+{
+    const char *s = names;
+
     while (*s != '\0') {
         const char *e = strchr(s, ',');
         size_t len = e != NULL ? (size_t)(e - s) : strlen(s), i;

@@ -90,19 +90,12 @@ int qc__tile_budget(qc_ctx *ctx, size_t tile_points, unsigned cols, unsigned row
     return QC_OK;
 }
 
-int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
-                   unsigned rows, qc_path *out)
+/* The rows of qc_tile_repeat, appended to out (checked arguments). */
+static int append_rows(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                       unsigned rows, qc_path *out)
 {
     unsigned r, c;
 
-    if (tile == NULL || tile->ncmd < 2 || tile->cmd[0] != QC_PATH_MOVE ||
-        qc_path_pieces(tile) != 1)
-        return qc__fail(ctx, QC_EINVAL, "tile repeat: the tile must be one piece of 2+ commands");
-    if (cols == 0 || rows == 0)
-        return qc__fail(ctx, QC_EINVAL, "tile repeat: %ux%u tiles", cols, rows);
-    if (!isfinite(dx) || !isfinite(dy))
-        return qc__fail(ctx, QC_EINVAL, "tile repeat: step (%g, %g) mm is not finite", dx, dy);
-    QC__TRY(qc__tile_budget(ctx, tile->npt, cols, rows));
     for (r = 0; r < rows; r++) {
         int rev = (int)(r & 1u);
         double ty = -(double)r * dy;
@@ -124,6 +117,28 @@ int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsig
         }
     }
     return QC_OK;
+}
+
+int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                   unsigned rows, qc_path *out)
+{
+    size_t ncmd0 = out->ncmd, npt0 = out->npt;
+    int rc;
+
+    if (tile == NULL || tile->ncmd < 2 || tile->cmd[0] != QC_PATH_MOVE ||
+        qc_path_pieces(tile) != 1)
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: the tile must be one piece of 2+ commands");
+    if (cols == 0 || rows == 0)
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: %ux%u tiles", cols, rows);
+    if (!isfinite(dx) || !isfinite(dy))
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: step (%g, %g) mm is not finite", dx, dy);
+    QC__TRY(qc__tile_budget(ctx, tile->npt, cols, rows));
+    rc = append_rows(ctx, tile, dx, dy, cols, rows, out);
+    if (rc < 0) { /* as on entry (core.h) */
+        out->ncmd = ncmd0;
+        out->npt = npt0;
+    }
+    return rc;
 }
 
 /* Whether the segment a-p[bi] crosses or touches a tree edge not at bi. */

@@ -6,7 +6,6 @@
 #include <string.h>
 
 #include "read_common.h"
-#include "svg_internal.h"
 
 #define READ_MAX_MM 1e6        /* the writers' limit, so every file read can be written */
 #define ARC_TOLERANCE_MM 0.05  /* chord error of a flattened arc */
@@ -67,7 +66,7 @@ int qc__scan_num(const char *s, size_t n, size_t *pos, double *v)
         return 0;
     end = i;
     i = *pos;
-    if (!qc__svg_scan_number(s, end, &i, v) || i != end)
+    if (!qc__scan_number(s, end, &i, v) || i != end)
         return 0;
     *pos = end;
     return 1;

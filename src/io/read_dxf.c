@@ -12,7 +12,6 @@
 #include <string.h>
 
 #include "read_common.h"
-#include "svg_internal.h"
 
 #define DXF_MAX_SAMPLES 100000.0 /* per curve */
 #define DXF_STEP_MM 0.5          /* spline sampling along its control polygon */
@@ -89,7 +88,7 @@ static int number(dxf *d, double *v)
 {
     size_t i = 0;
 
-    if (!qc__svg_scan_number(d->val, d->nval, &i, v) || i != d->nval || !(fabs(*v) <= 1e300))
+    if (!qc__scan_number(d->val, d->nval, &i, v) || i != d->nval || !(fabs(*v) <= 1e300))
         return bad(d, "expected a number");
     return QC_OK;
 }

@@ -2,11 +2,9 @@
  * Point files: CSV "x,y" lines (one header line, '#' comments and blank
  * lines allowed, LF or CRLF) or TSPLIB (keyword lines, then
  * NODE_COORD_SECTION with "id x y" lines, ids 1..DIMENSION in order, then
- * EOF). Numbers are read strictly (no hex, no locale): the digits become a
- * plain "<digits>e<exponent>" string for strtod, so the result is
- * correctly rounded whatever the locale's decimal point.
+ * EOF). Numbers are read strictly by qc__scan_number (no hex, no locale,
+ * correctly rounded whatever the locale's decimal point).
  */
-#include <stdlib.h>
 #include <string.h>
 
 #include "io_internal.h"
@@ -121,10 +119,6 @@ static int wrong_id(const reader *r, unsigned long want)
 
 enum { NUM_OK = 0, NUM_BAD = -1, NUM_NONFINITE = -2 };
 
-static const double pow10_exact[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-
 /* Whether a "nan"/"inf"/"infinity" token (any case, optional sign) starts at s. */
 static int nonfinite_token(const char *s, const char *e)
 {
@@ -134,95 +128,20 @@ static int nonfinite_token(const char *s, const char *e)
 }
 
 /*
- * [+-] digits [. digits] [(e|E) [+-] digits], or with the digits only after
- * the point. *ps moves past it. The value is correctly rounded: exactly in
- * one operation when it has at most 15 significant digits and a small
- * exponent, else by strtod on the normalised digits.
+ * A number at *ps (qc__scan_number: strict, correctly rounded, no locale),
+ * at most MAX_TOKEN characters; *ps moves past it. "1e" is refused here,
+ * where a point file has no use for a trailing 'e'.
  */
 static int number(const char **ps, const char *e, double *v)
 {
-    const char *s = *ps, *start = s;
-    char digits[MAX_TOKEN + 32];
-    size_t nd = 0, seen = 0;
-    long exp10 = 0, ex = 0;
-    uint64_t mant = 0;
-    int neg = 0;
+    size_t at = 0, n = (size_t)(e - *ps);
 
-    if (nonfinite_token(s, e))
+    if (nonfinite_token(*ps, e))
         return NUM_NONFINITE;
-    if (s < e && (*s == '+' || *s == '-'))
-        neg = *s++ == '-';
-    for (; s < e && is_digit(*s); s++, seen++)
-        if (nd > 0 || *s != '0') {
-            if (nd < MAX_TOKEN)
-                digits[nd++] = *s;
-            else
-                exp10++; /* beyond the token limit: refused below anyway */
-        }
-    if (s < e && *s == '.') {
-        for (s++; s < e && is_digit(*s); s++, seen++)
-            if (nd > 0 || *s != '0') {
-                if (nd < MAX_TOKEN) {
-                    digits[nd++] = *s;
-                    exp10--;
-                }
-            } else {
-                exp10--;
-            }
-    }
-    if (seen == 0)
+    if (!qc__scan_number(*ps, n, &at, v) || at > MAX_TOKEN ||
+        (at < n && ((*ps)[at] == 'e' || (*ps)[at] == 'E')))
         return NUM_BAD;
-    if (s < e && (*s == 'e' || *s == 'E')) {
-        const char *t = s + 1;
-        int eneg = 0;
-
-        if (t < e && (*t == '+' || *t == '-'))
-            eneg = *t++ == '-';
-        if (t >= e || !is_digit(*t))
-            return NUM_BAD;
-        for (; t < e && is_digit(*t); t++)
-            if (ex < 100000)
-                ex = ex * 10 + (*t - '0');
-        exp10 += eneg ? -ex : ex;
-        s = t;
-    }
-    if (s - start > MAX_TOKEN)
-        return NUM_BAD;
-    *ps = s;
-    if (nd == 0) {
-        *v = neg ? -0.0 : 0.0;
-        return NUM_OK;
-    }
-    if (nd <= 15 && exp10 >= -22 && exp10 <= 22) {
-        size_t i;
-        double m;
-
-        for (i = 0; i < nd; i++)
-            mant = mant * 10 + (uint64_t)(digits[i] - '0');
-        m = (double)mant;
-        *v = exp10 >= 0 ? m * pow10_exact[exp10] : m / pow10_exact[-exp10];
-    } else {
-        /* "<digits>e<exp10>" holds no decimal point: no locale can change it */
-        long x = exp10 < 0 ? -exp10 : exp10;
-        char tmp[16];
-        size_t w = nd, k = 0;
-
-        if (x > 999999)
-            x = 999999;
-        digits[w++] = 'e';
-        if (exp10 < 0)
-            digits[w++] = '-';
-        do {
-            tmp[k++] = (char)('0' + x % 10);
-            x /= 10;
-        } while (x > 0);
-        while (k > 0)
-            digits[w++] = tmp[--k];
-        digits[w] = '\0';
-        *v = strtod(digits, NULL);
-    }
-    if (neg)
-        *v = -*v;
+    *ps += at;
     return NUM_OK;
 }
 

@@ -102,11 +102,8 @@ typedef struct qc__svg_where {
     const char *attr; /* attribute name */
 } qc__svg_where;
 
-/* Scans an SVG number (sign, digits, '.', digits, exponent) at s[*pos]:
- * 1 and *pos past it, or 0 when none starts there (*pos unchanged).
- * Deterministic decimal conversion (no strtod, no locale); the value may
- * be huge or inf: see qc__svg_check_number. */
-QC__HIDDEN int qc__svg_scan_number(const char *s, size_t n, size_t *pos, double *v);
+/* SVG numbers are read by qc__scan_number (src/core/number.c); the value
+ * may be huge or inf: see qc__svg_check_number. */
 /* QC_OK, or QC_ERANGE when |v| > QC__SVG_MAX_NUMBER (or inf), naming w and
  * the characters at s[at..). */
 QC__HIDDEN int qc__svg_check_number(const qc__svg_where *w, double v, const char *s,

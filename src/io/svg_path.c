@@ -1,5 +1,5 @@
 /*
- * SVG numbers and path data: every command (M L H V C S Q T A Z, absolute
+ * SVG path data (numbers: qc__scan_number, src/core/number.c): every command (M L H V C S Q T A Z, absolute
  * and relative), implicit repeats, numbers run together ("1.5.5", "-1-2",
  * "1e-3"), arc flags without separators ("a1 1 0 00 1 1"). Quadratics and
  * arcs become cubics. Strict: the first error stops the parse and names
@@ -9,11 +9,6 @@
 #include <string.h>
 
 #include "svg_internal.h"
-
-/* 10^0 .. 10^22 are exact in a double. */
-static const double pow10_exact[23] = {
-    1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 int qc__svg_is_space(char c)
 {
@@ -40,76 +35,6 @@ int qc__svg_skip_sep(const char *s, size_t n, size_t *pos)
     }
     *pos = i;
     return comma;
-}
-
-int qc__svg_scan_number(const char *s, size_t n, size_t *pos, double *v)
-{
-    size_t i = *pos;
-    uint64_t m = 0;
-    int neg = 0, kept = 0, digits = 0;
-    long e10 = 0;
-    double r;
-
-    if (i < n && (s[i] == '+' || s[i] == '-'))
-        neg = s[i++] == '-';
-    for (; i < n && is_digit(s[i]); i++) {
-        digits++;
-        if (m == 0 && s[i] == '0')
-            continue;
-        if (kept < 19) {
-            m = m * 10 + (uint64_t)(s[i] - '0');
-            kept++;
-        } else {
-            e10++; /* digits beyond 19 only scale */
-        }
-    }
-    if (i < n && s[i] == '.' && (digits > 0 || (i + 1 < n && is_digit(s[i + 1])))) {
-        for (i++; i < n && is_digit(s[i]); i++) {
-            digits++;
-            if (m == 0 && s[i] == '0') {
-                e10--;
-            } else if (kept < 19) {
-                m = m * 10 + (uint64_t)(s[i] - '0');
-                kept++;
-                e10--;
-            }
-        }
-    }
-    if (digits == 0)
-        return 0;
-    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
-        size_t j = i + 1;
-        int eneg = 0;
-        long e = 0;
-
-        if (j < n && (s[j] == '+' || s[j] == '-'))
-            eneg = s[j++] == '-';
-        if (j < n && is_digit(s[j])) {
-            for (; j < n && is_digit(s[j]); j++)
-                if (e < 100000)
-                    e = e * 10 + (s[j] - '0');
-            e10 += eneg ? -e : e;
-            i = j;
-        }
-    }
-    r = (double)m;
-    if (m != 0) {
-        while (e10 > 22 && r <= 1e308) {
-            r *= 1e22;
-            e10 -= 22;
-        }
-        while (e10 < -22 && r > 0) {
-            r /= 1e22;
-            e10 += 22;
-        }
-        if (e10 >= 0 && e10 <= 22)
-            r *= pow10_exact[e10];
-        else if (e10 < 0 && e10 >= -22)
-            r /= pow10_exact[-e10];
-    }
-    *v = neg ? -r : r;
-    *pos = i;
-    return 1;
 }
 
 /* Up to 16 characters from s[at..n) for a message, or "end of data". */
@@ -298,7 +223,7 @@ static int number(pstate *p, double *v)
 {
     size_t at = p->i;
 
-    if (!qc__svg_scan_number(p->s, p->n, &p->i, v))
+    if (!qc__scan_number(p->s, p->n, &p->i, v))
         return qc__svg_syntax(p->w, p->s, p->n, at, "expected a number");
     return qc__svg_check_number(p->w, *v, p->s, p->n, at);
 }

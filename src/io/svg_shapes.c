@@ -153,7 +153,7 @@ static int transform(walker *k, const char *s, size_t n, qc__svg_mat *out)
             if (na > 0)
                 qc__svg_skip_sep(s, n, &j);
             at = j;
-            if (na == 6 || !qc__svg_scan_number(s, n, &j, &a[na]))
+            if (na == 6 || !qc__scan_number(s, n, &j, &a[na]))
                 return qc__svg_syntax(w, s, n, at, na == 6 ? "expected ')'" : "expected a number");
             QC__TRY(qc__svg_check_number(w, a[na], s, n, at));
             na++;
@@ -356,7 +356,7 @@ static int poly(walker *k, int closed)
     while (i < n) {
         size_t at = i;
 
-        if (!qc__svg_scan_number(s, n, &i, &xy[count % 2]))
+        if (!qc__scan_number(s, n, &i, &xy[count % 2]))
             return qc__svg_syntax(&k->w, s, n, at, "expected a number");
         QC__TRY(qc__svg_check_number(&k->w, xy[count % 2], s, n, at));
         if (count % 2 == 1) {

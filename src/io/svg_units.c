@@ -55,7 +55,7 @@ int qc__svg_length(const qc__svg_where *w, const char *s, size_t n, int axis, do
     while (i < n && qc__svg_is_space(s[i]))
         i++;
     at = i;
-    if (!qc__svg_scan_number(s, n, &i, &v))
+    if (!qc__scan_number(s, n, &i, &v))
         return qc__svg_syntax(w, s, n, at, "expected a length");
     QC__TRY(qc__svg_check_number(w, v, s, n, at));
     if (i < n && s[i] == '%') {
@@ -127,7 +127,7 @@ static int view_box(qc__svg_where *w, const qc__xml *x, double vb[4], int *given
         if (k > 0)
             qc__svg_skip_sep(s, n, &i);
         at = i;
-        if (!qc__svg_scan_number(s, n, &i, &vb[k]))
+        if (!qc__scan_number(s, n, &i, &vb[k]))
             return qc__svg_syntax(w, s, n, at, "expected 4 numbers");
         QC__TRY(qc__svg_check_number(w, vb[k], s, n, at));
     }

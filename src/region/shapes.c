@@ -3,7 +3,6 @@
  * "star:D", "heart:D", in the caller's unit.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "internal.h"
@@ -111,46 +110,15 @@ static const struct shape {
     {"hexagon", 1, hexagon}, {"star", 1, star},    {"heart", 1, heart},
 };
 
-/* Parses one size at *s (advancing it), checks its range in mm. */
-/* Length of the decimal number at s ([+-]digits[.digits][e[+-]digits]), 0 if none:
- * strtod alone would also take "0x5", "nan" and "inf". */
-static size_t number_span(const char *s)
-{
-    size_t i = 0, digits = 0;
-
-    if (s[i] == '+' || s[i] == '-')
-        i++;
-    for (; s[i] >= '0' && s[i] <= '9'; i++)
-        digits++;
-    if (s[i] == '.')
-        for (i++; s[i] >= '0' && s[i] <= '9'; i++)
-            digits++;
-    if (digits == 0)
-        return 0;
-    if (s[i] == 'e' || s[i] == 'E') {
-        size_t j = i + 1;
-        if (s[j] == '+' || s[j] == '-')
-            j++;
-        if (s[j] >= '0' && s[j] <= '9') {
-            while (s[j] >= '0' && s[j] <= '9')
-                j++;
-            i = j;
-        }
-    }
-    return i;
-}
-
+/* Parses one size at *s (advancing it; qc__scan_number: no hex, nan, inf or
+ * locale), checks its range in mm. */
 static int parse_size(qc_ctx *ctx, const char *spec, const char **s, double mm, double *out)
 {
-    char buf[64];
-    size_t n = number_span(*s);
+    size_t n = 0;
     double v;
 
-    if (n == 0 || n >= sizeof buf)
+    if (!qc__scan_number(*s, strlen(*s), &n, &v))
         return qc__fail(ctx, QC_EINVAL, "shape '%s': expected a number at '%s'", spec, *s);
-    memcpy(buf, *s, n);
-    buf[n] = '\0';
-    v = strtod(buf, NULL);
     *s += n;
     v *= mm;
     if (!(v > 0.0) || !(v <= MAX_SIZE_MM))

@@ -64,6 +64,7 @@ int qc_sample(qc_ctx *ctx, const qc_region *region, const qc_sample_params *para
               qc_points *out)
 {
     qc__rindex ix;
+    size_t n0 = out->n; /* on error out is as on entry (core.h) */
     int rc;
 
     if (region == NULL || region->nrings == 0)
@@ -76,5 +77,7 @@ int qc_sample(qc_ctx *ctx, const qc_region *region, const qc_sample_params *para
     else
         rc = qc__sample_lattice(ctx, &ix, params->kind, params->spacing, params->margin, out);
     qc__rindex_free(ctx, &ix);
+    if (rc < 0)
+        out->n = n0;
     return rc;
 }

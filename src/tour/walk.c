@@ -220,7 +220,7 @@ int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edge
                     size_t nedges, uint32_t root, uint32_t end, qc_order *out)
 {
     walk_ctx w;
-    size_t max_degree = 0;
+    size_t max_degree = 0, n0 = out->n; /* on error out is as on entry (core.h) */
     int rc;
 
     if (n == 0 || root >= n || end >= n)
@@ -240,5 +240,7 @@ int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edge
     }
     qc__free(ctx, w.start, (n + 1) * sizeof *w.start);
     qc__free(ctx, w.adj, (2 * nedges + 1) * sizeof *w.adj);
+    if (rc < 0)
+        out->n = n0;
     return rc;
 }
