@@ -52,6 +52,14 @@ QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 
+/* Union-find over 0..n-1 (union_find.c). qc__uf_init makes every element
+ * its own set; qc__uf_find returns the root (halving the path);
+ * qc__uf_union joins two sets under the smaller root: 1, or 0 if a and b
+ * were in one set already. */
+QC__HIDDEN void qc__uf_init(uint32_t *parent, size_t n);
+QC__HIDDEN uint32_t qc__uf_find(uint32_t *parent, uint32_t x);
+QC__HIDDEN int qc__uf_union(uint32_t *parent, uint32_t a, uint32_t b);
+
 /* A point from its coordinates (a C99 compound literal). */
 #define QC__V2(x, y) ((qc_vec2){(x), (y)})
 
