@@ -52,6 +52,15 @@ QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 
+/*
+ * Stable LSD radix sort (radix_sort.c) of key[0..n) by bits [shift, 64),
+ * carrying val[] along when val != NULL. Digits that are equal in every key
+ * are skipped.
+ * QC_OK or QC_ENOMEM (arrays untouched on failure).
+ */
+QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
+                              size_t n, unsigned shift);
+
 /* Union-find over 0..n-1 (union_find.c). qc__uf_init makes every element
  * its own set; qc__uf_find returns the root (halving the path);
  * qc__uf_union joins two sets under the smaller root: 1, or 0 if a and b

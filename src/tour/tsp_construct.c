@@ -81,7 +81,7 @@ static int greedy_pass(greedy *g, const uint32_t *id, size_t c, const qc_vec2 *p
                 continue;
             key[nkey++] = edge_key(pts, (uint32_t)a, b, a * k + j);
         }
-    rc = qc__tsp_radix(ctx, key, NULL, nkey, 32);
+    rc = qc__radix_sort(ctx, key, NULL, nkey, 32);
     for (i = 0; i < nkey && rc == QC_OK; i++) {
         size_t slot = (uint32_t)key[i];
         uint32_t x = (uint32_t)(slot / k), y = nb[(size_t)x * stride + slot % k];

@@ -1,10 +1,10 @@
 /* Stable LSD radix sort on 64-bit keys (11-bit digits): the graph stage
- * sorts up to ~3n edges and n Hilbert keys, where qsort is several times
- * slower (notes/performance.md). */
-#include <math.h>
+ * sorts up to ~3n edges and n Hilbert keys, the tour stage n Hilbert keys
+ * and its candidate edges, where qsort is several times slower
+ * (notes/performance.md). */
 #include <string.h>
 
-#include "graph_internal.h"
+#include "internal.h"
 
 #define DIGIT_BITS 11u
 #define DIGITS (1u << DIGIT_BITS)
@@ -65,35 +65,5 @@ int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n,
     qc__free(ctx, k2, n * sizeof *k2);
     qc__free(ctx, v2, val != NULL ? n * sizeof *v2 : 0);
     qc__free(ctx, count, DIGITS * sizeof *count);
-    return QC_OK;
-}
-
-/* The exact predicates multiply up to four coordinate differences: kept
- * between these magnitudes, no product underflows or overflows. */
-static int coordinate_ok(double v)
-{
-    double a = fabs(v);
-
-    return a == 0.0 || (a >= QC__COORD_MIN && a <= QC__COORD_MAX);
-}
-
-int qc__check_points(qc_ctx *ctx, const qc_vec2 *p, size_t n, const char *who)
-{
-    size_t i;
-
-    if (n >= ((size_t)1 << 31))
-        return qc__fail(ctx, QC_ELIMIT, "%s: %lu points, at most 2^31 - 1",
-                        who, (unsigned long)n);
-    for (i = 0; i < n; i++) {
-        if (!isfinite(p[i].x) || !isfinite(p[i].y))
-            return qc__fail(ctx, QC_ERANGE,
-                            "%s: point %lu is not finite (%g, %g)", who,
-                            (unsigned long)i, p[i].x, p[i].y);
-        if (!coordinate_ok(p[i].x) || !coordinate_ok(p[i].y))
-            return qc__fail(ctx, QC_ERANGE,
-                            "%s: point %lu (%g, %g): a coordinate must be 0 or between "
-                            "%g and %g mm in magnitude", who, (unsigned long)i, p[i].x,
-                            p[i].y, QC__COORD_MIN, QC__COORD_MAX);
-    }
     return QC_OK;
 }
