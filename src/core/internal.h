@@ -61,6 +61,10 @@ QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
                               size_t n, unsigned shift);
 
+/* Index of cell (x, y) of a 2^bits x 2^bits grid along the Hilbert curve,
+ * 1 <= bits <= 32 (hilbert_key.c). */
+QC__HIDDEN uint64_t qc__hilbert_key(uint32_t x, uint32_t y, unsigned bits);
+
 /* Union-find over 0..n-1 (union_find.c). qc__uf_init makes every element
  * its own set; qc__uf_find returns the root (halving the path);
  * qc__uf_union joins two sets under the smaller root: 1, or 0 if a and b

@@ -6,28 +6,6 @@
  */
 #include "tour_internal.h"
 
-/* Position of cell (x, y) of a 2^32 x 2^32 grid along the Hilbert curve. */
-static uint64_t hilbert64(uint32_t x, uint32_t y)
-{
-    uint64_t d = 0;
-    uint32_t s;
-
-    for (s = 1u << 31; s > 0; s >>= 1) {
-        uint32_t rx = (x & s) != 0, ry = (y & s) != 0;
-
-        d += (uint64_t)s * s * ((3u * rx) ^ ry);
-        if (ry == 0) {
-            uint32_t t;
-            if (rx) {
-                x = ~x; /* only the bits below s matter from here on */
-                y = ~y;
-            }
-            t = x, x = y, y = t;
-        }
-    }
-    return d;
-}
-
 static uint32_t cell(double v, double lo, double scale)
 {
     double f = (v - lo) * scale;
@@ -118,7 +96,7 @@ int qc__tsp_prepare(qc__tsp *s)
         goto out;
     }
     for (i = 0; i < n; i++) {
-        key[i] = hilbert64(cell(p[i].x, x0, sx), cell(p[i].y, y0, sy));
+        key[i] = qc__hilbert_key(cell(p[i].x, x0, sx), cell(p[i].y, y0, sy), 32);
         s->sorted[i] = (uint32_t)i;
     }
     rc = qc__radix_sort(s->ctx, key, s->sorted, n, 0);
