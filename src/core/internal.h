@@ -73,6 +73,13 @@ QC__HIDDEN void qc__uf_init(uint32_t *parent, size_t n);
 QC__HIDDEN uint32_t qc__uf_find(uint32_t *parent, uint32_t x);
 QC__HIDDEN int qc__uf_union(uint32_t *parent, uint32_t a, uint32_t b);
 
+/* White space in every text format the core reads, without the C locale's
+ * isspace: blank, tab, LF, CR, form feed. */
+static inline int qc__is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
+
 /* A point from its coordinates (a C99 compound literal). */
 #define QC__V2(x, y) ((qc_vec2){(x), (y)})
 

@@ -15,11 +15,6 @@ static const double pow10_exact[23] = {
     1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
     1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
-int qc__svg_is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
-}
-
 static int is_digit(char c)
 {
     return c >= '0' && c <= '9';
@@ -30,12 +25,12 @@ int qc__svg_skip_sep(const char *s, size_t n, size_t *pos)
     size_t i = *pos;
     int comma = 0;
 
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     if (i < n && s[i] == ',') {
         comma = 1;
         i++;
-        while (i < n && qc__svg_is_space(s[i]))
+        while (i < n && qc__is_space(s[i]))
             i++;
     }
     *pos = i;
@@ -459,7 +454,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
     p.s = d;
     p.n = n;
     p.out = out;
-    while (p.i < n && qc__svg_is_space(d[p.i]))
+    while (p.i < n && qc__is_space(d[p.i]))
         p.i++;
     if (p.i >= n)
         return QC_OK; /* empty data draws nothing */
@@ -469,7 +464,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
         double a[7];
         char up;
 
-        while (p.i < n && qc__svg_is_space(d[p.i]))
+        while (p.i < n && qc__is_space(d[p.i]))
             p.i++;
         if (p.i >= n)
             break;
@@ -478,7 +473,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
             return qc__svg_syntax(w, d, n, p.i, "expected a path command letter");
         p.i++;
         up = (char)(cmd >= 'a' ? cmd - 'a' + 'A' : cmd);
-        while (p.i < n && qc__svg_is_space(d[p.i]))
+        while (p.i < n && qc__is_space(d[p.i]))
             p.i++;
         if (up == 'Z') {
             QC__TRY(apply(&p, cmd, a));
