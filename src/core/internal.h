@@ -65,6 +65,22 @@ QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
  * 1 <= bits <= 32 (hilbert_key.c). */
 QC__HIDDEN uint64_t qc__hilbert_key(uint32_t x, uint32_t y, unsigned bits);
 
+/* ---- rasters (raster.c): the measures and the SDF offsetting ---- */
+
+/*
+ * Even-odd inside mask of region on the lattice (x0 + i h, y0 + j h),
+ * i < nx, j < ny: mask[j * nx + i] = 1 inside, 0 outside (a sample exactly
+ * on a crossing counts as inside on its right). Scanline with the edges
+ * bucketed by row: O(nx ny + perimeter / h + edges). QC_OK or QC_ENOMEM.
+ */
+QC__HIDDEN int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0,
+                                 double y0, double h, size_t nx, size_t ny,
+                                 unsigned char *mask);
+
+/* Felzenszwalb-Huttenlocher 1-D squared distance transform of f[0..n)
+ * (step 1) into d; v (n ints) and z (n + 1 doubles) are scratch. */
+QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z);
+
 /* Union-find over 0..n-1 (union_find.c). qc__uf_init makes every element
  * its own set; qc__uf_find returns the root (halving the path);
  * qc__uf_union joins two sets under the smaller root: 1, or 0 if a and b
