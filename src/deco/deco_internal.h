@@ -175,29 +175,6 @@ QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint3
 QC__HIDDEN uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne,
                                        qc_vec2 a);
 
-/* ---- segments in a uniform grid (seg_grid.c) ---- */
-
-/* Segment k runs from p[k] to p[next(ud, k)]. */
-typedef uint32_t (*qc__seg_next)(const void *ud, uint32_t k);
-
-typedef struct qc__seg_grid {
-    double x0, y0, cell; /* the lower-left cell's corner; square cells */
-    size_t gx, gy;
-    size_t *start;       /* gx gy + 1 offsets into seg, row by row */
-    uint32_t *seg;       /* segment numbers, cell by cell */
-    size_t nseg;         /* entries allocated (at least 1) */
-} qc__seg_grid;
-
-/* Bins the n segments of p into cells of about cell mm, grown by half
- * until there are at most cells_per_seg n + 64 of them. QC_OK or QC_ENOMEM
- * (*g then freed). */
-QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p, size_t n,
-                                  qc__seg_next next, const void *ud, double cell,
-                                  double cells_per_seg);
-/* The cells (x0, y0, x1, y1, inclusive) the box of ab meets, clamped. */
-QC__HIDDEN void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4]);
-QC__HIDDEN void qc__seg_grid_free(qc_ctx *ctx, qc__seg_grid *g);
-
 /* ---- distance grids and offset rings (sdf.c, sdf_rings.c, ring_repair.c) ---- */
 
 /* Distance to a region's boundary sampled on a grid: node (i, j) at
