@@ -79,6 +79,66 @@ static void cell_box(const pack *P, qc_vec2 x, double reach, uint32_t r[4])
     r[3] = clamp_cell((x.y + reach - P->y0) / P->h, P->ny);
 }
 
+/* A walk over the pebbles of a block of cells, row by row, each cell's list
+ * in order: the box x +- reach (walk_box), or the cells of one square ring
+ * round a cell (walk_ring); walk_next gives QC__PEB_NONE at the end. */
+typedef struct cell_walk {
+    const pack *P;
+    uint32_t r[4];     /* x0, y0, x1, y1 of the block, inclusive */
+    uint32_t cx, cy;   /* the next cell to enter */
+    uint32_t j;        /* the current pebble */
+    uint32_t c0x, c0y, ring;
+    int ringed;        /* only the cells on the ring's edge */
+} cell_walk;
+
+static void walk_box(cell_walk *w, const pack *P, qc_vec2 x, double reach)
+{
+    w->P = P;
+    cell_box(P, x, reach, w->r);
+    w->cx = w->r[0];
+    w->cy = w->r[1];
+    w->j = QC__PEB_NONE;
+    w->ringed = 0;
+}
+
+static void walk_ring(cell_walk *w, const pack *P, uint32_t c0x, uint32_t c0y, uint32_t ring)
+{
+    w->P = P;
+    w->r[0] = c0x >= ring ? c0x - ring : 0;
+    w->r[1] = c0y >= ring ? c0y - ring : 0;
+    w->r[2] = c0x + ring < P->nx ? c0x + ring : P->nx - 1;
+    w->r[3] = c0y + ring < P->ny ? c0y + ring : P->ny - 1;
+    w->cx = w->r[0];
+    w->cy = w->r[1];
+    w->j = QC__PEB_NONE;
+    w->c0x = c0x;
+    w->c0y = c0y;
+    w->ring = ring;
+    w->ringed = 1;
+}
+
+static uint32_t walk_next(cell_walk *w)
+{
+    const pack *P = w->P;
+    uint32_t j = w->j;
+
+    if (j != QC__PEB_NONE)
+        j = P->next[j];
+    while (j == QC__PEB_NONE && w->cy <= w->r[3]) {
+        uint32_t cx = w->cx, cy = w->cy, g = w->ring;
+        /* a ring's inside was walked already */
+        if (!w->ringed || cx + g == w->c0x || cx == w->c0x + g || cy + g == w->c0y ||
+            cy == w->c0y + g)
+            j = P->head[cy * P->nx + cx];
+        if (++w->cx > w->r[2]) {
+            w->cx = w->r[0];
+            w->cy++;
+        }
+    }
+    w->j = j;
+    return j;
+}
+
 static void grid_insert(pack *P, uint32_t i)
 {
     uint32_t c = cell_of(P, P->pb->c[i]);
@@ -137,23 +197,20 @@ static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t e
 {
     const qc__pebbles *pb = P->pb;
     double best = cap, db;
-    uint32_t r[4], cx, cy, a = QC__PEB_NONE;
+    uint32_t j, a = QC__PEB_NONE;
+    cell_walk w;
 
-    cell_box(P, x, cap + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
-                if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
-                    continue;
-                v = sqrt(dx * dx + dy * dy) - pb->r[j];
-                if (v < best) {
-                    best = v;
-                    a = j;
-                }
-            }
+    walk_box(&w, P, x, cap + P->rmax);
+    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
+        if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
+            continue;
+        v = sqrt(dx * dx + dy * dy) - pb->r[j];
+        if (v < best) {
+            best = v;
+            a = j;
         }
+    }
     if (best > 0) {
         db = qc__pbound_dist(P->b, x, pb->k * best) / pb->k;
         if (db < best) {
@@ -174,29 +231,26 @@ static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_
     const qc__pebbles *pb = P->pb;
     qc_vec2 xf = QC__V2(x0.x + u.x * cap, x0.y + u.y * cap);
     double best = cap;
-    uint32_t r[4], cx, cy;
+    uint32_t j;
+    cell_walk w;
 
     if (!(cap > 0))
         return 0;
-    cell_box(P, xf, r0 + cap + P->rmax, r); /* the circles nest in the last one */
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double ax, ay, bq, num, den;
-                if (j == ex0 || j == ex1)
-                    continue;
-                ax = x0.x - pb->c[j].x;
-                ay = x0.y - pb->c[j].y;
-                bq = pb->r[j] + r0;
-                num = ax * ax + ay * ay - bq * bq;
-                den = bq - (ax * u.x + ay * u.y);
-                if (num <= 0)
-                    return 0;
-                if (den > 0 && num / (2 * den) < best)
-                    best = num / (2 * den);
-            }
-        }
+    walk_box(&w, P, xf, r0 + cap + P->rmax); /* the circles nest in the last one */
+    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        double ax, ay, bq, num, den;
+        if (j == ex0 || j == ex1)
+            continue;
+        ax = x0.x - pb->c[j].x;
+        ay = x0.y - pb->c[j].y;
+        bq = pb->r[j] + r0;
+        num = ax * ax + ay * ay - bq * bq;
+        den = bq - (ax * u.x + ay * u.y);
+        if (num <= 0)
+            return 0;
+        if (den > 0 && num / (2 * den) < best)
+            best = num / (2 * den);
+    }
     return qc__pbound_ray(P->b, x0, r0, u, best, pb->k);
 }
 
@@ -214,21 +268,18 @@ static uint32_t nearest(pack *P, qc_vec2 x)
     uint32_t a = QC__PEB_NONE;
 
     for (;;) {
-        uint32_t r[4], cx, cy;
-        cell_box(P, x, reach, r);
-        for (cy = r[1]; cy <= r[3]; cy++)
-            for (cx = r[0]; cx <= r[2]; cx++) {
-                uint32_t j = P->head[cy * P->nx + cx];
-                for (; j != QC__PEB_NONE; j = P->next[j]) {
-                    double v = dist(x, pb->c[j]) - pb->r[j];
-                    if (v < best || (v == best && j < a)) {
-                        best = v;
-                        a = j;
-                    }
-                }
+        uint32_t j;
+        cell_walk w;
+        walk_box(&w, P, x, reach);
+        for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+            double v = dist(x, pb->c[j]) - pb->r[j];
+            if (v < best || (v == best && j < a)) {
+                best = v;
+                a = j;
             }
+        }
         if ((a != QC__PEB_NONE && best <= reach - P->rmax) ||
-            (r[0] == 0 && r[1] == 0 && r[2] == P->nx - 1 && r[3] == P->ny - 1))
+            (w.r[0] == 0 && w.r[1] == 0 && w.r[2] == P->nx - 1 && w.r[3] == P->ny - 1))
             return a;
         reach *= 2;
     }
@@ -248,28 +299,25 @@ static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
 {
     const qc__pebbles *pb = P->pb;
     double g[NEAR];
-    uint32_t r[4], cx, cy;
+    uint32_t j;
     size_t n = 0;
+    cell_walk w;
 
-    cell_box(P, x, reach + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double v = dist(x, pb->c[j]) - pb->r[j];
-                size_t k;
-                if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
-                    continue;
-                k = n < NEAR ? n++ : NEAR - 1;
-                while (k > 0 && (g[k - 1] > v || (g[k - 1] == v && out[k - 1] > j))) {
-                    g[k] = g[k - 1];
-                    out[k] = out[k - 1];
-                    k--;
-                }
-                g[k] = v;
-                out[k] = j;
-            }
+    walk_box(&w, P, x, reach + P->rmax);
+    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        double v = dist(x, pb->c[j]) - pb->r[j];
+        size_t k;
+        if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
+            continue;
+        k = n < NEAR ? n++ : NEAR - 1;
+        while (k > 0 && (g[k - 1] > v || (g[k - 1] == v && out[k - 1] > j))) {
+            g[k] = g[k - 1];
+            out[k] = out[k - 1];
+            k--;
         }
+        g[k] = v;
+        out[k] = j;
+    }
     return n;
 }
 
@@ -281,8 +329,9 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
 {
     const qc__pebbles *pb = P->pb;
     qc_vec2 u = unit_from(pb->c[b], x), p, q, mid;
-    double half;
-    uint32_t r[4], cx, cy;
+    double half, ex, ey, l2;
+    uint32_t j;
+    cell_walk w;
 
     p = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
     q = QC__V2(x.x - u.x * c, x.y - u.y * c);
@@ -290,22 +339,21 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
         return 0;
     mid = QC__V2(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
     half = 0.5 * dist(p, q);
-    cell_box(P, mid, half + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double ex = q.x - p.x, ey = q.y - p.y, l2 = ex * ex + ey * ey, t, dx, dy;
-                if (j == b)
-                    continue;
-                t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
-                t = t < 0 ? 0 : t > 1 ? 1 : t;
-                dx = p.x + t * ex - pb->c[j].x;
-                dy = p.y + t * ey - pb->c[j].y;
-                if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
-                    return 0;
-            }
-        }
+    ex = q.x - p.x;
+    ey = q.y - p.y;
+    l2 = ex * ex + ey * ey;
+    walk_box(&w, P, mid, half + P->rmax);
+    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        double t, dx, dy;
+        if (j == b)
+            continue;
+        t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        dx = p.x + t * ex - pb->c[j].x;
+        dy = p.y + t * ey - pb->c[j].y;
+        if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
+            return 0;
+    }
     return 1;
 }
 
@@ -473,22 +521,19 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
     const qc__pebbles *pb = P->pb;
     qc_vec2 x = pb->c[i];
     double ri = pb->r[i];
-    uint32_t r[4], cx, cy;
+    uint32_t j;
     unsigned count = 0;
+    cell_walk w;
 
-    cell_box(P, x, ri + P->rmax + pb->touch, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
-                if (j == i || dx * dx + dy * dy > far * far)
-                    continue;
-                if (count < 3)
-                    ids[count] = j;
-                count++;
-            }
-        }
+    walk_box(&w, P, x, ri + P->rmax + pb->touch);
+    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
+        if (j == i || dx * dx + dy * dy > far * far)
+            continue;
+        if (count < 3)
+            ids[count] = j;
+        count++;
+    }
     *bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
     return count;
 }
@@ -634,6 +679,48 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
     return lo;
 }
 
+/*
+ * The radius (at most R) at which the circle tangent to j and k on side s,
+ * grown from pebble i, first meets another pebble, in closed form: rings of
+ * cells outwards from i's, until none can hold a pebble the growing circle
+ * (moved at most MOVE_MAX d) reaches before R. -1 in a degenerate case,
+ * where a search by steps must decide.
+ */
+static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, double R)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 ci = pb->c[i], x;
+    double r0 = pb->r[i];
+    uint32_t ring, maxring = P->nx > P->ny ? P->nx : P->ny;
+    uint32_t c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
+    uint32_t c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
+
+    for (ring = 0; ring <= maxring; ring++) {
+        double reach = MOVE_MAX * P->d;
+        uint32_t q;
+        cell_walk w;
+
+        if (pair_centre(pb, j, k, R, s, &x))
+            reach = fmin(reach, dist(x, ci));
+        reach += R; /* no pebble farther than this from ci is met */
+        if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
+            break;
+        walk_ring(&w, P, c0x, c0y, ring);
+        for (q = walk_next(&w); q != QC__PEB_NONE; q = walk_next(&w)) {
+            double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
+            double far = reach + pb->r[q];
+            if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                continue;
+            rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+            if (rq < 0)
+                return -1;
+            if (rq < R)
+                R = rq;
+        }
+    }
+    return R;
+}
+
 /* Step 2: grows pebble i along the circles tangent to j and k. The first
  * pebble met comes in closed form; near the boundary (or in a degenerate
  * case) a search by steps decides. */
@@ -643,54 +730,19 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
     qc_vec2 ci = pb->c[i], cj = pb->c[j], ck = pb->c[k], x;
     double s = (ck.x - cj.x) * (ci.y - cj.y) - (ck.y - cj.y) * (ci.x - cj.x);
     double r0 = pb->r[i], R = pb->r_grow;
-    uint32_t ring, c0x, c0y, cx, cy, maxring;
-    int general = 0;
+    int done = 0;
 
     if (!(R > r0))
         return 0;
     s = s < 0 ? -1 : 1;
-    c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
-    c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
-    maxring = P->nx > P->ny ? P->nx : P->ny;
-    /* rings of cells outwards, until none can hold a pebble the growing
-     * circle (moved at most MOVE_MAX d) reaches before R */
-    for (ring = 0; ring <= maxring && !general; ring++) {
-        double reach = MOVE_MAX * P->d;
-        if (pair_centre(pb, j, k, R, s, &x))
-            reach = fmin(reach, dist(x, ci));
-        reach += R; /* no pebble farther than this from ci is met */
-        if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
-            break;
-        for (cy = c0y >= ring ? c0y - ring : 0; cy <= c0y + ring && cy < P->ny && !general; cy++)
-            for (cx = c0x >= ring ? c0x - ring : 0; cx <= c0x + ring && cx < P->nx; cx++) {
-                uint32_t q;
-                if (cx + ring != c0x && cx != c0x + ring && cy + ring != c0y && cy != c0y + ring)
-                    continue; /* inside the ring: done already */
-                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
-                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
-                    double far = reach + pb->r[q];
-                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
-                        continue;
-                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
-                    if (rq < 0) {
-                        general = 1;
-                        break;
-                    }
-                    if (rq < R)
-                        R = rq;
-                }
-                if (general)
-                    break;
-            }
-    }
-    if (!general) {
+    R = first_contact(P, i, j, k, s, R);
+    if (R >= 0) {
         R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
-        if (pair_centre(pb, j, k, R, s, &x) &&
-            clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12))
-            general = -1; /* done */
+        done = pair_centre(pb, j, k, R, s, &x) &&
+               clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12);
     }
-    if (general != -1)
+    if (!done)
         R = pair_search(P, i, j, k, s, &x);
     if (!(R > r0 * (1 + 1e-9)) || !same_side(P, ci, x))
         return 0;
