@@ -357,6 +357,115 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
     return 1;
 }
 
+/* The pebble of size s hanging from pebble b towards x, tangent to it. */
+static uint32_t hang(pack *P, uint32_t b, qc_vec2 x, double s, uint32_t m)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[b], x);
+    qc_vec2 x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+
+    return place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, b, m, 0);
+}
+
+/* The root, c the room at x: held in by the boundary, the small size of the
+ * r_seed pair, so its children still alternate r_seed d and (1 - r_seed) d. */
+static void visit_root(pack *P, qc_vec2 x, uint32_t m, double c, uint32_t *anchor)
+{
+    qc__pebbles *pb = P->pb;
+
+    if (c < pb->r_first)
+        c = fmin(c, fmax(pb->r_min, P->d - pb->r_first));
+    if (c >= pb->r_min)
+        *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
+    else
+        pb->dropped++;
+}
+
+/* The circle (x, c) from its parent a across a gap: a filler tangent to
+ * both (step 3), else slid towards the parent. 1 when placed. */
+static int across_gap(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c, double gap,
+                      uint32_t *anchor)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[a], x);
+    qc_vec2 x0 = QC__V2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
+    double s;
+
+    if ((pb->k < 1 && !same_side(P, pb->c[a], x0)) || (x0.x == pb->c[a].x && x0.y == pb->c[a].y))
+        return 0; /* overgrown parent: no room on this side */
+    if (gap / 2 >= pb->r_min &&
+        ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
+        uint32_t f = place(P, QC__V2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
+                           QC__PEB_NONE, QC__PEB_FILLER);
+        *anchor = place(P, x, c, f, m, 0);
+        return 1;
+    }
+    s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
+    if (s < pb->r_min)
+        return 0;
+    *anchor = place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
+    return 1;
+}
+
+/* Hanging from the roomiest of the pebbles near x (but a). 1 when placed. */
+static int from_roomiest(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c,
+                         uint32_t *anchor)
+{
+    const qc__pebbles *pb = P->pb;
+    uint32_t near[NEAR], best = QC__PEB_NONE;
+    double bs = 0;
+    size_t k, nn = nearest_few(P, x, c + 2 * pb->r_first, near);
+
+    for (k = 0; k < nn; k++) {
+        uint32_t b = near[k];
+        qc_vec2 u, x0;
+        double s;
+        if (b == a)
+            continue;
+        u = unit_from(pb->c[b], x);
+        x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+        if (pb->k < 1 && !same_side(P, pb->c[b], x0))
+            continue;
+        s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
+        if (s > bs) {
+            bs = s;
+            best = b;
+        }
+    }
+    if (bs < pb->r_min)
+        return 0;
+    *anchor = hang(P, best, x, bs, m);
+    return 1;
+}
+
+/* No tangent way in: a straight stitch (sewn there and back) from the
+ * nearest pebble it reaches crossing nothing. Returns 1 when hemmed in
+ * (tried later, or on the last try left rather than crossed). */
+static int bridge_in(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c, uint32_t *anchor,
+                     int last)
+{
+    qc__pebbles *pb = P->pb;
+    uint32_t near[NEAR], best;
+    size_t k, nn = nearest_few(P, x, c + 4 * pb->r_first, near);
+
+    best = bridge_clear(P, x, c, a) ? a : QC__PEB_NONE;
+    for (k = 0; k < nn; k++) {
+        uint32_t b = near[k];
+        if (b != a && (best == QC__PEB_NONE || dist(x, pb->c[b]) - pb->r[b] <
+                                               dist(x, pb->c[best]) - pb->r[best]) &&
+            bridge_clear(P, x, c, b))
+            best = b;
+    }
+    if (best == QC__PEB_NONE && nn > 0) {
+        *anchor = near[0];
+        pb->dropped += (size_t)last;
+        return !last;
+    }
+    /* else cut off from every pebble (another part of the region) */
+    *anchor = place(P, x, c, best != QC__PEB_NONE ? best : a, m, QC__PEB_BRIDGE);
+    return 0;
+}
+
 /* Skeleton point m (its parent's pebble a, or none): *anchor receives the
  * pebble its children hang from. Returns 1 when m is hemmed in by pebbles
  * and boundary with room for a pebble but no way in yet (tried again once
@@ -365,8 +474,8 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
                  int last)
 {
     qc__pebbles *pb = P->pb;
-    qc_vec2 x = pts[m], u, x0;
-    double c, len, gap, s;
+    qc_vec2 x = pts[m];
+    double c, len, gap;
     uint32_t q;
 
     *anchor = a;
@@ -376,15 +485,8 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         return 0;
     }
     c = clearance(P, x, pb->r_first, QC__PEB_NONE, QC__PEB_NONE, QC__PEB_NONE, &q);
-    if (pb->n == 0) { /* the root */
-        /* held in by the boundary: the small size of the r_seed pair, so
-         * its children still alternate r_seed d and (1 - r_seed) d */
-        if (c < pb->r_first)
-            c = fmin(c, fmax(pb->r_min, P->d - pb->r_first));
-        if (c >= pb->r_min)
-            *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
-        else
-            pb->dropped++;
+    if (pb->n == 0) {
+        visit_root(P, x, m, c, anchor);
         return 0;
     }
     if (a == QC__PEB_NONE)
@@ -402,75 +504,9 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         *anchor = place(P, x, c, a, m, 0);
         return 0;
     }
-    u = unit_from(pb->c[a], x);
-    x0 = QC__V2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
-    if (pb->k < 1 && !same_side(P, pb->c[a], x0))
-        x0 = pb->c[a]; /* overgrown parent: no room on this side */
-    if (x0.x != pb->c[a].x || x0.y != pb->c[a].y) {
-        /* step 3: a filler tangent to both */
-        if (gap / 2 >= pb->r_min &&
-            ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
-            uint32_t f = place(P, QC__V2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
-                               QC__PEB_NONE, QC__PEB_FILLER);
-            *anchor = place(P, x, c, f, m, 0);
-            return 0;
-        }
-        /* else slide towards the parent */
-        s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
-        if (s >= pb->r_min) {
-            *anchor = place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
-            return 0;
-        }
-    }
-    /* or from one of the nearest other pebbles, the roomiest */
-    {
-        uint32_t near[NEAR], best = QC__PEB_NONE;
-        double bs = 0;
-        size_t k, nn = nearest_few(P, x, c + 2 * pb->r_first, near);
-        for (k = 0; k < nn; k++) {
-            uint32_t b = near[k];
-            if (b == a)
-                continue;
-            u = unit_from(pb->c[b], x);
-            x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
-            if (pb->k < 1 && !same_side(P, pb->c[b], x0))
-                continue;
-            s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
-            if (s > bs) {
-                bs = s;
-                best = b;
-            }
-        }
-        if (bs >= pb->r_min) {
-            u = unit_from(pb->c[best], x);
-            x0 = QC__V2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
-            *anchor = place(P, QC__V2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
-            return 0;
-        }
-        /* no tangent way in: a straight stitch (sewn there and back) from
-         * the nearest pebble it reaches crossing nothing */
-        nn = nearest_few(P, x, c + 4 * pb->r_first, near);
-        best = bridge_clear(P, x, c, a) ? a : QC__PEB_NONE;
-        for (k = 0; k < nn; k++) {
-            uint32_t b = near[k];
-            if (b != a && (best == QC__PEB_NONE || dist(x, pb->c[b]) - pb->r[b] <
-                                                   dist(x, pb->c[best]) - pb->r[best]) &&
-                bridge_clear(P, x, c, b))
-                best = b;
-        }
-        if (best != QC__PEB_NONE) {
-            *anchor = place(P, x, c, best, m, QC__PEB_BRIDGE);
-            return 0;
-        }
-        if (nn > 0) { /* hemmed in: later, or left rather than crossed */
-            *anchor = near[0];
-            pb->dropped += (size_t)last;
-            return !last;
-        }
-    }
-    /* cut off from every pebble (another part of the region): a straight stitch */
-    *anchor = place(P, x, c, a, m, QC__PEB_BRIDGE);
-    return 0;
+    if (across_gap(P, x, m, a, c, gap, anchor) || from_roomiest(P, x, m, a, c, anchor))
+        return 0;
+    return bridge_in(P, x, m, a, c, anchor, last);
 }
 
 static int phase1(pack *P, const qc_skeleton *skel)
