@@ -49,6 +49,9 @@ QC__HIDDEN qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n);
  * max_cells cells (bucket grids: about a constant number of items each). */
 QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 
+/* The ring of region r that vertex v belongs to (binary search of ring_end). */
+QC__HIDDEN size_t qc__region_ring_of(const qc_region *r, size_t v);
+
 /* Whether the qc_params field at offset was set explicitly (qc_params_set). */
 QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
 
