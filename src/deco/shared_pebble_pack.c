@@ -79,64 +79,26 @@ static void cell_box(const pack *P, qc_vec2 x, double reach, uint32_t r[4])
     r[3] = clamp_cell((x.y + reach - P->y0) / P->h, P->ny);
 }
 
-/* A walk over the pebbles of a block of cells, row by row, each cell's list
- * in order: the box x +- reach (walk_box), or the cells of one square ring
- * round a cell (walk_ring); walk_next gives QC__PEB_NONE at the end. */
-typedef struct cell_walk {
-    const pack *P;
-    uint32_t r[4];     /* x0, y0, x1, y1 of the block, inclusive */
-    uint32_t cx, cy;   /* the next cell to enter */
-    uint32_t j;        /* the current pebble */
-    uint32_t c0x, c0y, ring;
-    int ringed;        /* only the cells on the ring's edge */
-} cell_walk;
+/*
+ * The walk over the grid: every pebble j in the cells (cx, cy) of the block
+ * r[4] = x0, y0, x1, y1 (inclusive; cell_box), row by row, each cell's list
+ * in order, skipping the cells where keep is false (list_for_each in the
+ * Linux kernel's manner: the loop costs what three written loops cost).
+ */
+#define FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, keep)                                           \
+    for ((cy) = (r)[1]; (cy) <= (r)[3]; (cy)++)                                              \
+        for ((cx) = (r)[0]; (cx) <= (r)[2]; (cx)++)                                          \
+            for ((j) = (keep) ? (P)->head[(cy) * (P)->nx + (cx)] : QC__PEB_NONE;             \
+                 (j) != QC__PEB_NONE; (j) = (P)->next[j])
+#define FOR_EACH_PEBBLE(P, r, cx, cy, j) FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, 1)
 
-static void walk_box(cell_walk *w, const pack *P, qc_vec2 x, double reach)
+/* The block of cells within ring cells of (c0x, c0y), clamped to the grid. */
+static void ring_box(const pack *P, uint32_t c0x, uint32_t c0y, uint32_t ring, uint32_t r[4])
 {
-    w->P = P;
-    cell_box(P, x, reach, w->r);
-    w->cx = w->r[0];
-    w->cy = w->r[1];
-    w->j = QC__PEB_NONE;
-    w->ringed = 0;
-}
-
-static void walk_ring(cell_walk *w, const pack *P, uint32_t c0x, uint32_t c0y, uint32_t ring)
-{
-    w->P = P;
-    w->r[0] = c0x >= ring ? c0x - ring : 0;
-    w->r[1] = c0y >= ring ? c0y - ring : 0;
-    w->r[2] = c0x + ring < P->nx ? c0x + ring : P->nx - 1;
-    w->r[3] = c0y + ring < P->ny ? c0y + ring : P->ny - 1;
-    w->cx = w->r[0];
-    w->cy = w->r[1];
-    w->j = QC__PEB_NONE;
-    w->c0x = c0x;
-    w->c0y = c0y;
-    w->ring = ring;
-    w->ringed = 1;
-}
-
-static uint32_t walk_next(cell_walk *w)
-{
-    const pack *P = w->P;
-    uint32_t j = w->j;
-
-    if (j != QC__PEB_NONE)
-        j = P->next[j];
-    while (j == QC__PEB_NONE && w->cy <= w->r[3]) {
-        uint32_t cx = w->cx, cy = w->cy, g = w->ring;
-        /* a ring's inside was walked already */
-        if (!w->ringed || cx + g == w->c0x || cx == w->c0x + g || cy + g == w->c0y ||
-            cy == w->c0y + g)
-            j = P->head[cy * P->nx + cx];
-        if (++w->cx > w->r[2]) {
-            w->cx = w->r[0];
-            w->cy++;
-        }
-    }
-    w->j = j;
-    return j;
+    r[0] = c0x >= ring ? c0x - ring : 0;
+    r[1] = c0y >= ring ? c0y - ring : 0;
+    r[2] = c0x + ring < P->nx ? c0x + ring : P->nx - 1;
+    r[3] = c0y + ring < P->ny ? c0y + ring : P->ny - 1;
 }
 
 static void grid_insert(pack *P, uint32_t i)
@@ -198,10 +160,10 @@ static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t e
     const qc__pebbles *pb = P->pb;
     double best = cap, db;
     uint32_t j, a = QC__PEB_NONE;
-    cell_walk w;
+    uint32_t r[4], cx, cy;
 
-    walk_box(&w, P, x, cap + P->rmax);
-    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+    cell_box(P, x, cap + P->rmax, r);
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
         if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
             continue;
@@ -232,12 +194,12 @@ static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_
     qc_vec2 xf = QC__V2(x0.x + u.x * cap, x0.y + u.y * cap);
     double best = cap;
     uint32_t j;
-    cell_walk w;
+    uint32_t r[4], cx, cy;
 
     if (!(cap > 0))
         return 0;
-    walk_box(&w, P, xf, r0 + cap + P->rmax); /* the circles nest in the last one */
-    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+    cell_box(P, xf, r0 + cap + P->rmax, r); /* the circles nest in the last one */
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double ax, ay, bq, num, den;
         if (j == ex0 || j == ex1)
             continue;
@@ -269,9 +231,9 @@ static uint32_t nearest(pack *P, qc_vec2 x)
 
     for (;;) {
         uint32_t j;
-        cell_walk w;
-        walk_box(&w, P, x, reach);
-        for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+        uint32_t r[4], cx, cy;
+        cell_box(P, x, reach, r);
+        FOR_EACH_PEBBLE(P, r, cx, cy, j) {
             double v = dist(x, pb->c[j]) - pb->r[j];
             if (v < best || (v == best && j < a)) {
                 best = v;
@@ -279,7 +241,7 @@ static uint32_t nearest(pack *P, qc_vec2 x)
             }
         }
         if ((a != QC__PEB_NONE && best <= reach - P->rmax) ||
-            (w.r[0] == 0 && w.r[1] == 0 && w.r[2] == P->nx - 1 && w.r[3] == P->ny - 1))
+            (r[0] == 0 && r[1] == 0 && r[2] == P->nx - 1 && r[3] == P->ny - 1))
             return a;
         reach *= 2;
     }
@@ -301,10 +263,10 @@ static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
     double g[NEAR];
     uint32_t j;
     size_t n = 0;
-    cell_walk w;
+    uint32_t r[4], cx, cy;
 
-    walk_box(&w, P, x, reach + P->rmax);
-    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+    cell_box(P, x, reach + P->rmax, r);
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double v = dist(x, pb->c[j]) - pb->r[j];
         size_t k;
         if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
@@ -331,7 +293,7 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
     qc_vec2 u = unit_from(pb->c[b], x), p, q, mid;
     double half, ex, ey, l2;
     uint32_t j;
-    cell_walk w;
+    uint32_t r[4], cx, cy;
 
     p = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
     q = QC__V2(x.x - u.x * c, x.y - u.y * c);
@@ -342,8 +304,8 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
     ex = q.x - p.x;
     ey = q.y - p.y;
     l2 = ex * ex + ey * ey;
-    walk_box(&w, P, mid, half + P->rmax);
-    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+    cell_box(P, mid, half + P->rmax, r);
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double t, dx, dy;
         if (j == b)
             continue;
@@ -559,10 +521,10 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
     double ri = pb->r[i];
     uint32_t j;
     unsigned count = 0;
-    cell_walk w;
+    uint32_t r[4], cx, cy;
 
-    walk_box(&w, P, x, ri + P->rmax + pb->touch);
-    for (j = walk_next(&w); j != QC__PEB_NONE; j = walk_next(&w)) {
+    cell_box(P, x, ri + P->rmax + pb->touch, r);
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
         if (j == i || dx * dx + dy * dy > far * far)
             continue;
@@ -734,15 +696,17 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
     for (ring = 0; ring <= maxring; ring++) {
         double reach = MOVE_MAX * P->d;
         uint32_t q;
-        cell_walk w;
+        uint32_t r[4], cx, cy;
 
         if (pair_centre(pb, j, k, R, s, &x))
             reach = fmin(reach, dist(x, ci));
         reach += R; /* no pebble farther than this from ci is met */
         if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
             break;
-        walk_ring(&w, P, c0x, c0y, ring);
-        for (q = walk_next(&w); q != QC__PEB_NONE; q = walk_next(&w)) {
+        ring_box(P, c0x, c0y, ring, r);
+        /* the cells on the ring's edge: its inside was walked already */
+        FOR_EACH_PEBBLE_IF(P, r, cx, cy, q, cx + ring == c0x || cx == c0x + ring ||
+                                               cy + ring == c0y || cy == c0y + ring) {
             double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
             double far = reach + pb->r[q];
             if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
