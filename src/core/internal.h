@@ -52,8 +52,12 @@ QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 /* The ring of region r that vertex v belongs to (binary search of ring_end). */
 QC__HIDDEN size_t qc__region_ring_of(const qc_region *r, size_t v);
 
-/* Whether the qc_params field at offset was set explicitly (qc_params_set). */
-QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
+/* The families' descriptors, one per src/deco/family_NAME.c (QC_FAMILY_MAP). */
+#define QC__FAMILY_DECL(id, name) QC__HIDDEN extern const qc_family_desc qc__family_##name;
+QC_FAMILY_MAP(QC__FAMILY_DECL)
+#undef QC__FAMILY_DECL
+/* The descriptor of family id (a qc_family), or NULL. */
+QC__HIDDEN const qc_family_desc *qc__family(int id);
 
 /*
  * Stable LSD radix sort (radix_sort.c) of key[0..n) by bits [shift, 64),
