@@ -57,21 +57,40 @@ static void LIBUSB_CALL on_transfer_done(struct libusb_transfer *tr)
     *(int *)tr->user_data = 1;
 }
 
-/* One bulk OUT transfer of n bytes; waits for it, cancelling on a signal.
- * Returns a libusb_transfer_status (or -1 if it could not be submitted, with
- * *err the libusb error) and the bytes the device took in *actual. */
-static int bulk_out(libusb_context *ctx, libusb_device_handle *h, struct libusb_transfer *tr,
-                    const usb_target *t, unsigned char *buf, int n, unsigned timeout_ms,
-                    int *actual, int *err)
+/* One send: the device, what goes to it and how far it got. */
+typedef struct session {
+    libusb_context *ctx;
+    libusb_device_handle *h;
+    const usb_target *t;
+    const usb_opts *opts;
+    int proto;
+    const char *who, *ids;
+    unsigned char *data;
+    size_t len, sent;
+    unsigned fails; /* tries in a row that delivered nothing */
+} session;
+
+/* How a chunk went: a libusb_transfer_status, -1 if it could not be
+ * submitted or -2 if the event loop broke (err the libusb error), and the
+ * bytes the device took. */
+typedef struct chunk {
+    int st, err, actual;
+} chunk;
+
+/* One bulk OUT transfer of n bytes from s->data + s->sent; waits for it,
+ * cancelling on a signal. */
+static chunk bulk_out(session *s, struct libusb_transfer *tr, int n)
 {
+    chunk c = {0, 0, 0};
     int done = 0, cancelled = 0, r, failures = 0;
 
-    *actual = 0;
-    libusb_fill_bulk_transfer(tr, h, t->ep_out, buf, n, on_transfer_done, &done, timeout_ms);
+    libusb_fill_bulk_transfer(tr, s->h, s->t->ep_out, s->data + s->sent, n, on_transfer_done,
+                              &done, s->opts->timeout_ms);
     r = libusb_submit_transfer(tr);
     if (r != 0) {
-        *err = r;
-        return -1;
+        c.st = -1;
+        c.err = r;
+        return c;
     }
     while (!done) {
         struct timeval tv;
@@ -82,15 +101,17 @@ static int bulk_out(libusb_context *ctx, libusb_device_handle *h, struct libusb_
         }
         tv.tv_sec = 0;
         tv.tv_usec = 100000;
-        r = libusb_handle_events_timeout_completed(ctx, &tv, &done);
+        r = libusb_handle_events_timeout_completed(s->ctx, &tv, &done);
         if (r != 0 && r != LIBUSB_ERROR_INTERRUPTED && ++failures > 50) {
             /* the event loop is broken: leave the transfer (never free it in flight) */
-            *err = r;
-            return -2;
+            c.st = -2;
+            c.err = r;
+            return c;
         }
     }
-    *actual = tr->actual_length;
-    return (int)tr->status;
+    c.st = (int)tr->status;
+    c.actual = tr->actual_length;
+    return c;
 }
 
 static const char *proto_name(int proto)
@@ -98,119 +119,113 @@ static const char *proto_name(int proto)
     return proto == USB_PROTO_PRINTER ? "printer" : "raw";
 }
 
+/* A stall: cleared, and a printer asked why. CLI_OK to try again, else
+ * CLI_RUNTIME (said). */
+static int on_stall(session *s)
+{
+    char faults[64];
+
+    libusb_clear_halt(s->h, s->t->ep_out);
+    if (s->proto == USB_PROTO_PRINTER &&
+        usb_port_faults(usb_printer_port_status(s->h, s->t, s->opts->timeout_ms), faults,
+                        sizeof faults)[0] != '\0') {
+        cli_error("%s stalled: printer reports %s; %lu of %lu bytes delivered", s->who, faults,
+                  (unsigned long)s->sent, (unsigned long)s->len);
+        return CLI_RUNTIME;
+    }
+    if (++s->fails > s->opts->retries) {
+        cli_error("endpoint 0x%02x of %s stalled on %u tries; %lu of %lu bytes delivered",
+                  (unsigned)s->t->ep_out, s->who, s->fails, (unsigned long)s->sent,
+                  (unsigned long)s->len);
+        return CLI_RUNTIME;
+    }
+    return CLI_OK;
+}
+
+/* A chunk that did not all go through: CLI_OK to try again, else
+ * CLI_RUNTIME (said). */
+static int on_short_chunk(session *s, chunk c)
+{
+    unsigned long sent = (unsigned long)s->sent, len = (unsigned long)s->len;
+
+    if (c.st == LIBUSB_TRANSFER_NO_DEVICE || (c.st == -1 && c.err == LIBUSB_ERROR_NO_DEVICE)) {
+        cli_error("USB device %s was unplugged; %lu of %lu bytes delivered", s->who, sent, len);
+        return CLI_RUNTIME;
+    }
+    if (c.st == LIBUSB_TRANSFER_CANCELLED) {
+        cli_error("interrupted; %lu of %lu bytes delivered to %s", sent, len, s->who);
+        return CLI_RUNTIME;
+    }
+    if (c.st == -1) {
+        cli_error("cannot send to %s: %s; %lu of %lu bytes delivered", s->who,
+                  libusb_strerror((enum libusb_error)c.err), sent, len);
+        return CLI_RUNTIME;
+    }
+    if (c.actual > 0)
+        s->fails = 0; /* partial progress: the device is alive */
+    if (c.st == LIBUSB_TRANSFER_STALL)
+        return on_stall(s);
+    if (c.st == LIBUSB_TRANSFER_TIMED_OUT) {
+        if (++s->fails <= s->opts->retries)
+            return CLI_OK;
+        cli_error("sending to %s timed out after %u tries of %u ms; %lu of %lu bytes "
+                  "delivered",
+                  s->who, s->fails, s->opts->timeout_ms, sent, len);
+        return CLI_RUNTIME;
+    }
+    if (c.st == LIBUSB_TRANSFER_COMPLETED) {
+        if (++s->fails <= s->opts->retries)
+            return CLI_OK;
+        cli_error("%s took no data on %u tries; %lu of %lu bytes delivered", s->who, s->fails,
+                  sent, len);
+        return CLI_RUNTIME;
+    }
+    cli_error("USB transfer to %s failed (%s); %lu of %lu bytes delivered", s->who,
+              c.st == LIBUSB_TRANSFER_OVERFLOW ? "overflow" : "I/O error", sent, len);
+    return CLI_RUNTIME;
+}
+
 /* The send loop proper, with the device claimed. */
-static int send_chunks(libusb_context *ctx, libusb_device_handle *h, const usb_target *t,
-                       const usb_opts *opts, int proto, const char *who, unsigned char *data,
-                       size_t len, size_t *sent_out)
+static int send_chunks(session *s)
 {
     struct libusb_transfer *tr = libusb_alloc_transfer(0);
     progress pg;
-    size_t sent = 0;
-    unsigned fails = 0;
     int rc = CLI_OK;
 
     if (tr == NULL) {
         cli_error("out of memory");
         return CLI_RUNTIME;
     }
-    pg.on = !opts->quiet && isatty(STDERR_FILENO);
-    pg.total = len;
+    pg.on = !s->opts->quiet && isatty(STDERR_FILENO);
+    pg.total = s->len;
     pg.t0 = pg.last = cli_now_ms();
     progress_draw(&pg, 0, 0);
-    while (sent < len) {
-        size_t left = len - sent;
-        int n = (int)(left < opts->chunk ? left : opts->chunk), actual, err = 0, st;
-        char faults[64];
+    while (rc == CLI_OK && s->sent < s->len) {
+        size_t left = s->len - s->sent;
+        int n = (int)(left < s->opts->chunk ? left : s->opts->chunk);
+        chunk c = {LIBUSB_TRANSFER_CANCELLED, 0, 0};
 
-        if (usb_stop) {
-            st = LIBUSB_TRANSFER_CANCELLED;
-            actual = 0;
-        } else {
-            st = bulk_out(ctx, h, tr, t, data + sent, n, opts->timeout_ms, &actual, &err);
-        }
-        sent += (size_t)(actual > 0 ? actual : 0);
-        progress_draw(&pg, sent, 0);
-        if (st == LIBUSB_TRANSFER_COMPLETED && actual > 0) {
-            fails = 0;
+        if (!usb_stop)
+            c = bulk_out(s, tr, n);
+        s->sent += (size_t)(c.actual > 0 ? c.actual : 0);
+        progress_draw(&pg, s->sent, 0);
+        if (c.st == LIBUSB_TRANSFER_COMPLETED && c.actual > 0) {
+            s->fails = 0;
             continue;
         }
         if (pg.on)
-            progress_draw(&pg, sent, 1);
-        if (st == -2) {
+            progress_draw(&pg, s->sent, 1);
+        if (c.st == -2) {
             cli_error("USB event handling failed (%s); %lu of %lu bytes delivered to %s",
-                      libusb_strerror((enum libusb_error)err), (unsigned long)sent,
-                      (unsigned long)len, who);
-            *sent_out = sent;
+                      libusb_strerror((enum libusb_error)c.err), (unsigned long)s->sent,
+                      (unsigned long)s->len, s->who);
             return CLI_RUNTIME; /* tr may still be in flight: not freed */
         }
-        if (st == LIBUSB_TRANSFER_NO_DEVICE || (st == -1 && err == LIBUSB_ERROR_NO_DEVICE)) {
-            cli_error("USB device %s was unplugged; %lu of %lu bytes delivered", who,
-                      (unsigned long)sent, (unsigned long)len);
-            rc = CLI_RUNTIME;
-            break;
-        }
-        if (st == LIBUSB_TRANSFER_CANCELLED) {
-            cli_error("interrupted; %lu of %lu bytes delivered to %s", (unsigned long)sent,
-                      (unsigned long)len, who);
-            rc = CLI_RUNTIME;
-            break;
-        }
-        if (st == -1) {
-            cli_error("cannot send to %s: %s; %lu of %lu bytes delivered", who,
-                      libusb_strerror((enum libusb_error)err), (unsigned long)sent,
-                      (unsigned long)len);
-            rc = CLI_RUNTIME;
-            break;
-        }
-        if (actual > 0)
-            fails = 0; /* partial progress: the device is alive */
-        if (st == LIBUSB_TRANSFER_STALL) {
-            int ps;
-
-            libusb_clear_halt(h, t->ep_out);
-            if (proto == USB_PROTO_PRINTER) {
-                ps = usb_printer_port_status(h, t, opts->timeout_ms);
-                if (usb_port_faults(ps, faults, sizeof faults)[0] != '\0') {
-                    cli_error("%s stalled: printer reports %s; %lu of %lu bytes delivered", who,
-                              faults, (unsigned long)sent, (unsigned long)len);
-                    rc = CLI_RUNTIME;
-                    break;
-                }
-            }
-            if (++fails > opts->retries) {
-                cli_error("endpoint 0x%02x of %s stalled on %u tries; %lu of %lu bytes delivered",
-                          (unsigned)t->ep_out, who, fails, (unsigned long)sent,
-                          (unsigned long)len);
-                rc = CLI_RUNTIME;
-                break;
-            }
-        } else if (st == LIBUSB_TRANSFER_TIMED_OUT) {
-            if (++fails > opts->retries) {
-                cli_error("sending to %s timed out after %u tries of %u ms; %lu of %lu bytes "
-                          "delivered",
-                          who, fails, opts->timeout_ms, (unsigned long)sent, (unsigned long)len);
-                rc = CLI_RUNTIME;
-                break;
-            }
-        } else if (st == LIBUSB_TRANSFER_COMPLETED) {
-            if (++fails > opts->retries) {
-                cli_error("%s took no data on %u tries; %lu of %lu bytes delivered", who, fails,
-                          (unsigned long)sent, (unsigned long)len);
-                rc = CLI_RUNTIME;
-                break;
-            }
-        } else {
-            cli_error("USB transfer to %s failed (%s); %lu of %lu bytes delivered", who,
-                      st == LIBUSB_TRANSFER_OVERFLOW ? "overflow" : "I/O error",
-                      (unsigned long)sent, (unsigned long)len);
-            rc = CLI_RUNTIME;
-            break;
-        }
+        rc = on_short_chunk(s, c);
     }
     if (rc == CLI_OK)
-        progress_draw(&pg, sent, 1);
+        progress_draw(&pg, s->sent, 1);
     libusb_free_transfer(tr);
-    *sent_out = sent;
     return rc;
 }
 
@@ -229,15 +244,34 @@ static int claim_error(int r, int iface, const char *who, const char *ids)
     return CLI_RUNTIME;
 }
 
-/* Open, detach, claim, printer checks, send, release, re-attach, close. */
-static int send_session(libusb_context *ctx, libusb_device *dev, const usb_target *t,
-                        const usb_opts *opts, int proto, const char *who, const char *ids,
-                        unsigned char *data, size_t len)
+/* The line that says what went where, with the printer's model if its
+ * device ID (id) names one. */
+static void say_sent(const session *s, const char *id)
 {
+    char model[80] = "";
+    const char *m = strstr(id, "MDL:");
+
+    if (m == NULL)
+        m = strstr(id, "MODEL:");
+    if (m != NULL) {
+        m = strchr(m, ':') + 1;
+        snprintf(model, sizeof model, ", %.*s", (int)strcspn(m, ";"), m);
+    }
+    printf("sent %lu bytes to %s (interface %d, %s%s)\n", (unsigned long)s->sent, s->who,
+           s->t->iface, proto_name(s->proto), model);
+    fflush(stdout);
+}
+
+/* Open, detach, claim, printer checks, send, release, re-attach, close. */
+static int send_session(session *s, libusb_device *dev)
+{
+    const usb_target *t = s->t;
+    const usb_opts *opts = s->opts;
+    const char *who = s->who, *ids = s->ids;
+    int proto = s->proto;
     libusb_device_handle *h;
     char id[USB_PRINTER_ID_MAX + 1] = "", faults[64];
     int r, rc, detached = 0;
-    size_t sent = 0;
 
     r = libusb_open(dev, &h);
     if (r == LIBUSB_ERROR_ACCESS) {
@@ -282,21 +316,10 @@ static int send_session(libusb_context *ctx, libusb_device *dev, const usb_targe
         }
     }
 
-    rc = send_chunks(ctx, h, t, opts, proto, who, data, len, &sent);
-    if (rc == CLI_OK && !opts->quiet) {
-        char model[80] = "";
-        const char *m = strstr(id, "MDL:");
-
-        if (m == NULL)
-            m = strstr(id, "MODEL:");
-        if (m != NULL) {
-            m = strchr(m, ':') + 1;
-            snprintf(model, sizeof model, ", %.*s", (int)strcspn(m, ";"), m);
-        }
-        printf("sent %lu bytes to %s (interface %d, %s%s)\n", (unsigned long)sent, who, t->iface,
-               proto_name(proto), model);
-        fflush(stdout);
-    }
+    s->h = h;
+    rc = send_chunks(s);
+    if (rc == CLI_OK && !opts->quiet)
+        say_sent(s, id);
 out_release:
     libusb_release_interface(h, t->iface);
 out_attach:
@@ -312,6 +335,7 @@ int usb_send(libusb_context *ctx, libusb_device *dev, const usb_target *t, const
     struct libusb_device_descriptor d;
     struct sigaction sa, old_int, old_term;
     char who[64], ids[16];
+    session s;
     int rc, proto = opts->protocol;
 
     usb_describe(dev, who, sizeof who);
@@ -328,7 +352,16 @@ int usb_send(libusb_context *ctx, libusb_device *dev, const usb_target *t, const
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old_int);
     sigaction(SIGTERM, &sa, &old_term);
-    rc = send_session(ctx, dev, t, opts, proto, who, ids, data, len);
+    memset(&s, 0, sizeof s);
+    s.ctx = ctx;
+    s.t = t;
+    s.opts = opts;
+    s.proto = proto;
+    s.who = who;
+    s.ids = ids;
+    s.data = data;
+    s.len = len;
+    rc = send_session(&s, dev);
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
     return rc;

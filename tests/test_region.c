@@ -7,7 +7,7 @@
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
-#include "../src/region/region_index.h"
+#include "region_index.h"
 
 static testalloc ta;
 static qc_ctx ctx;

@@ -36,3 +36,17 @@ double qc__fit_cell(qc_bbox box, double cell, double max_cells)
         cell *= 1.5;
     return cell;
 }
+
+size_t qc__region_ring_of(const qc_region *r, size_t v)
+{
+    size_t lo = 0, hi = r->nrings - 1;
+
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (r->ring_end[mid] > v)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}

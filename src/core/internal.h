@@ -55,6 +55,9 @@ QC__HIDDEN qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n);
  * max_cells cells (bucket grids: about a constant number of items each). */
 QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 
+/* The ring of region r that vertex v belongs to (binary search of ring_end). */
+QC__HIDDEN size_t qc__region_ring_of(const qc_region *r, size_t v);
+
 /* The families' descriptors, one per src/deco/family_NAME.c (QC_FAMILY_MAP). */
 #define QC__FAMILY_DECL(id, name) QC__HIDDEN extern const qc_family_desc qc__family_##name;
 QC_FAMILY_MAP(QC__FAMILY_DECL)
@@ -64,6 +67,73 @@ QC_FAMILY_MAP(QC__FAMILY_DECL)
 QC__HIDDEN int qc__param_check(qc_ctx *ctx, int id, double value);
 /* The descriptor of family id (a qc_family), or NULL. */
 QC__HIDDEN const qc_family_desc *qc__family(int id);
+
+/*
+ * Stable LSD radix sort (radix_sort.c) of key[0..n) by bits [shift, 64),
+ * carrying val[] along when val != NULL. Digits that are equal in every key
+ * are skipped.
+ * QC_OK or QC_ENOMEM (arrays untouched on failure).
+ */
+QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
+                              size_t n, unsigned shift);
+
+/* Index of cell (x, y) of a 2^bits x 2^bits grid along the Hilbert curve,
+ * 1 <= bits <= 32 (hilbert_key.c). */
+QC__HIDDEN uint64_t qc__hilbert_key(uint32_t x, uint32_t y, unsigned bits);
+
+/* ---- rasters (raster.c): the measures and the SDF offsetting ---- */
+
+/*
+ * Even-odd inside mask of region on the lattice (x0 + i h, y0 + j h),
+ * i < nx, j < ny: mask[j * nx + i] = 1 inside, 0 outside (a sample exactly
+ * on a crossing counts as inside on its right). Scanline with the edges
+ * bucketed by row: O(nx ny + perimeter / h + edges). QC_OK or QC_ENOMEM.
+ */
+QC__HIDDEN int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0,
+                                 double y0, double h, size_t nx, size_t ny,
+                                 unsigned char *mask);
+
+/* Felzenszwalb-Huttenlocher 1-D squared distance transform of f[0..n)
+ * (step 1) into d; v (n ints) and z (n + 1 doubles) are scratch. */
+QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z);
+
+/* ---- segments in a uniform grid (seg_grid.c) ---- */
+
+/* Segment k runs from p[k] to p[next(ud, k)]. */
+typedef uint32_t (*qc__seg_next)(const void *ud, uint32_t k);
+
+typedef struct qc__seg_grid {
+    double x0, y0, cell; /* the lower-left cell's corner; square cells */
+    size_t gx, gy;
+    size_t *start;       /* gx gy + 1 offsets into seg, row by row */
+    uint32_t *seg;       /* segment numbers, cell by cell */
+    size_t nseg;         /* entries allocated (at least 1) */
+} qc__seg_grid;
+
+/* Bins the n segments of p into cells of about cell mm, grown by half
+ * until there are at most cells_per_seg n + 64 of them. QC_OK or QC_ENOMEM
+ * (*g then freed). */
+QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p, size_t n,
+                                  qc__seg_next next, const void *ud, double cell,
+                                  double cells_per_seg);
+/* The cells (x0, y0, x1, y1, inclusive) the box of ab meets, clamped. */
+QC__HIDDEN void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4]);
+QC__HIDDEN void qc__seg_grid_free(qc_ctx *ctx, qc__seg_grid *g);
+
+/* Union-find over 0..n-1 (union_find.c). qc__uf_init makes every element
+ * its own set; qc__uf_find returns the root (halving the path);
+ * qc__uf_union joins two sets under the smaller root: 1, or 0 if a and b
+ * were in one set already. */
+QC__HIDDEN void qc__uf_init(uint32_t *parent, size_t n);
+QC__HIDDEN uint32_t qc__uf_find(uint32_t *parent, uint32_t x);
+QC__HIDDEN int qc__uf_union(uint32_t *parent, uint32_t a, uint32_t b);
+
+/* White space in every text format the core reads, without the C locale's
+ * isspace: blank, tab, LF, CR, form feed. */
+static inline int qc__is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
 
 /* A point from its coordinates (a C99 compound literal). */
 #define QC__V2(x, y) ((qc_vec2){(x), (y)})

@@ -198,29 +198,6 @@ QC__HIDDEN int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_p
 QC__HIDDEN uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne,
                                        qc_vec2 a);
 
-/* ---- segments in a uniform grid (shared_seg_grid.c) ---- */
-
-/* Segment k runs from p[k] to p[next(ud, k)]. */
-typedef uint32_t (*qc__seg_next)(const void *ud, uint32_t k);
-
-typedef struct qc__seg_grid {
-    double x0, y0, cell; /* the lower-left cell's corner; square cells */
-    size_t gx, gy;
-    size_t *start;       /* gx gy + 1 offsets into seg, row by row */
-    uint32_t *seg;       /* segment numbers, cell by cell */
-    size_t nseg;         /* entries allocated (at least 1) */
-} qc__seg_grid;
-
-/* Bins the n segments of p into cells of about cell mm, grown by half
- * until there are at most cells_per_seg n + 64 of them. QC_OK or QC_ENOMEM
- * (*g then freed). */
-QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p, size_t n,
-                                  qc__seg_next next, const void *ud, double cell,
-                                  double cells_per_seg);
-/* The cells (x0, y0, x1, y1, inclusive) the box of ab meets, clamped. */
-QC__HIDDEN void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4]);
-QC__HIDDEN void qc__seg_grid_free(qc_ctx *ctx, qc__seg_grid *g);
-
 /* ---- distance grids and offset rings (shared_sdf.c, shared_sdf_rings.c,
  *      shared_ring_repair.c) ---- */
 

@@ -80,6 +80,17 @@ typedef struct run {
     qc_rng rng;
     qc__placement *pl;
     qc__btile *tile;  /* a tile: items are added to the grid wrapped too */
+    /* the inputs and what the steps of qc__branching_run build */
+    const qc_skeleton *skel;
+    double s, gap, alpha;
+    qc_stats *st;
+    qc_points pts;    /* the walk's points */
+    qc_path vine;     /* one cubic per walk step */
+    size_t nseg;
+    qc_motif_set def; /* the built-in leaf when no motifs are given */
+    qc__btile tile_store;
+    qc_skeleton tile_skel;
+    qc_path one;      /* a tile's pattern before its layout */
 } run;
 
 static int grid_add(run *r, const qc_vec2 *poly, size_t n, unsigned kind, uint32_t id)
@@ -302,180 +313,223 @@ int qc_deco_branching(qc_ctx *ctx, const qc_region *region, const qc_params *par
     return qc__branching_run(ctx, region, params, skel, motifs, out, stats, NULL);
 }
 
-int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *params,
-                      const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
-                      qc_stats *stats, qc__placement *pl)
+/* Validates the parameters and sets r up: a tile's skeleton with its
+ * ports, the built-in leaf when no motifs are given, the rng. */
+static int start(run *r, qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                 const qc_skeleton *skel, const qc_motif_set *motifs, qc_stats *stats)
 {
-    run r;
-    qc_motif_set def = {0};
-    qc_path vine = {0}, one = {0}, *dst = out;
-    qc__btile tile;
-    qc_skeleton tsk;
-    qc_points pts = {0};
-    qc_stats dummy;
-    double s = params->size, gap = params->gap, alpha = params->angle, step, acc = 0;
-    size_t i, j, nseg;
-    unsigned char *seen = NULL;
-    int rc = QC_OK, side = 1, walk;
     int tiled = params->tile == QC_TILE_EDGE_TO_EDGE || params->tile == QC_TILE_ALL_OVER;
 
-    memset(&r, 0, sizeof r);
-    memset(&tile, 0, sizeof tile);
-    if (stats == NULL)
-        stats = memset(&dummy, 0, sizeof dummy);
+    r->ctx = ctx;
+    r->region = region;
+    r->st = stats;
+    r->s = params->size;
+    r->gap = params->gap >= 0 ? params->gap : 0;
+    r->alpha = params->angle;
     if (skel == NULL || skel->norder == 0)
         return qc__fail(ctx, QC_EEMPTY, "branching needs at least one point");
-    if (!(s > 0))
-        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", s);
-    if (!(gap >= 0))
-        gap = 0;
+    if (!(r->s > 0))
+        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", r->s);
+    r->skel = skel;
     if (tiled) { /* the ports join the tree; the walk runs from one to the other */
-        rc = qc__btile_make(ctx, region, skel, params->tile == QC_TILE_ALL_OVER, &tile, &tsk);
-        if (rc < 0)
-            return rc;
-        skel = &tsk;
-        r.tile = &tile;
-        dst = &one;
+        QC__TRY(qc__btile_make(ctx, region, skel, params->tile == QC_TILE_ALL_OVER,
+                               &r->tile_store, &r->tile_skel));
+        r->skel = &r->tile_skel;
+        r->tile = &r->tile_store;
     }
     if (motifs == NULL || motifs->n == 0) {
-        rc = qc_motif_builtin(ctx, "leaf", &def);
-        if (rc != QC_OK) {
-            qc_motif_set_free(ctx, &def);
-            qc__btile_free(ctx, &tile);
-            return rc;
-        }
-        motifs = &def;
+        QC__TRY(qc_motif_builtin(ctx, "leaf", &r->def));
+        motifs = &r->def;
     }
-    r.ctx = ctx;
-    r.region = region;
-    r.set = motifs;
-    r.pl = pl;
-    qc_rng_seed(&r.rng, params->seed ^ 0x6272616e6368ull);
-    r.choice = qc__alloc_array(ctx, motifs->n, sizeof *r.choice);
-    if (r.choice == NULL) {
-        rc = QC_ENOMEM;
-        goto out_free;
-    }
+    r->set = motifs;
+    qc_rng_seed(&r->rng, params->seed ^ 0x6272616e6368ull);
+    return QC_OK;
+}
+
+/* The motifs a candidate may choose: the closed ones, or all if none is. */
+static int pick_choices(run *r)
+{
+    const qc_motif_set *motifs = r->set;
+    size_t i;
+
+    r->choice = qc__alloc_array(r->ctx, motifs->n, sizeof *r->choice);
+    if (r->choice == NULL)
+        return QC_ENOMEM;
     for (i = 0; i < motifs->n; i++)
         if (motifs->m[i].legs == 0)
-            r.choice[r.nchoice++] = (uint32_t)i;
-    if (r.nchoice == 0)
+            r->choice[r->nchoice++] = (uint32_t)i;
+    if (r->nchoice == 0)
         for (i = 0; i < motifs->n; i++)
-            r.choice[r.nchoice++] = (uint32_t)i;
+            r->choice[r->nchoice++] = (uint32_t)i;
+    return QC_OK;
+}
 
-    /* The vine: one cubic per walk step. */
-    for (i = 0; i < skel->norder && rc == QC_OK; i++)
-        rc = qc_points_push(ctx, &pts, skel->p[skel->order[i]]);
-    if (rc == QC_OK) /* room for the whole vine at once */
-        rc = QC__RESERVE(ctx, vine.cmd, vine.cmd_cap, pts.n + 1);
-    if (rc == QC_OK)
-        rc = QC__RESERVE(ctx, vine.pt, vine.pt_cap, 3 * pts.n + 1);
-    if (rc == QC_OK)
-        rc = qc_curve_catmull_rom(ctx, pts.v, pts.n, skel->edges == NULL, &vine);
-    if (rc != QC_OK)
-        goto out_free;
-    if (tiled)
-        qc__btile_flat_ports(&tile, &vine);
-    nseg = vine.ncmd > 0 ? vine.ncmd - 1 : 0;
-    for (i = 1; i < vine.ncmd; i++)
-        if (vine.cmd[i] != QC_PATH_CUBIC) {
-            rc = qc__fail(ctx, QC_EINVAL, "vine command %zu is not a cubic", i);
-            goto out_free;
-        }
+/* The vine: one cubic per walk step. */
+static int build_vine(run *r)
+{
+    const qc_skeleton *skel = r->skel;
+    size_t i;
 
-    rc = make_shapes(&r);
-    if (rc == QC_OK) {
-        r.buf = qc__alloc_array(ctx, r.nbuf, sizeof *r.buf);
-        if (r.buf == NULL)
-            rc = QC_ENOMEM;
-    }
-    if (rc == QC_OK) {
-        qc_bbox b = qc_region_bbox(region), vb;
-        vb.min = vb.max = vine.pt[0]; /* control points bound the curve */
-        for (i = 1; i < vine.npt; i++) {
-            vb.min.x = fmin(vb.min.x, vine.pt[i].x);
-            vb.min.y = fmin(vb.min.y, vine.pt[i].y);
-            vb.max.x = fmax(vb.max.x, vine.pt[i].x);
-            vb.max.y = fmax(vb.max.y, vine.pt[i].y);
-        }
-        b.min.x = fmin(b.min.x, vb.min.x) - s;
-        b.min.y = fmin(b.min.y, vb.min.y) - s;
-        b.max.x = fmax(b.max.x, vb.max.x) + s;
-        b.max.y = fmax(b.max.y, vb.max.y) + s;
-        rc = qc__cgrid_init(ctx, &r.grid, b, s, 16 * skel->norder + 4096);
-        if (rc == QC_OK)
-            rc = QC__RESERVE(ctx, r.spots, r.spots_cap, nseg + 16);
-        if (rc == QC_OK) /* a guess at the vine's chords and the motifs: fewer regrowths */
-            rc = qc__cgrid_reserve(ctx, &r.grid, 4 * nseg + region->nv + 64,
-                                   16 * nseg + 2 * region->nv + 1024, 12 * nseg + 4 * region->nv + 256);
-    }
-    /* The boundary, every ring. */
-    if (rc == QC_OK)
-        rc = qc__cgrid_add_region(ctx, &r.grid, region, K_BOUND);
-    /* The vine as short chords (within a few percent of s of the curve). */
-    for (j = 0; rc == QC_OK && j < nseg; j++) {
-        const qc_vec2 *q = vine.pt + 3 * j; /* MOVE point + 3 per cubic */
-        /* chords within about VINE_TOL * s of the curve: n^2 >= dev / tol */
-        double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
-        double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
-        double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
-        size_t k, nk = (size_t)ceil(sqrt(dev / (VINE_TOL * s)));
-        qc_vec2 prev = q[0];
-        if (nk < 1)
-            nk = 1;
-        if (nk > 256)
-            nk = 256;
-        for (k = 1; k <= nk && rc == QC_OK; k++) {
-            qc_vec2 e[2];
-            e[0] = prev;
-            e[1] = qc_cubic_point(q, (double)k / nk);
-            rc = grid_add(&r, e, 2, K_VINE, (uint32_t)j);
-            if (rc == QC_OK && pl != NULL)
-                rc = qc_points_push(ctx, &pl->vine, prev);
-            prev = e[1];
-        }
-        if (rc == QC_OK && pl != NULL && j + 1 == nseg)
-            rc = qc_points_push(ctx, &pl->vine, prev);
-    }
+    for (i = 0; i < skel->norder; i++)
+        QC__TRY(qc_points_push(r->ctx, &r->pts, skel->p[skel->order[i]]));
+    /* room for the whole vine at once */
+    QC__TRY(QC__RESERVE(r->ctx, r->vine.cmd, r->vine.cmd_cap, r->pts.n + 1));
+    QC__TRY(QC__RESERVE(r->ctx, r->vine.pt, r->vine.pt_cap, 3 * r->pts.n + 1));
+    QC__TRY(qc_curve_catmull_rom(r->ctx, r->pts.v, r->pts.n, skel->edges == NULL, &r->vine));
+    if (r->tile != NULL)
+        qc__btile_flat_ports(r->tile, &r->vine);
+    r->nseg = r->vine.ncmd > 0 ? r->vine.ncmd - 1 : 0;
+    for (i = 1; i < r->vine.ncmd; i++)
+        if (r->vine.cmd[i] != QC_PATH_CUBIC)
+            return qc__fail(r->ctx, QC_EINVAL, "vine command %zu is not a cubic", i);
+    return QC_OK;
+}
 
-    /* Step 3: the tips, in walk (depth-first) order. */
-    if (rc == QC_OK && pts.n == 1) {
+/* The collision grid over the region and the vine, s beyond both. */
+static int make_grid(run *r)
+{
+    const qc_path *vine = &r->vine;
+    qc_bbox b = qc_region_bbox(r->region), vb = qc__points_bbox(vine->pt, vine->npt);
+    size_t nseg = r->nseg, nv = r->region->nv;
+    double s = r->s;
+
+    /* the control points bound the curve */
+    b.min.x = fmin(b.min.x, vb.min.x) - s;
+    b.min.y = fmin(b.min.y, vb.min.y) - s;
+    b.max.x = fmax(b.max.x, vb.max.x) + s;
+    b.max.y = fmax(b.max.y, vb.max.y) + s;
+    QC__TRY(qc__cgrid_init(r->ctx, &r->grid, b, s, 16 * r->skel->norder + 4096));
+    QC__TRY(QC__RESERVE(r->ctx, r->spots, r->spots_cap, nseg + 16));
+    /* a guess at the vine's chords and the motifs: fewer regrowths */
+    return qc__cgrid_reserve(r->ctx, &r->grid, 4 * nseg + nv + 64, 16 * nseg + 2 * nv + 1024,
+                             12 * nseg + 4 * nv + 256);
+}
+
+/* Vine cubic j as short chords (within about VINE_TOL s of the curve:
+ * n^2 >= dev / tol) into the grid, and into the placement if asked. */
+static int add_vine_chords(run *r, size_t j)
+{
+    const qc_vec2 *q = r->vine.pt + 3 * j; /* MOVE point + 3 per cubic */
+    double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
+    double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
+    double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
+    size_t k, nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
+    qc_vec2 prev = q[0];
+
+    nk = nk < 1 ? 1 : nk > 256 ? 256 : nk;
+    for (k = 1; k <= nk; k++) {
+        qc_vec2 e[2];
+        e[0] = prev;
+        e[1] = qc_cubic_point(q, (double)k / nk);
+        QC__TRY(grid_add(r, e, 2, K_VINE, (uint32_t)j));
+        if (r->pl != NULL)
+            QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
+        prev = e[1];
+    }
+    if (r->pl != NULL && j + 1 == r->nseg)
+        QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
+    return QC_OK;
+}
+
+/* What motifs keep clear of: the boundary (every ring) and the vine. */
+static int fill_grid(run *r)
+{
+    size_t j;
+
+    QC__TRY(make_shapes(r));
+    r->buf = qc__alloc_array(r->ctx, r->nbuf, sizeof *r->buf);
+    if (r->buf == NULL)
+        return QC_ENOMEM;
+    QC__TRY(make_grid(r));
+    QC__TRY(qc__cgrid_add_region(r->ctx, &r->grid, r->region, K_BOUND));
+    for (j = 0; j < r->nseg; j++)
+        QC__TRY(add_vine_chords(r, j));
+    return QC_OK;
+}
+
+/* Whether walk step i sits at a tip: the walk turns back there. The root
+ * is a tip when the walk leaves and returns by one edge; a tile's walk
+ * starts at a port, never a tip. */
+static int is_tip(const run *r, size_t i)
+{
+    const uint32_t *o = r->skel->order;
+    size_t n = r->pts.n;
+
+    if (i > 0)
+        return o[i - 1] == o[i + 1];
+    return r->tile == NULL && o[1] == o[n - 2] && (n == 3 || o[0] == o[n - 1]);
+}
+
+/* Step 3: the tips, in walk (depth-first) order. */
+static int place_tips(run *r)
+{
+    const qc_vec2 *v = r->pts.v;
+    size_t i, n = r->pts.n;
+
+    if (n == 1) {
         qc_vec2 up = {0, 1};
-        rc = candidate(&r, pts.v[0], up, 0, alpha, s, 0, 0, stats);
+        return candidate(r, v[0], up, 0, r->alpha, r->s, 0, 0, r->st);
     }
-    if (rc == QC_OK && skel->edges != NULL && nseg + 1 == pts.n && pts.n >= 3) {
-        for (i = 0; i + 1 < pts.n && rc == QC_OK; i++) {
-            /* the root is a tip when the walk leaves and returns by one edge;
-             * a tile's walk starts at a port, never a tip */
-            int tip = i == 0 ? !tiled && skel->order[1] == skel->order[pts.n - 2] &&
-                                   (pts.n == 3 || skel->order[0] == skel->order[pts.n - 1])
-                             : skel->order[i - 1] == skel->order[i + 1];
-            qc_vec2 d;
-            if (!tip)
-                continue;
-            d = unit((qc_vec2){pts.v[i].x - pts.v[i ? i - 1 : 1].x,
-                               pts.v[i].y - pts.v[i ? i - 1 : 1].y});
-            rc = candidate(&r, pts.v[i], d, 0, alpha, s, (uint32_t)i, 0, stats);
+    if (r->skel->edges == NULL || r->nseg + 1 != n || n < 3)
+        return QC_OK;
+    for (i = 0; i + 1 < n; i++) {
+        size_t from = i ? i - 1 : 1;
+        qc_vec2 d;
+
+        if (!is_tip(r, i))
+            continue;
+        d = unit((qc_vec2){v[i].x - v[from].x, v[i].y - v[from].y});
+        QC__TRY(candidate(r, v[i], d, 0, r->alpha, r->s, (uint32_t)i, 0, r->st));
+    }
+    return QC_OK;
+}
+
+/* Candidates every step along vine cubic j, alternating sides; *acc is the
+ * length since the last one. */
+static int place_on_cubic(run *r, size_t j, double step, double *acc, int *side)
+{
+    const qc_vec2 *q = r->vine.pt + 3 * j;
+    size_t k, nk = 16;
+    qc_vec2 prev = q[0];
+
+    for (k = 1; k <= nk; k++) {
+        double t = (double)k / nk;
+        qc_vec2 p = qc_cubic_point(q, t);
+        double dl = qc_hypot(p.x - prev.x, p.y - prev.y);
+
+        if (*acc + dl >= step && k < nk) {
+            qc_vec2 tg = unit(qc_cubic_tangent(q, t));
+            if (tg.x != 0 || tg.y != 0)
+                QC__TRY(candidate(r, p, tg, *side, r->alpha, r->s, (uint32_t)j, t, r->st));
+            *side = -*side;
+            *acc = 0;
+        } else {
+            *acc += dl;
         }
+        prev = p;
     }
-    /* Step 4: along each branch once (the walk's first pass down it), every
-     * step, alternating sides. */
-    step = s / 2 + gap;
-    acc = step / 2;
-    walk = skel->edges != NULL && nseg + 1 == pts.n && skel->n > 0;
-    if (rc == QC_OK && walk) {
-        seen = qc__alloc(ctx, skel->n);
+    return QC_OK;
+}
+
+/* Step 4: along each branch once (the walk's first pass down it), every
+ * step, alternating sides. */
+static int place_along(run *r)
+{
+    const qc_skeleton *skel = r->skel;
+    double step = r->s / 2 + r->gap, acc = step / 2;
+    int walk = skel->edges != NULL && r->nseg + 1 == r->pts.n && skel->n > 0, side = 1;
+    unsigned char *seen = NULL;
+    size_t j;
+    int rc = QC_OK;
+
+    if (walk) {
+        seen = qc__alloc(r->ctx, skel->n);
         if (seen == NULL)
-            rc = QC_ENOMEM;
-        else
-            memset(seen, 0, skel->n);
-    }
-    if (rc == QC_OK && walk)
+            return QC_ENOMEM;
+        memset(seen, 0, skel->n);
         seen[skel->order[0]] = 1;
-    for (j = 0; rc == QC_OK && j < nseg; j++) {
-        const qc_vec2 *q = vine.pt + 3 * j;
-        size_t k, nk = 16;
-        qc_vec2 prev = q[0];
+    }
+    for (j = 0; rc == QC_OK && j < r->nseg; j++) {
         if (walk) {
             uint32_t to = skel->order[j + 1];
             int down = !seen[to];
@@ -485,81 +539,117 @@ int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *par
                 continue;
             }
         }
-        for (k = 1; k <= nk && rc == QC_OK; k++) {
-            double t = (double)k / nk;
-            qc_vec2 p = qc_cubic_point(q, t);
-            double dl = qc_hypot(p.x - prev.x, p.y - prev.y);
-            if (acc + dl >= step && k < nk) {
-                qc_vec2 tg = unit(qc_cubic_tangent(q, t));
-                if (tg.x != 0 || tg.y != 0)
-                    rc = candidate(&r, p, tg, side, alpha, s, (uint32_t)j, t, stats);
-                side = -side;
-                acc = 0;
-            } else {
-                acc += dl;
-            }
-            prev = p;
-        }
+        rc = place_on_cubic(r, j, step, &acc, &side);
     }
+    qc__free(r->ctx, seen, seen != NULL ? skel->n : 0);
+    return rc;
+}
 
-    /* Assemble: the vine, split at each attachment for the detour. */
-    if (rc == QC_OK && r.nspots > 1)
-        qsort(r.spots, r.nspots, sizeof *r.spots, cmp_spot);
-    if (rc == QC_OK) { /* room for the result at once: vine, splits and motifs */
-        size_t nc = dst->ncmd + 1 + nseg + 3 * r.nspots, np = dst->npt + 1 + 3 * (nseg + r.nspots) + r.nspots;
-        for (i = 0; i < r.nspots; i++) {
-            nc += motifs->m[r.spots[i].motif].path.ncmd;
-            np += motifs->m[r.spots[i].motif].path.npt;
-        }
-        rc = QC__RESERVE(ctx, dst->cmd, dst->cmd_cap, nc);
-        if (rc == QC_OK)
-            rc = QC__RESERVE(ctx, dst->pt, dst->pt_cap, np);
-    }
-    if (rc == QC_OK) {
-        size_t sp = 0;
-        rc = qc_path_move_to(ctx, dst, vine.pt[0]);
-        for (j = 0; j < nseg + (nseg == 0) && rc == QC_OK; j++) {
-            qc_vec2 cur[4], l[4], rr[4];
-            double t0 = 0;
-            if (nseg > 0)
-                memcpy(cur, vine.pt + 3 * j, sizeof cur);
-            for (; sp < r.nspots && r.spots[sp].seg == j && rc == QC_OK; sp++) {
-                double t = r.spots[sp].t;
-                if (nseg > 0 && t > t0 + 1e-12) {
-                    qc_cubic_split(cur, (t - t0) / (1 - t0), l, rr);
-                    rc = qc_path_cubic_to(ctx, dst, l[1], l[2], l[3]);
-                    memcpy(cur, rr, sizeof cur);
-                    t0 = t;
-                }
-                if (rc == QC_OK) {
-                    const qc_motif *m = &motifs->m[r.spots[sp].motif];
-                    qc_vec2 at = qc__xf_apply(&r.spots[sp].xf, m->entry), end;
-                    rc = qc__path_append_xf(ctx, dst, &m->path, &r.spots[sp].xf);
-                    end = qc_path_last(dst);
-                    /* an open motif (a Wanderer primitive) comes back in a straight line */
-                    if (rc == QC_OK && (end.x != at.x || end.y != at.y))
-                        rc = qc_path_line_to(ctx, dst, at);
-                }
-            }
-            if (rc == QC_OK && nseg > 0)
-                rc = qc_path_cubic_to(ctx, dst, cur[1], cur[2], cur[3]);
-        }
-    }
-    if (rc == QC_OK && tiled) /* copies side by side, rows alternating */
-        rc = qc__btile_layout(ctx, &tile, params, &one, out);
+/* Room for the result at once: vine, splits and motifs. */
+static int reserve_result(const run *r, qc_path *dst)
+{
+    size_t nc = dst->ncmd + 1 + r->nseg + 3 * r->nspots, i;
+    size_t np = dst->npt + 1 + 3 * (r->nseg + r->nspots) + r->nspots;
 
-out_free:
-    qc__free(ctx, seen, seen != NULL ? skel->n : 0);
-    qc__cgrid_free(ctx, &r.grid);
-    free_shapes(&r);
-    qc__free(ctx, r.buf, r.nbuf * sizeof *r.buf);
-    qc__free(ctx, r.spots, r.spots_cap * sizeof *r.spots);
-    qc__free(ctx, r.choice, motifs->n * sizeof *r.choice);
-    qc_path_free(ctx, &vine);
-    qc_points_free(ctx, &pts);
-    qc_motif_set_free(ctx, &def);
-    qc_path_free(ctx, &one);
-    qc__btile_free(ctx, &tile);
+    for (i = 0; i < r->nspots; i++) {
+        nc += r->set->m[r->spots[i].motif].path.ncmd;
+        np += r->set->m[r->spots[i].motif].path.npt;
+    }
+    QC__TRY(QC__RESERVE(r->ctx, dst->cmd, dst->cmd_cap, nc));
+    return QC__RESERVE(r->ctx, dst->pt, dst->pt_cap, np);
+}
+
+/* The motif of spot sp as a detour from its attachment and back. */
+static int sew_motif(const run *r, size_t sp, qc_path *dst)
+{
+    const qc_motif *m = &r->set->m[r->spots[sp].motif];
+    qc_vec2 at = qc__xf_apply(&r->spots[sp].xf, m->entry), end;
+
+    QC__TRY(qc__path_append_xf(r->ctx, dst, &m->path, &r->spots[sp].xf));
+    end = qc_path_last(dst);
+    /* an open motif (a Wanderer primitive) comes back in a straight line */
+    if (end.x != at.x || end.y != at.y)
+        return qc_path_line_to(r->ctx, dst, at);
+    return QC_OK;
+}
+
+/* Assemble: the vine, split at each attachment for the detour. */
+static int assemble(run *r, qc_path *dst)
+{
+    size_t sp = 0, j, nseg = r->nseg;
+
+    if (r->nspots > 1)
+        qsort(r->spots, r->nspots, sizeof *r->spots, cmp_spot);
+    QC__TRY(reserve_result(r, dst));
+    QC__TRY(qc_path_move_to(r->ctx, dst, r->vine.pt[0]));
+    for (j = 0; j < nseg + (nseg == 0); j++) {
+        qc_vec2 cur[4], l[4], rr[4];
+        double t0 = 0;
+
+        if (nseg > 0)
+            memcpy(cur, r->vine.pt + 3 * j, sizeof cur);
+        for (; sp < r->nspots && r->spots[sp].seg == j; sp++) {
+            double t = r->spots[sp].t;
+            if (nseg > 0 && t > t0 + 1e-12) {
+                qc_cubic_split(cur, (t - t0) / (1 - t0), l, rr);
+                QC__TRY(qc_path_cubic_to(r->ctx, dst, l[1], l[2], l[3]));
+                memcpy(cur, rr, sizeof cur);
+                t0 = t;
+            }
+            QC__TRY(sew_motif(r, sp, dst));
+        }
+        if (nseg > 0)
+            QC__TRY(qc_path_cubic_to(r->ctx, dst, cur[1], cur[2], cur[3]));
+    }
+    return QC_OK;
+}
+
+static void run_free(run *r)
+{
+    qc_ctx *ctx = r->ctx;
+
+    qc__cgrid_free(ctx, &r->grid);
+    free_shapes(r);
+    qc__free(ctx, r->buf, r->nbuf * sizeof *r->buf);
+    qc__free(ctx, r->spots, r->spots_cap * sizeof *r->spots);
+    if (r->set != NULL)
+        qc__free(ctx, r->choice, r->set->n * sizeof *r->choice);
+    qc_path_free(ctx, &r->vine);
+    qc_points_free(ctx, &r->pts);
+    qc_motif_set_free(ctx, &r->def);
+    qc_path_free(ctx, &r->one);
+    qc__btile_free(ctx, &r->tile_store);
+}
+
+int qc__branching_run(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                      const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                      qc_stats *stats, qc__placement *pl)
+{
+    run r;
+    qc_stats dummy;
+    int rc;
+
+    memset(&r, 0, sizeof r);
+    r.pl = pl;
+    rc = start(&r, ctx, region, params, skel, motifs,
+               stats != NULL ? stats : memset(&dummy, 0, sizeof dummy));
+    if (rc < 0)
+        goto out_free_run;
+    rc = pick_choices(&r);
+    if (rc == QC_OK)
+        rc = build_vine(&r);
+    if (rc == QC_OK)
+        rc = fill_grid(&r);
+    if (rc == QC_OK)
+        rc = place_tips(&r);
+    if (rc == QC_OK)
+        rc = place_along(&r);
+    if (rc == QC_OK)
+        rc = assemble(&r, r.tile != NULL ? &r.one : out);
+    if (rc == QC_OK && r.tile != NULL) /* copies side by side, rows alternating */
+        rc = qc__btile_layout(ctx, r.tile, params, &r.one, out);
+out_free_run:
+    run_free(&r);
     return rc;
 }
 

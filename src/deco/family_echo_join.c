@@ -81,22 +81,6 @@ static uint32_t step_v(const joiner *j, uint32_t g, int dir)
     return g == b ? (uint32_t)(e - 1) : g - 1;
 }
 
-static uint32_t uf_find(uint32_t *uf, uint32_t a)
-{
-    while (uf[a] != a) {
-        uf[a] = uf[uf[a]];
-        a = uf[a];
-    }
-    return a;
-}
-
-static void uf_union(uint32_t *uf, uint32_t a, uint32_t b)
-{
-    a = uf_find(uf, a);
-    b = uf_find(uf, b);
-    uf[a > b ? a : b] = a < b ? a : b;
-}
-
 static double cross2(qc_vec2 a, qc_vec2 b)
 {
     return a.x * b.y - a.y * b.x;
@@ -389,11 +373,11 @@ static int cands_take(qc_ctx *ctx, joiner *j, cands *c, int spur, double half, i
     for (k = 0; k < c->n && rc == QC_OK; k++) {
         uint32_t ra = j->ring[c->v[k].ga], rb = j->ring[c->v[k].gb];
 
-        if (uf_find(j->uf, ra) == uf_find(j->uf, rb))
+        if (qc__uf_find(j->uf, ra) == qc__uf_find(j->uf, rb))
             continue;
         rc = spur ? try_spur(ctx, j, &c->v[k]) : try_ladder(ctx, j, &c->v[k], half);
         if (rc == 1) {
-            uf_union(j->uf, ra, rb);
+            qc__uf_union(j->uf, ra, rb);
             ++*linked;
             rc = QC_OK;
         }
@@ -419,7 +403,7 @@ static int link_round(qc_ctx *ctx, joiner *j, double every, double reach, double
         double acc = every;
 
         if (only_from != NONE &&
-            uf_find(j->uf, (uint32_t)k) == uf_find(j->uf, j->ring[only_from]))
+            qc__uf_find(j->uf, (uint32_t)k) == qc__uf_find(j->uf, j->ring[only_from]))
             continue;
         for (i = b; i < e && rc == QC_OK; i++) {
             uint32_t prv = step_v(j, (uint32_t)i, -1);
@@ -440,7 +424,7 @@ static int link_round(qc_ctx *ctx, joiner *j, double every, double reach, double
                     continue;
                 hit = cast(j, (uint32_t)i, u, reach, &tt);
                 if (hit == NONE || j->ring[hit] == k ||
-                    uf_find(j->uf, j->ring[hit]) == uf_find(j->uf, (uint32_t)k))
+                    qc__uf_find(j->uf, j->ring[hit]) == qc__uf_find(j->uf, (uint32_t)k))
                     continue;
                 rc = cands_push(ctx, &cs, tt, (uint32_t)i, hit);
             }
@@ -503,7 +487,7 @@ static uint32_t try_tail(joiner *j, uint32_t x, double gap, uint32_t in_link, ui
         if (!normal_at(j, y, side, &u))
             continue;
         hit = cast(j, y, u, j->o->reach, &tt);
-        if (hit != NONE && uf_find(j->uf, j->ring[hit]) != uf_find(j->uf, k) &&
+        if (hit != NONE && qc__uf_find(j->uf, j->ring[hit]) != qc__uf_find(j->uf, k) &&
             is_free(j, hit, NONE) && is_free(j, step_v(j, hit, 1), NONE) &&
             is_free(j, step_v(j, hit, -1), NONE) && !blocked(j, p[y], p[hit])) {
             *y_out = y;
@@ -540,7 +524,7 @@ static int lay_tails(qc_ctx *ctx, joiner *j, uint32_t *start)
         mark(j, hit, hit, id);
         j->tail_y[k] = y;
         j->tail_to[k] = hit;
-        uf_union(j->uf, k, j->ring[hit]);
+        qc__uf_union(j->uf, k, j->ring[hit]);
         j->info->tails++;
         in_link = id;
         x = hit;
@@ -651,14 +635,14 @@ static void jn_free(qc_ctx *ctx, joiner *j)
 static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, size_t *linked)
 {
     const qc_vec2 *p = j->p;
-    uint32_t main_root = uf_find(j->uf, j->ring[start]);
+    uint32_t main_root = qc__uf_find(j->uf, j->ring[start]);
     cands cs = {NULL, 0, 0};
     size_t g;
     int rc = QC_OK;
 
     *linked = 0;
     for (g = 0; g < j->n && rc == QC_OK; g++) {
-        uint32_t rg = uf_find(j->uf, j->ring[g]), best = NONE;
+        uint32_t rg = qc__uf_find(j->uf, j->ring[g]), best = NONE;
         double bd = radius;
         size_t c[4], x, y, q;
         qc_vec2 lo, hi;
@@ -675,7 +659,7 @@ static int near_round(qc_ctx *ctx, joiner *j, double radius, uint32_t start, siz
                 for (q = j->grid.start[y * j->grid.gx + x]; q < j->grid.start[y * j->grid.gx + x + 1]; q++) {
                     uint32_t h = j->grid.seg[q];
                     double dd = point_dist(p[g], p[h]);
-                    if (dd < bd && !j->used[h] && uf_find(j->uf, j->ring[h]) != rg) {
+                    if (dd < bd && !j->used[h] && qc__uf_find(j->uf, j->ring[h]) != rg) {
                         bd = dd;
                         best = h;
                     }
@@ -696,7 +680,7 @@ static int link_all(qc_ctx *ctx, joiner *j, uint32_t start)
     int pass;
 
     for (k = 0; k < j->nr; k++)
-        if (uf_find(j->uf, (uint32_t)k) != k)
+        if (qc__uf_find(j->uf, (uint32_t)k) != k)
             comps--;
     QC__TRY(link_round(ctx, j, 0.4 * o->reach, o->reach, 0.5 * o->gap, 0, NONE, &linked));
     comps -= linked;
@@ -748,8 +732,8 @@ int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o, qc_p
         j.other == NULL || j.ahead == NULL || j.uf == NULL || j.tail_y == NULL ||
         j.tail_to == NULL || stack == NULL)
         goto out;
+    qc__uf_init(j.uf, j.nr);
     for (k = 0, g = 0; k < j.nr; k++) {
-        j.uf[k] = (uint32_t)k;
         j.tail_y[k] = j.tail_to[k] = NONE;
         for (; g < r->end.i[k]; g++)
             j.ring[g] = (uint32_t)k;
@@ -779,8 +763,8 @@ int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o, qc_p
     rc = walk(ctx, &j, start, out, stack, o->spiral);
     /* trees no link reached: jumped to, one after another */
     for (k = 0; k < j.nr && rc == QC_OK; k++) {
-        uint32_t root = uf_find(j.uf, (uint32_t)k);
-        if (root == uf_find(j.uf, j.ring[start]) || root != k)
+        uint32_t root = qc__uf_find(j.uf, (uint32_t)k);
+        if (root == qc__uf_find(j.uf, j.ring[start]) || root != k)
             continue;
         for (g = rstart(&j, (uint32_t)k); g + 1 < r->end.i[k] && j.used[g]; g++)
             ;

@@ -41,6 +41,14 @@ typedef struct wrun {
     size_t nrec, rec_cap;
     qc_vec2 *hbuf;
     size_t nhbuf;
+    /* the inputs and what the steps of qc_deco_wanderer build */
+    const qc_region *region;
+    const qc_skeleton *skel;
+    size_t n;            /* tour points, one primitive each */
+    double l;            /* the joins' tangent factor */
+    qc_stats *st;
+    prim *pr;
+    qc_motif_set def;    /* built-in variants when no motif has legs */
 } wrun;
 
 static qc_vec2 unit(double x, double y)
@@ -148,6 +156,8 @@ typedef struct skipctx {
     uint32_t i, n, seg;
 } skipctx;
 
+/* What a join (or, seg = NFLAT / 2, a replacement hull) of tour point i may
+ * touch: its own two primitives, and the ends of its neighbouring joins. */
 static int skip_seg(void *ud, unsigned kind, uint32_t id, size_t seg)
 {
     const skipctx *s = ud;
@@ -163,15 +173,7 @@ static int skip_seg(void *ud, unsigned kind, uint32_t id, size_t seg)
 
 static int skip_fn(void *ud, unsigned kind, uint32_t id)
 {
-    const skipctx *s = ud;
-    uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
-    if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
-        uint32_t owner = s->w->rec_owner[id];
-        return owner == UINT32_MAX || owner == s->i || owner == next;
-    }
-    if (kind == K_JOIN) /* neighbouring joins share end points */
-        return (id == prev && s->seg < 2) || (id == next && s->seg + 2 >= NFLAT);
-    return 0;
+    return skip_seg(ud, kind, id, ((const skipctx *)ud)->seg);
 }
 
 static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_vec2 *c2)
@@ -240,93 +242,90 @@ static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, s
     return 0;
 }
 
-int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *params,
-                     const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
-                     qc_stats *stats)
+/* The built-in variants of the motifs named ("heart" -> heart60, heart90)
+ * as a comma list in names (size bytes); its length, 0 for none. */
+static size_t variant_names(const qc_motif_set *motifs, char *names, size_t size)
 {
-    qc_motif_set def = {0};
-    wrun w;
-    prim *pr = NULL;
+    size_t len = 0, i, b;
+
+    names[0] = '\0';
+    for (i = 0; motifs != NULL && i < motifs->n; i++) {
+        size_t nl = strlen(motifs->m[i].name);
+        for (b = 0; b < qc_motif_builtin_count(); b++) {
+            const char *bn = qc_motif_builtin_name(b);
+            size_t bl = strlen(bn);
+            if (nl == 0 || bl <= nl || memcmp(bn, motifs->m[i].name, nl) != 0 ||
+                bn[nl] < '0' || bn[nl] > '9' || len + bl + 2 > size)
+                continue;
+            if (len > 0)
+                names[len++] = ',';
+            memcpy(names + len, bn, bl + 1);
+            len += bl;
+        }
+    }
+    return len;
+}
+
+/* The motifs with legs, or when none has them the built-in variants of
+ * the motifs named, else the loops. */
+static int pick_set(wrun *w, const qc_motif_set *motifs)
+{
+    char names[512];
+    size_t i, nvar = 0;
+
+    w->set = motifs;
+    for (i = 0; motifs != NULL && i < motifs->n; i++)
+        nvar += motifs->m[i].legs == 2;
+    if (nvar > 0)
+        return QC_OK;
+    QC__TRY(qc_motif_builtin(w->ctx, variant_names(motifs, names, sizeof names) > 0
+                                         ? names : "loop30,loop60,loop90,loop120",
+                             &w->def));
+    w->set = &w->def;
+    return QC_OK;
+}
+
+/* The variants' list, the primitives and a hull buffer for the largest. */
+static int alloc_run(wrun *w)
+{
+    size_t i, maxhull = 0;
+
+    w->var = qc__alloc_array(w->ctx, w->set->n, sizeof *w->var);
+    w->pr = qc__alloc_array(w->ctx, w->n, sizeof *w->pr);
+    if (w->var == NULL || w->pr == NULL)
+        return QC_ENOMEM;
+    for (i = 0; i < w->set->n; i++) {
+        if (w->set->m[i].legs == 2)
+            w->var[w->nvar++] = (uint32_t)i;
+        if (w->set->m[i].nhull > maxhull)
+            maxhull = w->set->m[i].nhull;
+    }
+    w->hbuf = qc__alloc_array(w->ctx, maxhull, sizeof *w->hbuf);
+    if (w->hbuf == NULL)
+        return QC_ENOMEM;
+    w->nhbuf = maxhull;
+    return QC_OK;
+}
+
+/* Each primitive its best variant, then judged again against the real P0P3. */
+static void choose_variants(wrun *w)
+{
+    const qc_skeleton *skel = w->skel;
+    prim *pr = w->pr;
     cand cd[MAXV];
-    size_t n, i, maxhull = 0;
-    double l = params->tangent;
-    qc_stats dummy;
-    int rc = QC_OK;
+    size_t n = w->n, i, k;
 
-    memset(&w, 0, sizeof w);
-    if (stats == NULL)
-        stats = memset(&dummy, 0, sizeof dummy);
-    if (skel == NULL || skel->norder == 0)
-        return qc__fail(ctx, QC_EEMPTY, "wanderer needs at least one point");
-    if (!(params->size > 0))
-        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", params->size);
-    if (!(l >= 0))
-        l = 0;
-    n = skel->norder;
-    w.ctx = ctx;
-    w.s = params->size;
-    w.set = motifs;
-    if (motifs != NULL)
-        for (i = 0; i < motifs->n; i++)
-            w.nvar += motifs->m[i].legs == 2;
-    if (w.nvar == 0) { /* no primitive with legs: the built-in variants of the
-                        * motifs named ("heart" -> heart60, heart90), else the loops */
-        char names[512];
-        size_t len = 0, b;
-        names[0] = '\0';
-        for (i = 0; motifs != NULL && i < motifs->n; i++) {
-            size_t nl = strlen(motifs->m[i].name);
-            for (b = 0; b < qc_motif_builtin_count(); b++) {
-                const char *bn = qc_motif_builtin_name(b);
-                size_t bl = strlen(bn);
-                if (nl == 0 || bl <= nl || memcmp(bn, motifs->m[i].name, nl) != 0 ||
-                    bn[nl] < '0' || bn[nl] > '9' || len + bl + 2 > sizeof names)
-                    continue;
-                if (len > 0)
-                    names[len++] = ',';
-                memcpy(names + len, bn, bl + 1);
-                len += bl;
-            }
-        }
-        rc = qc_motif_builtin(ctx, len > 0 ? names : "loop30,loop60,loop90,loop120", &def);
-        if (rc != QC_OK) {
-            qc_motif_set_free(ctx, &def);
-            return rc;
-        }
-        w.set = &def;
-    }
-    w.var = qc__alloc_array(ctx, w.set->n, sizeof *w.var);
-    pr = qc__alloc_array(ctx, n, sizeof *pr);
-    if (w.var == NULL || pr == NULL) {
-        rc = QC_ENOMEM;
-        goto out_free;
-    }
-    w.nvar = 0;
-    for (i = 0; i < w.set->n; i++) {
-        if (w.set->m[i].legs == 2)
-            w.var[w.nvar++] = (uint32_t)i;
-        if (w.set->m[i].nhull > maxhull)
-            maxhull = w.set->m[i].nhull;
-    }
-    w.hbuf = qc__alloc_array(ctx, maxhull, sizeof *w.hbuf);
-    if (w.hbuf == NULL) {
-        rc = QC_ENOMEM;
-        goto out_free;
-    }
-    w.nhbuf = maxhull;
-
-    for (i = 0; i < n; i++) { /* each primitive its best variant ... */
+    for (i = 0; i < n; i++) {
         qc_vec2 bis;
-        rank(&w, skel, i, &bis, cd);
-        pr[i] = make_prim(&w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+        rank(w, skel, i, &bis, cd);
+        pr[i] = make_prim(w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
     }
-    for (i = 0; n > 1 && i < n; i++) { /* ... judged again against the real P0P3 */
+    for (i = 0; n > 1 && i < n; i++) {
         const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
         qc_vec2 bis = pr[i].bis;
-        size_t k;
         double best = 1e300;
-        for (k = 0; k < 2 * w.nvar; k++) {
-            prim q = make_prim(&w, w.var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
+        for (k = 0; k < 2 * w->nvar; k++) {
+            prim q = make_prim(w, w->var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
             qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
             qc_vec2 dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
             double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60) +
@@ -337,104 +336,176 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
             }
         }
     }
-    {
-        qc_bbox b = qc_region_bbox(region);
-        double s = w.s;
-        for (i = 0; i < n; i++) {
-            qc_vec2 c = skel->p[skel->order[i]];
-            b.min.x = fmin(b.min.x, c.x);
-            b.min.y = fmin(b.min.y, c.y);
-            b.max.x = fmax(b.max.x, c.x);
-            b.max.y = fmax(b.max.y, c.y);
-        }
-        b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
-        rc = qc__cgrid_init(ctx, &w.grid, b, s, 8 * n + 4096);
-        if (rc == QC_OK)
-            rc = qc__cgrid_reserve(ctx, &w.grid, (NFLAT + 1) * n + region->nv,
-                                   (2 * NFLAT + maxhull) * n + 2 * region->nv,
-                                   (NFLAT * 2 + 4) * n + 4 * region->nv);
-    }
-    if (rc == QC_OK)
-        rc = qc__cgrid_add_region(ctx, &w.grid, region, K_BOUND);
-    for (i = 0; rc == QC_OK && i < n; i++) {
-        /* a primitive that reaches the boundary shrinks, down to half size */
-        static const double shrink[] = {0.75, 0.5};
-        const qc_motif *m = &w.set->m[pr[i].m];
-        double s0 = w.s;
-        size_t k, tr;
-        for (tr = 0; tr < 2; tr++) {
-            for (k = 0; k < m->nhull; k++)
-                w.hbuf[k] = qc__xf_apply(&pr[i].xf, m->hull[k]);
-            if (!qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_BOUND, NULL, NULL))
-                break;
-            w.s = s0 * shrink[tr];
-            {
-                uint32_t mi = pr[i].m;
-                int mir = pr[i].xf.a * pr[i].xf.d - pr[i].xf.b * pr[i].xf.c < 0;
-                pr[i] = make_prim(&w, mi, mir, skel->p[skel->order[i]], pr[i].bis);
-            }
-            w.s = s0;
-        }
-        stats->motifs_shrunk += tr > 0;
-        rc = add_hull(&w, &pr[i], (uint32_t)i);
-    }
+}
 
-    /* The path: primitive, join, primitive, ..., back to the first. */
-    if (rc == QC_OK)
-        rc = qc_path_move_to(ctx, out, pr[0].entry);
-    for (i = 0; rc == QC_OK && i < n; i++) {
-        size_t j = (i + 1) % n, k, nc, alt;
-        qc_vec2 c1, c2, f[NFLAT + 1];
-        int ok;
-        rc = qc__path_append_xf(ctx, out, &w.set->m[pr[i].m].path, &pr[i].xf);
-        if (rc != QC_OK || n == 1)
-            break;
-        ok = try_join(&w, &pr[i], &pr[j], l, i, n, &c1, &c2, f);
-        if (!ok && j != 0) { /* the next primitive's other variants, unless it is sewn */
-            qc_vec2 bis;
-            nc = rank(&w, skel, j, &bis, cd);
-            for (alt = 1; alt < nc && !ok; alt++) {
-                prim q = make_prim(&w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
-                const qc_motif *m = &w.set->m[q.m];
-                skipctx sk;
-                for (k = 0; k < m->nhull; k++)
-                    w.hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
-                sk.w = &w;
-                sk.i = (uint32_t)j; /* its hull may meet its own joins and primitives */
-                sk.n = (uint32_t)n;
-                sk.seg = NFLAT / 2;
-                if (qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_JOIN | 1u << K_BOUND, skip_fn, &sk))
-                    continue;
-                if (try_join(&w, &pr[i], &q, l, i, n, &c1, &c2, f)) {
-                    w.rec_owner[pr[j].rec] = UINT32_MAX;
-                    pr[j] = q;
-                    rc = add_hull(&w, &pr[j], (uint32_t)j);
-                    ok = 1;
-                }
-            }
-        }
-        if (rc != QC_OK)
-            break;
-        if (!ok) { /* nothing helped: keep the stated tangents */
-            stats->joins_unfixed++;
-            join_ctrl(&pr[i], &pr[j], l, &c1, &c2);
-            flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
-        }
-        for (k = 0; k < NFLAT && rc == QC_OK; k++)
-            rc = qc__cgrid_add(ctx, &w.grid, f + k, 2, K_JOIN, (uint32_t)i);
-        if (rc == QC_OK)
-            rc = qc_path_cubic_to(ctx, out, c1, c2, pr[j].entry);
-    }
-    if (rc == QC_OK)
-        stats->motifs_placed += n;
+/* The collision grid over the region and the tour, s beyond both, with
+ * the boundary in it. */
+static int make_grid(wrun *w)
+{
+    const qc_skeleton *skel = w->skel;
+    qc_bbox b = qc_region_bbox(w->region);
+    size_t n = w->n, nv = w->region->nv, i;
+    double s = w->s;
 
-out_free:
-    qc__cgrid_free(ctx, &w.grid);
-    qc__free(ctx, w.rec_owner, w.rec_cap * sizeof *w.rec_owner);
-    qc__free(ctx, w.hbuf, w.nhbuf * sizeof *w.hbuf);
-    qc__free(ctx, pr, n * sizeof *pr);
-    qc__free(ctx, w.var, w.set->n * sizeof *w.var);
-    qc_motif_set_free(ctx, &def);
+    for (i = 0; i < n; i++) {
+        qc_vec2 c = skel->p[skel->order[i]];
+        b.min.x = fmin(b.min.x, c.x);
+        b.min.y = fmin(b.min.y, c.y);
+        b.max.x = fmax(b.max.x, c.x);
+        b.max.y = fmax(b.max.y, c.y);
+    }
+    b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
+    QC__TRY(qc__cgrid_init(w->ctx, &w->grid, b, s, 8 * n + 4096));
+    QC__TRY(qc__cgrid_reserve(w->ctx, &w->grid, (NFLAT + 1) * n + nv,
+                              (2 * NFLAT + w->nhbuf) * n + 2 * nv, (NFLAT * 2 + 4) * n + 4 * nv));
+    return qc__cgrid_add_region(w->ctx, &w->grid, w->region, K_BOUND);
+}
+
+/* Primitive i, shrunk (3/4, then 1/2) while its hull reaches the boundary,
+ * into the grid. */
+static int fit_prim(wrun *w, size_t i)
+{
+    static const double shrink[] = {0.75, 0.5};
+    prim *p = &w->pr[i];
+    const qc_motif *m = &w->set->m[p->m];
+    double s0 = w->s;
+    size_t k, tr;
+
+    for (tr = 0; tr < 2; tr++) {
+        uint32_t mi = p->m;
+        int mir;
+
+        for (k = 0; k < m->nhull; k++)
+            w->hbuf[k] = qc__xf_apply(&p->xf, m->hull[k]);
+        if (!qc__cgrid_hit(&w->grid, w->hbuf, m->nhull, 1u << K_BOUND, NULL, NULL))
+            break;
+        w->s = s0 * shrink[tr];
+        mir = p->xf.a * p->xf.d - p->xf.b * p->xf.c < 0;
+        *p = make_prim(w, mi, mir, w->skel->p[w->skel->order[i]], p->bis);
+        w->s = s0;
+    }
+    w->st->motifs_shrunk += tr > 0;
+    return add_hull(w, p, (uint32_t)i);
+}
+
+/* The join i -> j through one of j's other variants whose hull keeps
+ * clear: 1 (pr[j] replaced, c1, c2, f set), 0 if none does, or an error. */
+static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 *c2,
+                              qc_vec2 *f)
+{
+    const qc_skeleton *skel = w->skel;
+    cand cd[MAXV];
+    qc_vec2 bis;
+    size_t nc = rank(w, skel, j, &bis, cd), alt, k;
+
+    for (alt = 1; alt < nc; alt++) {
+        prim q = make_prim(w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
+        const qc_motif *m = &w->set->m[q.m];
+        skipctx sk;
+
+        for (k = 0; k < m->nhull; k++)
+            w->hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
+        sk.w = w;
+        sk.i = (uint32_t)j; /* its hull may meet its own joins and primitives */
+        sk.n = (uint32_t)w->n;
+        sk.seg = NFLAT / 2;
+        if (qc__cgrid_hit(&w->grid, w->hbuf, m->nhull, 1u << K_JOIN | 1u << K_BOUND, skip_fn, &sk))
+            continue;
+        if (try_join(w, &w->pr[i], &q, w->l, i, w->n, c1, c2, f)) {
+            w->rec_owner[w->pr[j].rec] = UINT32_MAX;
+            w->pr[j] = q;
+            QC__TRY(add_hull(w, &w->pr[j], (uint32_t)j));
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Primitive i and its join to the next, into out and the grid. */
+static int sew_step(wrun *w, size_t i, qc_path *out)
+{
+    prim *pr = w->pr;
+    size_t n = w->n, j = (i + 1) % n, k;
+    qc_vec2 c1, c2, f[NFLAT + 1];
+    int ok;
+
+    QC__TRY(qc__path_append_xf(w->ctx, out, &w->set->m[pr[i].m].path, &pr[i].xf));
+    if (n == 1)
+        return QC_OK;
+    ok = try_join(w, &pr[i], &pr[j], w->l, i, n, &c1, &c2, f);
+    if (!ok && j != 0) /* the next primitive's other variants, unless it is sewn */
+        ok = join_other_variant(w, i, j, &c1, &c2, f);
+    if (ok < 0)
+        return ok;
+    if (!ok) { /* nothing helped: keep the stated tangents */
+        w->st->joins_unfixed++;
+        join_ctrl(&pr[i], &pr[j], w->l, &c1, &c2);
+        flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
+    }
+    for (k = 0; k < NFLAT; k++)
+        QC__TRY(qc__cgrid_add(w->ctx, &w->grid, f + k, 2, K_JOIN, (uint32_t)i));
+    return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
+}
+
+/* The path: primitive, join, primitive, ..., back to the first. */
+static int sew(wrun *w, qc_path *out)
+{
+    size_t i;
+
+    QC__TRY(qc_path_move_to(w->ctx, out, w->pr[0].entry));
+    for (i = 0; i < w->n; i++)
+        QC__TRY(sew_step(w, i, out));
+    w->st->motifs_placed += w->n;
+    return QC_OK;
+}
+
+static void wrun_free(wrun *w)
+{
+    qc_ctx *ctx = w->ctx;
+
+    qc__cgrid_free(ctx, &w->grid);
+    qc__free(ctx, w->rec_owner, w->rec_cap * sizeof *w->rec_owner);
+    qc__free(ctx, w->hbuf, w->nhbuf * sizeof *w->hbuf);
+    qc__free(ctx, w->pr, w->n * sizeof *w->pr);
+    if (w->set != NULL)
+        qc__free(ctx, w->var, w->set->n * sizeof *w->var);
+    qc_motif_set_free(ctx, &w->def);
+}
+
+int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                     const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                     qc_stats *stats)
+{
+    wrun w;
+    qc_stats dummy;
+    size_t i;
+    int rc;
+
+    if (skel == NULL || skel->norder == 0)
+        return qc__fail(ctx, QC_EEMPTY, "wanderer needs at least one point");
+    if (!(params->size > 0))
+        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", params->size);
+    memset(&w, 0, sizeof w);
+    w.ctx = ctx;
+    w.region = region;
+    w.skel = skel;
+    w.n = skel->norder;
+    w.s = params->size;
+    w.l = params->tangent >= 0 ? params->tangent : 0;
+    w.st = stats != NULL ? stats : memset(&dummy, 0, sizeof dummy);
+    rc = pick_set(&w, motifs);
+    if (rc == QC_OK)
+        rc = alloc_run(&w);
+    if (rc != QC_OK)
+        goto out_free_run;
+    choose_variants(&w);
+    rc = make_grid(&w);
+    for (i = 0; rc == QC_OK && i < w.n; i++)
+        rc = fit_prim(&w, i);
+    if (rc == QC_OK)
+        rc = sew(&w, out);
+out_free_run:
+    wrun_free(&w);
     return rc;
 }
 

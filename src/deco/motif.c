@@ -105,10 +105,59 @@ static void spiral(pen *g, qc_vec2 c, double r0, double dr, double a0, double da
     }
 }
 
+/* A stem, five petals round its head, back down. */
+static void draw_flower(pen *g)
+{
+    int k;
+
+    M(g, 0, 0);
+    L(g, 0, 0.5);
+    for (k = 0; k < 5; k++) {
+        double a = -54 + 72 * k;
+        qc_vec2 c = QC__V2(0, 0.5);
+        Cv(g, add(c, dir(a - 28), 1.25), add(c, dir(a + 28), 1.25), c);
+    }
+    L(g, 0, 0);
+}
+
+/* A stem, then five points with gently bowed edges. */
+static void draw_star(pen *g)
+{
+    qc_vec2 c = QC__V2(0, 1.1), prev = add(c, dir(-90), 0.4);
+    int k;
+
+    M(g, 0, 0);
+    L(g, prev.x, prev.y);
+    for (k = 1; k <= 10; k++) {
+        qc_vec2 q = add(c, dir(-90 + 36 * k), (k & 1) ? 1.0 : 0.4);
+        qc_vec2 m = QC__V2((prev.x + q.x) / 2, (prev.y + q.y) / 2);
+        qc_vec2 a = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 1.0 / 3);
+        qc_vec2 bb = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 2.0 / 3);
+        a = add(a, QC__V2(c.x - m.x, c.y - m.y), 0.15);
+        bb = add(bb, QC__V2(c.x - m.x, c.y - m.y), 0.15);
+        Cv(g, a, bb, q);
+        prev = q;
+    }
+    L(g, 0, 0);
+}
+
+/* In from the left leg (ind), curl inward, swing out to the right leg (outd). */
+static void draw_swirl(pen *g, qc_vec2 ind, qc_vec2 outd)
+{
+    qc_vec2 s = QC__V2(-0.25, -0.6), t = QC__V2(0.25, -0.6), c = QC__V2(0, 0.3);
+    qc_vec2 p0, d0, p1, d1;
+
+    spiral_at(c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 0, &p0, &d0);
+    M(g, s.x, s.y);
+    Cv(g, add(s, ind, -0.5), add(p0, d0, 0.15), p0);
+    spiral(g, c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 6);
+    spiral_at(c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 1, &p1, &d1);
+    Cv(g, add(p1, d1, 0.3), add(t, outd, -0.8), t);
+}
+
 /* Draws motif b; two-legged primitives also get their leg directions. */
 static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
 {
-    int k;
     double h = b->angle / 2.0;
     qc_vec2 ind = dir(-90 - h), outd = dir(-90 + h);
 
@@ -129,15 +178,8 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         C(g, -0.85, 1.15, -0.5, 0.75, 0, 0.4);
         L(g, 0, 0);
         break;
-    case M_FLOWER: /* a stem, five petals round its head, back down */
-        M(g, 0, 0);
-        L(g, 0, 0.5);
-        for (k = 0; k < 5; k++) {
-            double a = -54 + 72 * k;
-            qc_vec2 c = QC__V2(0, 0.5);
-            Cv(g, add(c, dir(a - 28), 1.25), add(c, dir(a + 28), 1.25), c);
-        }
-        L(g, 0, 0);
+    case M_FLOWER:
+        draw_flower(g);
         break;
     case M_SPIRAL: /* in along one arm, out along the other, ends where it began */
         M(g, 0, 0);
@@ -156,23 +198,9 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         C(g, 0.6, 0.5, 0.65, 1.35, 0, 1.35);
         C(g, -0.65, 1.35, -0.6, 0.5, 0, 0);
         break;
-    case M_STAR: { /* a stem, then five points with gently bowed edges */
-        qc_vec2 c = QC__V2(0, 1.1), prev = add(c, dir(-90), 0.4);
-        M(g, 0, 0);
-        L(g, prev.x, prev.y);
-        for (k = 1; k <= 10; k++) {
-            qc_vec2 q = add(c, dir(-90 + 36 * k), (k & 1) ? 1.0 : 0.4);
-            qc_vec2 m = QC__V2((prev.x + q.x) / 2, (prev.y + q.y) / 2);
-            qc_vec2 a = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 1.0 / 3);
-            qc_vec2 bb = add(prev, QC__V2(q.x - prev.x, q.y - prev.y), 2.0 / 3);
-            a = add(a, QC__V2(c.x - m.x, c.y - m.y), 0.15);
-            bb = add(bb, QC__V2(c.x - m.x, c.y - m.y), 0.15);
-            Cv(g, a, bb, q);
-            prev = q;
-        }
-        L(g, 0, 0);
+    case M_STAR:
+        draw_star(g);
         break;
-    }
     case M_CIRCLE: { /* a short stem and a circle of radius 1 */
         const double K = 0.5522847498;
         M(g, 0, 0);
@@ -200,20 +228,9 @@ static void draw(pen *g, const builtin *b, qc_vec2 *in_dir, qc_vec2 *out_dir)
         Cv(g, QC__V2(-0.8, 0.8), add(bt, outd, -0.7), bt);
         break;
     }
-    case W_SWIRL: { /* in from the left leg, curl inward, swing out to the right leg */
-        qc_vec2 s = QC__V2(-0.25, -0.6), t = QC__V2(0.25, -0.6), c = QC__V2(0, 0.3);
-        qc_vec2 p0, d0;
-        spiral_at(c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 0, &p0, &d0);
-        M(g, s.x, s.y);
-        Cv(g, add(s, ind, -0.5), add(p0, d0, 0.15), p0);
-        spiral(g, c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 6);
-        {
-            qc_vec2 p1, d1;
-            spiral_at(c, 0.8, -0.6, QC_PI, -1.75 * QC_PI, 1, &p1, &d1);
-            Cv(g, add(p1, d1, 0.3), add(t, outd, -0.8), t);
-        }
+    case W_SWIRL:
+        draw_swirl(g, ind, outd);
         break;
-    }
     default:
         break;
     }

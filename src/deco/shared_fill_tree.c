@@ -15,15 +15,6 @@
 
 /* ---- building ---- */
 
-static uint32_t find(uint32_t *rep, uint32_t v)
-{
-    while (rep[v] != v) {
-        rep[v] = rep[rep[v]];
-        v = rep[v];
-    }
-    return v;
-}
-
 uint32_t qc__ftree_rep(const qc__ftree *t, uint32_t v)
 {
     while (t->rep[v] != v)
@@ -115,16 +106,12 @@ int qc__ftree_build(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *e, s
     t->rep = qc__alloc_array(ctx, n ? n : 1, sizeof *t->rep);
     if (t->off == NULL || t->rep == NULL)
         goto fail;
-    for (i = 0; i < n; i++)
-        t->rep[i] = (uint32_t)i;
+    qc__uf_init(t->rep, n);
     for (i = 0; i < ne; i++) /* duplicates: one node */
-        if (p[e[i].a].x == p[e[i].b].x && p[e[i].a].y == p[e[i].b].y) {
-            uint32_t a = find(t->rep, e[i].a), b = find(t->rep, e[i].b);
-            if (a != b)
-                t->rep[a > b ? a : b] = a < b ? a : b;
-        }
+        if (p[e[i].a].x == p[e[i].b].x && p[e[i].a].y == p[e[i].b].y)
+            qc__uf_union(t->rep, e[i].a, e[i].b);
     for (i = 0; i < n; i++)
-        t->rep[i] = find(t->rep, (uint32_t)i);
+        t->rep[i] = qc__uf_find(t->rep, (uint32_t)i);
     memset(t->off, 0, (n + 1) * sizeof *t->off);
     for (i = 0; i < ne; i++) {
         uint32_t a = t->rep[e[i].a], b = t->rep[e[i].b];

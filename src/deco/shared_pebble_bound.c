@@ -44,15 +44,8 @@ void qc__pbound_free(qc_ctx *ctx, qc__pbound *b)
 
 size_t qc__pbound_ring(const qc_region *r, uint32_t v, uint32_t *lo, uint32_t *hi)
 {
-    size_t a = 0, z = r->nrings - 1;
+    size_t a = qc__region_ring_of(r, v);
 
-    while (a < z) { /* first ring whose end is past v */
-        size_t m = a + (z - a) / 2;
-        if (r->ring_end[m] > v)
-            z = m;
-        else
-            a = m + 1;
-    }
     *lo = a ? r->ring_end[a - 1] : 0;
     *hi = r->ring_end[a];
     return a;

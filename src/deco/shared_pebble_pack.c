@@ -79,6 +79,28 @@ static void cell_box(const pack *P, qc_vec2 x, double reach, uint32_t r[4])
     r[3] = clamp_cell((x.y + reach - P->y0) / P->h, P->ny);
 }
 
+/*
+ * The walk over the grid: every pebble j in the cells (cx, cy) of the block
+ * r[4] = x0, y0, x1, y1 (inclusive; cell_box), row by row, each cell's list
+ * in order, skipping the cells where keep is false (list_for_each in the
+ * Linux kernel's manner: the loop costs what three written loops cost).
+ */
+#define FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, keep)                                           \
+    for ((cy) = (r)[1]; (cy) <= (r)[3]; (cy)++)                                              \
+        for ((cx) = (r)[0]; (cx) <= (r)[2]; (cx)++)                                          \
+            for ((j) = (keep) ? (P)->head[(cy) * (P)->nx + (cx)] : QC__PEB_NONE;             \
+                 (j) != QC__PEB_NONE; (j) = (P)->next[j])
+#define FOR_EACH_PEBBLE(P, r, cx, cy, j) FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, 1)
+
+/* The block of cells within ring cells of (c0x, c0y), clamped to the grid. */
+static void ring_box(const pack *P, uint32_t c0x, uint32_t c0y, uint32_t ring, uint32_t r[4])
+{
+    r[0] = c0x >= ring ? c0x - ring : 0;
+    r[1] = c0y >= ring ? c0y - ring : 0;
+    r[2] = c0x + ring < P->nx ? c0x + ring : P->nx - 1;
+    r[3] = c0y + ring < P->ny ? c0y + ring : P->ny - 1;
+}
+
 static void grid_insert(pack *P, uint32_t i)
 {
     uint32_t c = cell_of(P, P->pb->c[i]);
@@ -137,23 +159,20 @@ static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t e
 {
     const qc__pebbles *pb = P->pb;
     double best = cap, db;
-    uint32_t r[4], cx, cy, a = QC__PEB_NONE;
+    uint32_t j, a = QC__PEB_NONE;
+    uint32_t r[4], cx, cy;
 
     cell_box(P, x, cap + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
-                if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
-                    continue;
-                v = sqrt(dx * dx + dy * dy) - pb->r[j];
-                if (v < best) {
-                    best = v;
-                    a = j;
-                }
-            }
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
+        if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
+            continue;
+        v = sqrt(dx * dx + dy * dy) - pb->r[j];
+        if (v < best) {
+            best = v;
+            a = j;
         }
+    }
     if (best > 0) {
         db = qc__pbound_dist(P->b, x, pb->k * best) / pb->k;
         if (db < best) {
@@ -174,29 +193,26 @@ static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_
     const qc__pebbles *pb = P->pb;
     qc_vec2 xf = QC__V2(x0.x + u.x * cap, x0.y + u.y * cap);
     double best = cap;
+    uint32_t j;
     uint32_t r[4], cx, cy;
 
     if (!(cap > 0))
         return 0;
     cell_box(P, xf, r0 + cap + P->rmax, r); /* the circles nest in the last one */
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double ax, ay, bq, num, den;
-                if (j == ex0 || j == ex1)
-                    continue;
-                ax = x0.x - pb->c[j].x;
-                ay = x0.y - pb->c[j].y;
-                bq = pb->r[j] + r0;
-                num = ax * ax + ay * ay - bq * bq;
-                den = bq - (ax * u.x + ay * u.y);
-                if (num <= 0)
-                    return 0;
-                if (den > 0 && num / (2 * den) < best)
-                    best = num / (2 * den);
-            }
-        }
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+        double ax, ay, bq, num, den;
+        if (j == ex0 || j == ex1)
+            continue;
+        ax = x0.x - pb->c[j].x;
+        ay = x0.y - pb->c[j].y;
+        bq = pb->r[j] + r0;
+        num = ax * ax + ay * ay - bq * bq;
+        den = bq - (ax * u.x + ay * u.y);
+        if (num <= 0)
+            return 0;
+        if (den > 0 && num / (2 * den) < best)
+            best = num / (2 * den);
+    }
     return qc__pbound_ray(P->b, x0, r0, u, best, pb->k);
 }
 
@@ -214,19 +230,16 @@ static uint32_t nearest(pack *P, qc_vec2 x)
     uint32_t a = QC__PEB_NONE;
 
     for (;;) {
+        uint32_t j;
         uint32_t r[4], cx, cy;
         cell_box(P, x, reach, r);
-        for (cy = r[1]; cy <= r[3]; cy++)
-            for (cx = r[0]; cx <= r[2]; cx++) {
-                uint32_t j = P->head[cy * P->nx + cx];
-                for (; j != QC__PEB_NONE; j = P->next[j]) {
-                    double v = dist(x, pb->c[j]) - pb->r[j];
-                    if (v < best || (v == best && j < a)) {
-                        best = v;
-                        a = j;
-                    }
-                }
+        FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+            double v = dist(x, pb->c[j]) - pb->r[j];
+            if (v < best || (v == best && j < a)) {
+                best = v;
+                a = j;
             }
+        }
         if ((a != QC__PEB_NONE && best <= reach - P->rmax) ||
             (r[0] == 0 && r[1] == 0 && r[2] == P->nx - 1 && r[3] == P->ny - 1))
             return a;
@@ -248,28 +261,25 @@ static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
 {
     const qc__pebbles *pb = P->pb;
     double g[NEAR];
-    uint32_t r[4], cx, cy;
+    uint32_t j;
     size_t n = 0;
+    uint32_t r[4], cx, cy;
 
     cell_box(P, x, reach + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double v = dist(x, pb->c[j]) - pb->r[j];
-                size_t k;
-                if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
-                    continue;
-                k = n < NEAR ? n++ : NEAR - 1;
-                while (k > 0 && (g[k - 1] > v || (g[k - 1] == v && out[k - 1] > j))) {
-                    g[k] = g[k - 1];
-                    out[k] = out[k - 1];
-                    k--;
-                }
-                g[k] = v;
-                out[k] = j;
-            }
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+        double v = dist(x, pb->c[j]) - pb->r[j];
+        size_t k;
+        if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
+            continue;
+        k = n < NEAR ? n++ : NEAR - 1;
+        while (k > 0 && (g[k - 1] > v || (g[k - 1] == v && out[k - 1] > j))) {
+            g[k] = g[k - 1];
+            out[k] = out[k - 1];
+            k--;
         }
+        g[k] = v;
+        out[k] = j;
+    }
     return n;
 }
 
@@ -281,7 +291,8 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
 {
     const qc__pebbles *pb = P->pb;
     qc_vec2 u = unit_from(pb->c[b], x), p, q, mid;
-    double half;
+    double half, ex, ey, l2;
+    uint32_t j;
     uint32_t r[4], cx, cy;
 
     p = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
@@ -290,23 +301,131 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
         return 0;
     mid = QC__V2(0.5 * (p.x + q.x), 0.5 * (p.y + q.y));
     half = 0.5 * dist(p, q);
+    ex = q.x - p.x;
+    ey = q.y - p.y;
+    l2 = ex * ex + ey * ey;
     cell_box(P, mid, half + P->rmax, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double ex = q.x - p.x, ey = q.y - p.y, l2 = ex * ex + ey * ey, t, dx, dy;
-                if (j == b)
-                    continue;
-                t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
-                t = t < 0 ? 0 : t > 1 ? 1 : t;
-                dx = p.x + t * ex - pb->c[j].x;
-                dy = p.y + t * ey - pb->c[j].y;
-                if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
-                    return 0;
-            }
-        }
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+        double t, dx, dy;
+        if (j == b)
+            continue;
+        t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        dx = p.x + t * ex - pb->c[j].x;
+        dy = p.y + t * ey - pb->c[j].y;
+        if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
+            return 0;
+    }
     return 1;
+}
+
+/* The pebble of size s hanging from pebble b towards x, tangent to it. */
+static uint32_t hang(pack *P, uint32_t b, qc_vec2 x, double s, uint32_t m)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[b], x);
+    qc_vec2 x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+
+    return place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, b, m, 0);
+}
+
+/* The root, c the room at x: held in by the boundary, the small size of the
+ * r_seed pair, so its children still alternate r_seed d and (1 - r_seed) d. */
+static void visit_root(pack *P, qc_vec2 x, uint32_t m, double c, uint32_t *anchor)
+{
+    qc__pebbles *pb = P->pb;
+
+    if (c < pb->r_first)
+        c = fmin(c, fmax(pb->r_min, P->d - pb->r_first));
+    if (c >= pb->r_min)
+        *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
+    else
+        pb->dropped++;
+}
+
+/* The circle (x, c) from its parent a across a gap: a filler tangent to
+ * both (step 3), else slid towards the parent. 1 when placed. */
+static int across_gap(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c, double gap,
+                      uint32_t *anchor)
+{
+    qc__pebbles *pb = P->pb;
+    qc_vec2 u = unit_from(pb->c[a], x);
+    qc_vec2 x0 = QC__V2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
+    double s;
+
+    if ((pb->k < 1 && !same_side(P, pb->c[a], x0)) || (x0.x == pb->c[a].x && x0.y == pb->c[a].y))
+        return 0; /* overgrown parent: no room on this side */
+    if (gap / 2 >= pb->r_min &&
+        ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
+        uint32_t f = place(P, QC__V2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
+                           QC__PEB_NONE, QC__PEB_FILLER);
+        *anchor = place(P, x, c, f, m, 0);
+        return 1;
+    }
+    s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
+    if (s < pb->r_min)
+        return 0;
+    *anchor = place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
+    return 1;
+}
+
+/* Hanging from the roomiest of the pebbles near x (but a). 1 when placed. */
+static int from_roomiest(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c,
+                         uint32_t *anchor)
+{
+    const qc__pebbles *pb = P->pb;
+    uint32_t near[NEAR], best = QC__PEB_NONE;
+    double bs = 0;
+    size_t k, nn = nearest_few(P, x, c + 2 * pb->r_first, near);
+
+    for (k = 0; k < nn; k++) {
+        uint32_t b = near[k];
+        qc_vec2 u, x0;
+        double s;
+        if (b == a)
+            continue;
+        u = unit_from(pb->c[b], x);
+        x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
+        if (pb->k < 1 && !same_side(P, pb->c[b], x0))
+            continue;
+        s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
+        if (s > bs) {
+            bs = s;
+            best = b;
+        }
+    }
+    if (bs < pb->r_min)
+        return 0;
+    *anchor = hang(P, best, x, bs, m);
+    return 1;
+}
+
+/* No tangent way in: a straight stitch (sewn there and back) from the
+ * nearest pebble it reaches crossing nothing. Returns 1 when hemmed in
+ * (tried later, or on the last try left rather than crossed). */
+static int bridge_in(pack *P, qc_vec2 x, uint32_t m, uint32_t a, double c, uint32_t *anchor,
+                     int last)
+{
+    qc__pebbles *pb = P->pb;
+    uint32_t near[NEAR], best;
+    size_t k, nn = nearest_few(P, x, c + 4 * pb->r_first, near);
+
+    best = bridge_clear(P, x, c, a) ? a : QC__PEB_NONE;
+    for (k = 0; k < nn; k++) {
+        uint32_t b = near[k];
+        if (b != a && (best == QC__PEB_NONE || dist(x, pb->c[b]) - pb->r[b] <
+                                               dist(x, pb->c[best]) - pb->r[best]) &&
+            bridge_clear(P, x, c, b))
+            best = b;
+    }
+    if (best == QC__PEB_NONE && nn > 0) {
+        *anchor = near[0];
+        pb->dropped += (size_t)last;
+        return !last;
+    }
+    /* else cut off from every pebble (another part of the region) */
+    *anchor = place(P, x, c, best != QC__PEB_NONE ? best : a, m, QC__PEB_BRIDGE);
+    return 0;
 }
 
 /* Skeleton point m (its parent's pebble a, or none): *anchor receives the
@@ -317,8 +436,8 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
                  int last)
 {
     qc__pebbles *pb = P->pb;
-    qc_vec2 x = pts[m], u, x0;
-    double c, len, gap, s;
+    qc_vec2 x = pts[m];
+    double c, len, gap;
     uint32_t q;
 
     *anchor = a;
@@ -328,15 +447,8 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         return 0;
     }
     c = clearance(P, x, pb->r_first, QC__PEB_NONE, QC__PEB_NONE, QC__PEB_NONE, &q);
-    if (pb->n == 0) { /* the root */
-        /* held in by the boundary: the small size of the r_seed pair, so
-         * its children still alternate r_seed d and (1 - r_seed) d */
-        if (c < pb->r_first)
-            c = fmin(c, fmax(pb->r_min, P->d - pb->r_first));
-        if (c >= pb->r_min)
-            *anchor = place(P, x, c, QC__PEB_NONE, m, 0);
-        else
-            pb->dropped++;
+    if (pb->n == 0) {
+        visit_root(P, x, m, c, anchor);
         return 0;
     }
     if (a == QC__PEB_NONE)
@@ -354,75 +466,9 @@ static int visit(pack *P, const qc_vec2 *pts, uint32_t m, uint32_t a, uint32_t *
         *anchor = place(P, x, c, a, m, 0);
         return 0;
     }
-    u = unit_from(pb->c[a], x);
-    x0 = QC__V2(pb->c[a].x + u.x * pb->r[a], pb->c[a].y + u.y * pb->r[a]);
-    if (pb->k < 1 && !same_side(P, pb->c[a], x0))
-        x0 = pb->c[a]; /* overgrown parent: no room on this side */
-    if (x0.x != pb->c[a].x || x0.y != pb->c[a].y) {
-        /* step 3: a filler tangent to both */
-        if (gap / 2 >= pb->r_min &&
-            ray(P, x0, 0, u, gap / 2, a, QC__PEB_NONE) >= gap / 2 * (1 - 1e-12)) {
-            uint32_t f = place(P, QC__V2(x0.x + u.x * gap / 2, x0.y + u.y * gap / 2), gap / 2, a,
-                               QC__PEB_NONE, QC__PEB_FILLER);
-            *anchor = place(P, x, c, f, m, 0);
-            return 0;
-        }
-        /* else slide towards the parent */
-        s = ray(P, x0, 0, u, pb->r_first, a, QC__PEB_NONE);
-        if (s >= pb->r_min) {
-            *anchor = place(P, QC__V2(x0.x + u.x * s, x0.y + u.y * s), s, a, m, 0);
-            return 0;
-        }
-    }
-    /* or from one of the nearest other pebbles, the roomiest */
-    {
-        uint32_t near[NEAR], best = QC__PEB_NONE;
-        double bs = 0;
-        size_t k, nn = nearest_few(P, x, c + 2 * pb->r_first, near);
-        for (k = 0; k < nn; k++) {
-            uint32_t b = near[k];
-            if (b == a)
-                continue;
-            u = unit_from(pb->c[b], x);
-            x0 = QC__V2(pb->c[b].x + u.x * pb->r[b], pb->c[b].y + u.y * pb->r[b]);
-            if (pb->k < 1 && !same_side(P, pb->c[b], x0))
-                continue;
-            s = ray(P, x0, 0, u, pb->r_first, b, QC__PEB_NONE);
-            if (s > bs) {
-                bs = s;
-                best = b;
-            }
-        }
-        if (bs >= pb->r_min) {
-            u = unit_from(pb->c[best], x);
-            x0 = QC__V2(pb->c[best].x + u.x * pb->r[best], pb->c[best].y + u.y * pb->r[best]);
-            *anchor = place(P, QC__V2(x0.x + u.x * bs, x0.y + u.y * bs), bs, best, m, 0);
-            return 0;
-        }
-        /* no tangent way in: a straight stitch (sewn there and back) from
-         * the nearest pebble it reaches crossing nothing */
-        nn = nearest_few(P, x, c + 4 * pb->r_first, near);
-        best = bridge_clear(P, x, c, a) ? a : QC__PEB_NONE;
-        for (k = 0; k < nn; k++) {
-            uint32_t b = near[k];
-            if (b != a && (best == QC__PEB_NONE || dist(x, pb->c[b]) - pb->r[b] <
-                                                   dist(x, pb->c[best]) - pb->r[best]) &&
-                bridge_clear(P, x, c, b))
-                best = b;
-        }
-        if (best != QC__PEB_NONE) {
-            *anchor = place(P, x, c, best, m, QC__PEB_BRIDGE);
-            return 0;
-        }
-        if (nn > 0) { /* hemmed in: later, or left rather than crossed */
-            *anchor = near[0];
-            pb->dropped += (size_t)last;
-            return !last;
-        }
-    }
-    /* cut off from every pebble (another part of the region): a straight stitch */
-    *anchor = place(P, x, c, a, m, QC__PEB_BRIDGE);
-    return 0;
+    if (across_gap(P, x, m, a, c, gap, anchor) || from_roomiest(P, x, m, a, c, anchor))
+        return 0;
+    return bridge_in(P, x, m, a, c, anchor, last);
 }
 
 static int phase1(pack *P, const qc_skeleton *skel)
@@ -473,22 +519,19 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
     const qc__pebbles *pb = P->pb;
     qc_vec2 x = pb->c[i];
     double ri = pb->r[i];
-    uint32_t r[4], cx, cy;
+    uint32_t j;
     unsigned count = 0;
+    uint32_t r[4], cx, cy;
 
     cell_box(P, x, ri + P->rmax + pb->touch, r);
-    for (cy = r[1]; cy <= r[3]; cy++)
-        for (cx = r[0]; cx <= r[2]; cx++) {
-            uint32_t j = P->head[cy * P->nx + cx];
-            for (; j != QC__PEB_NONE; j = P->next[j]) {
-                double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
-                if (j == i || dx * dx + dy * dy > far * far)
-                    continue;
-                if (count < 3)
-                    ids[count] = j;
-                count++;
-            }
-        }
+    FOR_EACH_PEBBLE(P, r, cx, cy, j) {
+        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
+        if (j == i || dx * dx + dy * dy > far * far)
+            continue;
+        if (count < 3)
+            ids[count] = j;
+        count++;
+    }
     *bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
     return count;
 }
@@ -634,6 +677,50 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
     return lo;
 }
 
+/*
+ * The radius (at most R) at which the circle tangent to j and k on side s,
+ * grown from pebble i, first meets another pebble, in closed form: rings of
+ * cells outwards from i's, until none can hold a pebble the growing circle
+ * (moved at most MOVE_MAX d) reaches before R. -1 in a degenerate case,
+ * where a search by steps must decide.
+ */
+static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, double R)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 ci = pb->c[i], x;
+    double r0 = pb->r[i];
+    uint32_t ring, maxring = P->nx > P->ny ? P->nx : P->ny;
+    uint32_t c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
+    uint32_t c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
+
+    for (ring = 0; ring <= maxring; ring++) {
+        double reach = MOVE_MAX * P->d;
+        uint32_t q;
+        uint32_t r[4], cx, cy;
+
+        if (pair_centre(pb, j, k, R, s, &x))
+            reach = fmin(reach, dist(x, ci));
+        reach += R; /* no pebble farther than this from ci is met */
+        if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
+            break;
+        ring_box(P, c0x, c0y, ring, r);
+        /* the cells on the ring's edge: its inside was walked already */
+        FOR_EACH_PEBBLE_IF(P, r, cx, cy, q, cx + ring == c0x || cx == c0x + ring ||
+                                               cy + ring == c0y || cy == c0y + ring) {
+            double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
+            double far = reach + pb->r[q];
+            if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                continue;
+            rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+            if (rq < 0)
+                return -1;
+            if (rq < R)
+                R = rq;
+        }
+    }
+    return R;
+}
+
 /* Step 2: grows pebble i along the circles tangent to j and k. The first
  * pebble met comes in closed form; near the boundary (or in a degenerate
  * case) a search by steps decides. */
@@ -643,54 +730,19 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
     qc_vec2 ci = pb->c[i], cj = pb->c[j], ck = pb->c[k], x;
     double s = (ck.x - cj.x) * (ci.y - cj.y) - (ck.y - cj.y) * (ci.x - cj.x);
     double r0 = pb->r[i], R = pb->r_grow;
-    uint32_t ring, c0x, c0y, cx, cy, maxring;
-    int general = 0;
+    int done = 0;
 
     if (!(R > r0))
         return 0;
     s = s < 0 ? -1 : 1;
-    c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
-    c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
-    maxring = P->nx > P->ny ? P->nx : P->ny;
-    /* rings of cells outwards, until none can hold a pebble the growing
-     * circle (moved at most MOVE_MAX d) reaches before R */
-    for (ring = 0; ring <= maxring && !general; ring++) {
-        double reach = MOVE_MAX * P->d;
-        if (pair_centre(pb, j, k, R, s, &x))
-            reach = fmin(reach, dist(x, ci));
-        reach += R; /* no pebble farther than this from ci is met */
-        if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
-            break;
-        for (cy = c0y >= ring ? c0y - ring : 0; cy <= c0y + ring && cy < P->ny && !general; cy++)
-            for (cx = c0x >= ring ? c0x - ring : 0; cx <= c0x + ring && cx < P->nx; cx++) {
-                uint32_t q;
-                if (cx + ring != c0x && cx != c0x + ring && cy + ring != c0y && cy != c0y + ring)
-                    continue; /* inside the ring: done already */
-                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
-                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
-                    double far = reach + pb->r[q];
-                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
-                        continue;
-                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
-                    if (rq < 0) {
-                        general = 1;
-                        break;
-                    }
-                    if (rq < R)
-                        R = rq;
-                }
-                if (general)
-                    break;
-            }
-    }
-    if (!general) {
+    R = first_contact(P, i, j, k, s, R);
+    if (R >= 0) {
         R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
-        if (pair_centre(pb, j, k, R, s, &x) &&
-            clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12))
-            general = -1; /* done */
+        done = pair_centre(pb, j, k, R, s, &x) &&
+               clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12);
     }
-    if (general != -1)
+    if (!done)
         R = pair_search(P, i, j, k, s, &x);
     if (!(R > r0 * (1 + 1e-9)) || !same_side(P, ci, x))
         return 0;

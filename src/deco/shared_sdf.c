@@ -10,7 +10,6 @@
 #include <string.h>
 
 #include "deco_internal.h"
-#include "../measure/measure_internal.h"
 
 #define MAX_NODES ((size_t)1 << 22)
 #define NONE UINT32_MAX

@@ -28,7 +28,9 @@ typedef struct dt {
     size_t cav_cap;
     bedge *b;
     size_t b_cap;
-    uint64_t rng;
+    qc_rng rng;       /* the walk's random first edges, two bits a step */
+    uint64_t bits;
+    unsigned nbits;
 } dt;
 
 #define TV(d, t) ((d)->tr + 8 * (size_t)(t))
@@ -90,9 +92,14 @@ static uint32_t locate(dt *d, qc_vec2 p)
 
         if (v[2] == d->inf)
             return t; /* entered across a hull edge p is strictly outside of */
-        d->rng = d->rng * 6364136223846793005u + 1442695040888963407u;
-        r = (uint32_t)(d->rng >> 62); /* a random first edge: the walk ends */
+        if (d->nbits == 0) {
+            d->bits = qc_rng_u64(&d->rng);
+            d->nbits = 32;
+        }
+        r = (uint32_t)(d->bits & 3u); /* a random first edge: the walk ends */
         r = r == 3 ? 0 : r;
+        d->bits >>= 2;
+        d->nbits--;
         for (j = 0; j < 3; j++) {
             uint32_t i = r + j < 3 ? r + j : r + j - 3;
 
@@ -218,7 +225,7 @@ int qc__triangulate(qc_ctx *ctx, const qc_vec2 *q, const uint32_t *orig,
     memset(&d, 0, sizeof d);
     d.q = q;
     d.inf = m;
-    d.rng = 0x853c49e6748fea9bu;
+    qc_rng_seed(&d.rng, 0x853c49e6748fea9bu);
     d.tr = qc__alloc_array(ctx, 8 * cap, sizeof *d.tr);
     d.start = qc__alloc_array(ctx, (size_t)m + 1, sizeof *d.start);
     if (d.tr == NULL || d.start == NULL)

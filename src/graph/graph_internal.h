@@ -4,14 +4,6 @@
 
 #include "internal.h"
 
-/*
- * Stable LSD radix sort of key[0..n) by bits [shift, 64), carrying val[]
- * along when val != NULL. Digits that are equal in every key are skipped.
- * QC_OK or QC_ENOMEM (arrays untouched on failure).
- */
-QC__HIDDEN int qc__radix_sort(qc_ctx *ctx, uint64_t *key, uint32_t *val,
-                              size_t n, unsigned shift);
-
 /* Checks p[0..n) for NaN/inf, coordinates that are 0 or between
  * QC__COORD_MIN and QC__COORD_MAX mm in magnitude, and n < 2^31: QC_OK,
  * QC_ERANGE or QC_ELIMIT. */

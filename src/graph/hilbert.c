@@ -6,28 +6,6 @@
 
 #define HBITS 16u
 
-/* Index of cell (x, y) along the curve; branch-free rotations (the
- * quadrant bits are random for scattered input). */
-static uint64_t hilbert_d(uint32_t x, uint32_t y)
-{
-    uint32_t s;
-    uint64_t d = 0;
-
-    for (s = 1u << (HBITS - 1); s > 0; s >>= 1) {
-        uint32_t rx = (x & s) != 0, ry = (y & s) != 0;
-        uint32_t swap = (uint32_t)0 - (ry ^ 1u), flip = swap & ((uint32_t)0 - rx);
-        uint32_t t;
-
-        d += (uint64_t)s * s * ((3u * rx) ^ ry);
-        x ^= flip; /* only the bits below s matter from here on */
-        y ^= flip;
-        t = (x ^ y) & swap;
-        x ^= t;
-        y ^= t;
-    }
-    return d;
-}
-
 int qc__hilbert_order(qc_ctx *ctx, const qc_vec2 *p, const uint32_t *idx,
                       size_t m, uint32_t *out)
 {
@@ -59,7 +37,7 @@ int qc__hilbert_order(qc_ctx *ctx, const qc_vec2 *p, const uint32_t *idx,
         uint32_t hx = fx >= top ? (uint32_t)top : fx > 0.0 ? (uint32_t)fx : 0;
         uint32_t hy = fy >= top ? (uint32_t)top : fy > 0.0 ? (uint32_t)fy : 0;
 
-        key[i] = hilbert_d(hx, hy) << 32 | (uint64_t)i;
+        key[i] = qc__hilbert_key(hx, hy, HBITS) << 32 | (uint64_t)i;
     }
     if (qc__radix_sort(ctx, key, NULL, m, 32) < 0) {
         qc__free(ctx, key, m * sizeof *key);

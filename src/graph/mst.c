@@ -186,50 +186,25 @@ static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
     return QC_OK;
 }
 
-static uint32_t find(uint32_t *parent, uint32_t x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 /* Kruskal over the sorted e[0..m): tree edges to out (n - 1 of them). */
 static int kruskal(qc_ctx *ctx, const qc_edge *e, size_t m, size_t n,
                    qc_edges *out)
 {
     uint32_t *parent = qc__alloc_array(ctx, n, sizeof *parent);
-    uint32_t *size = qc__alloc_array(ctx, n, sizeof *size);
     size_t i, got = 0;
-    int rc = QC_ENOMEM;
 
-    if (parent == NULL || size == NULL)
-        goto out_free;
-    for (i = 0; i < n; i++)
-        parent[i] = (uint32_t)i, size[i] = 1;
+    if (parent == NULL)
+        return qc__fail(ctx, QC_ENOMEM, "mst: out of memory for %lu points",
+                        (unsigned long)n);
+    qc__uf_init(parent, n);
     for (i = 0; i < m && got + 1 < n; i++) {
-        uint32_t ra = find(parent, e[i].a), rb = find(parent, e[i].b);
-
-        if (ra == rb)
+        if (!qc__uf_union(parent, e[i].a, e[i].b))
             continue;
-        if (size[ra] < size[rb]) {
-            uint32_t t = ra;
-            ra = rb;
-            rb = t;
-        }
-        parent[rb] = ra;
-        size[ra] += size[rb];
         out->e[out->n++] = e[i];
         got++;
     }
-    rc = QC_OK;
-out_free:
     qc__free(ctx, parent, n * sizeof *parent);
-    qc__free(ctx, size, n * sizeof *size);
-    return rc < 0 ? qc__fail(ctx, rc, "mst: out of memory for %lu points",
-                             (unsigned long)n)
-                  : rc;
+    return QC_OK;
 }
 
 static int mst_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)

@@ -38,6 +38,8 @@ static int next_line(reader *r)
     return 1;
 }
 
+/* A blank within a line: a CR or form feed there is an error, not a
+ * separator (so not qc__is_space). */
 static int is_space(char c)
 {
     return c == ' ' || c == '\t';

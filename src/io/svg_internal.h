@@ -111,7 +111,6 @@ QC__HIDDEN int qc__svg_check_number(const qc__svg_where *w, double v, const char
 /* QC_EFORMAT: "svg line L, <elem attr> char K: what, found "text"" */
 QC__HIDDEN int qc__svg_syntax(const qc__svg_where *w, const char *s, size_t n, size_t at,
                               const char *what);
-QC__HIDDEN int qc__svg_is_space(char c);
 /* Skips white space and at most one comma (SVG comma-wsp); returns 1 when
  * a comma was skipped. */
 QC__HIDDEN int qc__svg_skip_sep(const char *s, size_t n, size_t *pos);

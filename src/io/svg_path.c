@@ -10,10 +10,6 @@
 
 #include "svg_internal.h"
 
-int qc__svg_is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
-}
 
 static int is_digit(char c)
 {
@@ -25,12 +21,12 @@ int qc__svg_skip_sep(const char *s, size_t n, size_t *pos)
     size_t i = *pos;
     int comma = 0;
 
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     if (i < n && s[i] == ',') {
         comma = 1;
         i++;
-        while (i < n && qc__svg_is_space(s[i]))
+        while (i < n && qc__is_space(s[i]))
             i++;
     }
     *pos = i;
@@ -384,7 +380,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
     p.s = d;
     p.n = n;
     p.out = out;
-    while (p.i < n && qc__svg_is_space(d[p.i]))
+    while (p.i < n && qc__is_space(d[p.i]))
         p.i++;
     if (p.i >= n)
         return QC_OK; /* empty data draws nothing */
@@ -394,7 +390,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
         double a[7];
         char up;
 
-        while (p.i < n && qc__svg_is_space(d[p.i]))
+        while (p.i < n && qc__is_space(d[p.i]))
             p.i++;
         if (p.i >= n)
             break;
@@ -403,7 +399,7 @@ int qc__svg_parse_path(const qc__svg_where *w, const char *d, size_t n, qc_path 
             return qc__svg_syntax(w, d, n, p.i, "expected a path command letter");
         p.i++;
         up = (char)(cmd >= 'a' ? cmd - 'a' + 'A' : cmd);
-        while (p.i < n && qc__svg_is_space(d[p.i]))
+        while (p.i < n && qc__is_space(d[p.i]))
             p.i++;
         if (up == 'Z') {
             QC__TRY(apply(&p, cmd, a));

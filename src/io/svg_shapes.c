@@ -45,11 +45,11 @@ static int name_is(const walker *k, const char *name)
 
 static void trim(const char **s, size_t *n)
 {
-    while (*n > 0 && qc__svg_is_space(**s)) {
+    while (*n > 0 && qc__is_space(**s)) {
         (*s)++;
         (*n)--;
     }
-    while (*n > 0 && qc__svg_is_space((*s)[*n - 1]))
+    while (*n > 0 && qc__is_space((*s)[*n - 1]))
         (*n)--;
 }
 
@@ -126,7 +126,7 @@ static int transform(walker *k, const char *s, size_t n, qc__svg_mat *out)
 
     *out = qc__svg_mat_identity();
     w->attr = "transform";
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     while (i < n) {
         size_t j = i, f, at;
@@ -142,12 +142,12 @@ static int transform(walker *k, const char *s, size_t n, qc__svg_mat *out)
         if (f == sizeof fns / sizeof fns[0])
             return qc__svg_syntax(w, s, n, i,
                                   "expected matrix, translate, scale, rotate, skewX or skewY");
-        while (j < n && qc__svg_is_space(s[j]))
+        while (j < n && qc__is_space(s[j]))
             j++;
         if (j >= n || s[j] != '(')
             return qc__svg_syntax(w, s, n, j, "expected '('");
         j++;
-        while (j < n && qc__svg_is_space(s[j]))
+        while (j < n && qc__is_space(s[j]))
             j++;
         while (j < n && s[j] != ')') {
             if (na > 0)
@@ -157,7 +157,7 @@ static int transform(walker *k, const char *s, size_t n, qc__svg_mat *out)
                 return qc__svg_syntax(w, s, n, at, na == 6 ? "expected ')'" : "expected a number");
             QC__TRY(qc__svg_check_number(w, a[na], s, n, at));
             na++;
-            while (j < n && qc__svg_is_space(s[j]))
+            while (j < n && qc__is_space(s[j]))
                 j++;
         }
         if (j >= n)
@@ -351,7 +351,7 @@ static int poly(walker *k, int closed)
     s = a->value;
     n = a->value_len;
     k->w.attr = "points";
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     while (i < n) {
         size_t at = i;

@@ -52,7 +52,7 @@ int qc__svg_length(const qc__svg_where *w, const char *s, size_t n, int axis, do
     size_t i = 0, k, at;
     double v;
 
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     at = i;
     if (!qc__scan_number(s, n, &i, &v))
@@ -72,7 +72,7 @@ int qc__svg_length(const qc__svg_where *w, const char *s, size_t n, int axis, do
                 break;
             }
     }
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     if (i < n)
         return qc__svg_syntax(w, s, n, i, "expected a unit px, mm, cm, in, pt, pc or %");
@@ -92,7 +92,7 @@ static int root_size(qc__svg_where *w, const qc__xml *x, const char *name, doubl
     *given = 0;
     if (a == NULL)
         return QC_OK;
-    while (i < a->value_len && qc__svg_is_space(a->value[i]))
+    while (i < a->value_len && qc__is_space(a->value[i]))
         i++;
     if (i == a->value_len || strcmp(a->value + i, "auto") == 0 ||
         memchr(a->value, '%', a->value_len) != NULL)
@@ -119,7 +119,7 @@ static int view_box(qc__svg_where *w, const qc__xml *x, double vb[4], int *given
     s = a->value;
     n = a->value_len;
     w->attr = "viewBox";
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     for (k = 0; k < 4; k++) {
         size_t at;
@@ -131,7 +131,7 @@ static int view_box(qc__svg_where *w, const qc__xml *x, double vb[4], int *given
             return qc__svg_syntax(w, s, n, at, "expected 4 numbers");
         QC__TRY(qc__svg_check_number(w, vb[k], s, n, at));
     }
-    while (i < n && qc__svg_is_space(s[i]))
+    while (i < n && qc__is_space(s[i]))
         i++;
     if (i < n)
         return qc__svg_syntax(w, s, n, i, "expected the end after 4 numbers");
@@ -156,13 +156,13 @@ static int fit(qc__svg_where *w, const qc__xml *x, const double vb[4], double vw
         size_t n = a->value_len, i = 0, j;
 
         w->attr = "preserveAspectRatio";
-        while (i < n && qc__svg_is_space(s[i]))
+        while (i < n && qc__is_space(s[i]))
             i++;
         if (n - i >= 5 && memcmp(s + i, "defer", 5) == 0)
-            for (i += 5; i < n && qc__svg_is_space(s[i]); i++)
+            for (i += 5; i < n && qc__is_space(s[i]); i++)
                 ;
         j = i;
-        while (j < n && !qc__svg_is_space(s[j]))
+        while (j < n && !qc__is_space(s[j]))
             j++;
         if (j - i == 4 && memcmp(s + i, "none", 4) == 0) {
             none = 1;
@@ -182,16 +182,16 @@ static int fit(qc__svg_where *w, const qc__xml *x, const double vb[4], double vw
         } else {
             return qc__svg_syntax(w, s, n, i, "expected none or xMinYMin ... xMaxYMax");
         }
-        for (i = j; i < n && qc__svg_is_space(s[i]); i++)
+        for (i = j; i < n && qc__is_space(s[i]); i++)
             ;
         j = i;
-        while (j < n && !qc__svg_is_space(s[j]))
+        while (j < n && !qc__is_space(s[j]))
             j++;
         if (j - i == 5 && memcmp(s + i, "slice", 5) == 0)
             slice = 1;
         else if (!(j - i == 4 && memcmp(s + i, "meet", 4) == 0) && j > i)
             return qc__svg_syntax(w, s, n, i, "expected meet or slice");
-        for (i = j; i < n && qc__svg_is_space(s[i]); i++)
+        for (i = j; i < n && qc__is_space(s[i]); i++)
             ;
         if (i < n)
             return qc__svg_syntax(w, s, n, i, "unexpected text");

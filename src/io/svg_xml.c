@@ -63,11 +63,6 @@ unsigned long qc__xml_line_at(qc__xml *x, size_t at)
     return x->line_no;
 }
 
-static int is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
-}
-
 static int name_start(unsigned char c)
 {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == ':' ||
@@ -235,7 +230,7 @@ static int text(qc__xml *x)
     size_t i = x->pos;
 
     for (; i < x->len && x->buf[i] != '<'; i++) {
-        if (x->depth == 0 && !is_space(x->buf[i]))
+        if (x->depth == 0 && !qc__is_space(x->buf[i]))
             return fail_at(x, i, x->root_done ? "text after the root element"
                                               : "text before the root element");
         if (x->buf[i] == '&') {
@@ -337,7 +332,7 @@ static int attributes(qc__xml *x, int *self_close)
         char q;
         qc__xml_attr *a;
 
-        while (i < x->len && is_space(x->buf[i])) {
+        while (i < x->len && qc__is_space(x->buf[i])) {
             i++;
             ws = 1;
         }
@@ -375,12 +370,12 @@ static int attributes(qc__xml *x, int *self_close)
         a->name = x->buf + i;
         a->name_len = nlen;
         i += nlen;
-        while (i < x->len && is_space(x->buf[i]))
+        while (i < x->len && qc__is_space(x->buf[i]))
             i++;
         if (i >= x->len || x->buf[i] != '=')
             return fail_at(x, i, "expected '=' after an attribute name");
         i++;
-        while (i < x->len && is_space(x->buf[i]))
+        while (i < x->len && qc__is_space(x->buf[i]))
             i++;
         if (i >= x->len || (x->buf[i] != '"' && x->buf[i] != '\''))
             return fail_at(x, i, "expected a quoted attribute value");
@@ -500,7 +495,7 @@ static int end_tag(qc__xml *x)
                         qc__xml_line(x, at), (unsigned long)at, (int)(nlen > 40 ? 40 : nlen),
                         x->buf + at + 2, (int)(o->len > 40 ? 40 : o->len), o->name,
                         qc__xml_line(x, o->at));
-    while (i < x->len && is_space(x->buf[i]))
+    while (i < x->len && qc__is_space(x->buf[i]))
         i++;
     if (i >= x->len || x->buf[i] != '>')
         return fail_at(x, at, "malformed end tag");

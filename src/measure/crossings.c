@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "measure_internal.h"
+#include "internal.h"
 
 #define MAX_CELLS ((size_t)1 << 20)
 

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "measure_internal.h"
+#include "internal.h"
 
 #define MAX_CELLS ((size_t)1 << 22)
 #define FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */

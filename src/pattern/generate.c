@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "internal.h"
-#include "../region/region_index.h"
+#include "region_index.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */

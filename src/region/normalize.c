@@ -18,33 +18,19 @@ static size_t ring_start(const qc_region *r, size_t k)
     return k ? r->ring_end[k - 1] : 0;
 }
 
-static size_t ring_of(const qc_region *r, size_t vertex)
-{
-    size_t lo = 0, hi = r->nrings - 1;
-
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (r->ring_end[mid] > vertex)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return lo;
-}
-
 static int check_finite(qc_ctx *ctx, const qc_region *r)
 {
     size_t i;
 
     for (i = 0; i < r->nv; i++) {
         qc_vec2 p = r->v[i];
+        size_t ring = qc__region_ring_of(r, i);
         if (!(fabs(p.x) <= MAX_COORD) || !(fabs(p.y) <= MAX_COORD))
             return qc__fail(ctx, QC_ERANGE,
                             "ring %lu vertex %lu is (%g, %g): coordinates must be finite "
                             "and within %g mm",
-                            (unsigned long)ring_of(r, i) + 1,
-                            (unsigned long)(i - ring_start(r, ring_of(r, i))) + 1, p.x, p.y,
-                            MAX_COORD);
+                            (unsigned long)ring + 1, (unsigned long)(i - ring_start(r, ring)) + 1,
+                            p.x, p.y, MAX_COORD);
     }
     return QC_OK;
 }
@@ -116,7 +102,7 @@ static int adjacent_fold(qc_vec2 a, qc_vec2 b, qc_vec2 d)
 
 static int report_crossing(qc_ctx *ctx, const qc_region *r, uint32_t e, uint32_t f)
 {
-    size_t re = ring_of(r, e), rf = ring_of(r, f);
+    size_t re = qc__region_ring_of(r, e), rf = qc__region_ring_of(r, f);
     qc_vec2 at = r->v[e];
 
     if (re == rf)

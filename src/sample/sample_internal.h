@@ -2,7 +2,7 @@
 #ifndef QC_SAMPLE_INTERNAL_H
 #define QC_SAMPLE_INTERNAL_H
 
-#include "../region/region_index.h"
+#include "region_index.h"
 
 /* Lattice points of kind inside the index's region, margin from its edges,
  * spacing d, the lattice centred on the region's box. Appends to out. */

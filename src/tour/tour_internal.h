@@ -16,14 +16,6 @@
 #define QC__TSP_LEAF 8          /* points (or tour edges) per leaf of a box tree */
 #define QC__TSP_MAX_LEVELS 40
 
-/* ---- sorting (tsp_prep.c) ---- */
-
-/* Stable LSD radix sort of key[0..n) by bits [lo_bit, 64), carrying val[]
- * along when val != NULL; bytes equal in every key are skipped. QC_OK or
- * QC_ENOMEM (the arrays are then unchanged). */
-QC__HIDDEN int qc__tsp_radix(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n,
-                             unsigned lo_bit);
-
 /* ---- box trees (knn.c) ---- */
 
 typedef struct qc__box {

@@ -22,26 +22,10 @@ typedef struct greedy {
     size_t edges;
 } greedy;
 
-static uint32_t find(uint32_t *parent, uint32_t x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 static void try_link(greedy *g, uint32_t u, uint32_t v)
 {
-    uint32_t ru, rv;
-
-    if (g->deg[u] >= 2 || g->deg[v] >= 2)
+    if (g->deg[u] >= 2 || g->deg[v] >= 2 || !qc__uf_union(g->parent, u, v))
         return;
-    ru = find(g->parent, u);
-    rv = find(g->parent, v);
-    if (ru == rv)
-        return;
-    g->parent[ru] = rv;
     g->adj[2 * u + g->deg[u]++] = v;
     g->adj[2 * v + g->deg[v]++] = u;
     g->edges++;
@@ -93,11 +77,11 @@ static int greedy_pass(greedy *g, const uint32_t *id, size_t c, const qc_vec2 *p
 
             if (b < a && listed(nb + (size_t)b * stride, k, (uint32_t)a))
                 continue;
-            if (id != NULL && find(g->parent, u) == find(g->parent, v))
+            if (id != NULL && qc__uf_find(g->parent, u) == qc__uf_find(g->parent, v))
                 continue;
             key[nkey++] = edge_key(pts, (uint32_t)a, b, a * k + j);
         }
-    rc = qc__tsp_radix(ctx, key, NULL, nkey, 32);
+    rc = qc__radix_sort(ctx, key, NULL, nkey, 32);
     for (i = 0; i < nkey && rc == QC_OK; i++) {
         size_t slot = (uint32_t)key[i];
         uint32_t x = (uint32_t)(slot / k), y = nb[(size_t)x * stride + slot % k];
@@ -207,7 +191,6 @@ static void lay_out(greedy *g)
 int qc__tsp_greedy(qc__tsp *s)
 {
     greedy g;
-    uint32_t u;
     int rc;
 
     memset(&g, 0, sizeof g);
@@ -221,8 +204,7 @@ int qc__tsp_greedy(qc__tsp *s)
         goto out;
     }
     memset(g.deg, 0, s->m);
-    for (u = 0; u < s->m; u++)
-        g.parent[u] = u;
+    qc__uf_init(g.parent, s->m);
     rc = greedy_pass(&g, NULL, s->m, s->q, s->nb, s->k,
                      s->k < QC__TSP_GREEDY_K ? s->k : QC__TSP_GREEDY_K);
     if (rc == QC_OK)

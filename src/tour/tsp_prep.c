@@ -4,86 +4,7 @@
  * index)), so duplicates become neighbours and are grouped, and the
  * distinct points are renumbered in curve order for locality.
  */
-#include <string.h>
-
 #include "tour_internal.h"
-
-int qc__tsp_radix(qc_ctx *ctx, uint64_t *key, uint32_t *val, size_t n, unsigned lo_bit)
-{
-    uint64_t *k0 = key, *k1;
-    uint32_t *v0 = val, *v1 = NULL;
-    size_t count[256], i;
-    unsigned shift;
-
-    if (n < 2)
-        return QC_OK;
-    k1 = qc__alloc_array(ctx, n, sizeof *k1);
-    if (val != NULL)
-        v1 = qc__alloc_array(ctx, n, sizeof *v1);
-    if (k1 == NULL || (val != NULL && v1 == NULL)) {
-        qc__free(ctx, k1, n * sizeof *k1);
-        qc__free(ctx, v1, n * sizeof *v1);
-        return qc__fail(ctx, QC_ENOMEM, "tsp: out of memory sorting %lu keys",
-                        (unsigned long)n);
-    }
-    for (shift = lo_bit; shift < 64; shift += 8) {
-        size_t sum = 0;
-        uint64_t *kt;
-        uint32_t *vt;
-
-        memset(count, 0, sizeof count);
-        for (i = 0; i < n; i++)
-            count[(k0[i] >> shift) & 255u]++;
-        if (count[(k0[0] >> shift) & 255u] == n)
-            continue; /* this byte is the same in every key */
-        for (i = 0; i < 256; i++) {
-            size_t c = count[i];
-            count[i] = sum;
-            sum += c;
-        }
-        for (i = 0; i < n; i++) {
-            size_t at = count[(k0[i] >> shift) & 255u]++;
-            k1[at] = k0[i];
-            if (v0 != NULL)
-                v1[at] = v0[i];
-        }
-        kt = k0, k0 = k1, k1 = kt;
-        vt = v0, v0 = v1, v1 = vt;
-    }
-    if (k0 != key) { /* the result sits in the scratch arrays */
-        memcpy(key, k0, n * sizeof *key);
-        if (val != NULL)
-            memcpy(val, v0, n * sizeof *val);
-        k1 = k0;
-        v1 = v0;
-    }
-    qc__free(ctx, k1, n * sizeof *k1);
-    if (val != NULL)
-        qc__free(ctx, v1, n * sizeof *v1);
-    return QC_OK;
-}
-
-/* Position of cell (x, y) of a 2^32 x 2^32 grid along the Hilbert curve. */
-static uint64_t hilbert64(uint32_t x, uint32_t y)
-{
-    uint64_t d = 0;
-    uint32_t s;
-
-    for (s = 1u << 31; s > 0; s >>= 1) {
-        uint32_t rx = (x & s) != 0, ry = (y & s) != 0;
-
-        d += (uint64_t)s * s * ((3u * rx) ^ ry);
-        if (ry == 0) {
-            uint32_t t;
-            if (rx) {
-                x = ~x; /* only the bits below s matter from here on */
-                y = ~y;
-            }
-            t = x, x = y, y = t;
-        }
-    }
-    return d;
-}
 
 static uint32_t cell(double v, double lo, double scale)
 {
@@ -175,10 +96,10 @@ int qc__tsp_prepare(qc__tsp *s)
         goto out;
     }
     for (i = 0; i < n; i++) {
-        key[i] = hilbert64(cell(p[i].x, x0, sx), cell(p[i].y, y0, sy));
+        key[i] = qc__hilbert_key(cell(p[i].x, x0, sx), cell(p[i].y, y0, sy), 32);
         s->sorted[i] = (uint32_t)i;
     }
-    rc = qc__tsp_radix(s->ctx, key, s->sorted, n, 0);
+    rc = qc__radix_sort(s->ctx, key, s->sorted, n, 0);
     if (rc < 0)
         goto out;
     m = 0;

@@ -1,7 +1,8 @@
 /*
  * A spatial index over a region's boundary edges, for the many inside and
  * near-the-boundary questions sampling asks (10^6 points against a
- * 10^5-vertex outline). Not installed.
+ * 10^5-vertex outline); the region, sample and pattern stages share it, so
+ * it lives in the core. Not installed.
  */
 #ifndef QC_REGION_INDEX_H
 #define QC_REGION_INDEX_H

@@ -1,12 +1,13 @@
 /*
  * Segments binned in a uniform grid (compressed rows), for the "which
- * segments lie near here" questions of echo joins, spirals and ring
- * repair: each segment goes into every cell its box meets.
+ * segments lie near here" questions of echo joins, spirals, ring repair
+ * and the self-crossing count: each segment goes into every cell its box
+ * meets.
  */
 #include <math.h>
 #include <string.h>
 
-#include "deco_internal.h"
+#include "internal.h"
 
 static size_t clamp_cell(double v, double lo, double cell, size_t count)
 {

@@ -1,9 +1,10 @@
-/* Rasterising regions (scanline inside masks) and the 1-D exact distance transform. */
+/* Rasterising regions (scanline inside masks) and the 1-D exact distance
+ * transform: the measures and the echo/spiral offsetting (deco/sdf.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "measure_internal.h"
+#include "internal.h"
 
 /* Rows j whose y = y0 + j h satisfies lo <= y < hi, clamped to [0, ny). */
 static void row_span(double lo, double hi, double y0, double h, size_t ny, size_t *j0,
