@@ -121,6 +121,7 @@ int cmd_convert(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_list(int argc, char **argv);
 int cmd_job(int argc, char **argv);
+int cmd_quilt(int argc, char **argv);
 int cmd_motifs(int argc, char **argv);
 /* USB (usb_*.c, or usb_none.c when built with USB=0). */
 int cmd_devices(int argc, char **argv);
