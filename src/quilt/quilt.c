@@ -201,9 +201,9 @@ static int run(quilter *q)
     q->out->patch = (qc_patch_result *)qc__alloc_array(q->ctx, n, sizeof *q->out->patch);
     q->out->order = (uint32_t *)qc__alloc_array(q->ctx, n, sizeof *q->out->order);
     q->sewn = (unsigned char *)qc__alloc_array(q->ctx, n, 1);
+    q->out->npatch = n; /* the sizes qc_quilt_result_free frees (NULL frees nothing) */
     if (q->out->patch == NULL || q->out->order == NULL || q->sewn == NULL)
         return QC_ENOMEM;
-    q->out->npatch = n;
     memset(q->out->patch, 0, n * sizeof *q->out->patch);
     memset(q->sewn, 0, n);
     for (i = 0; i < n; i++)

@@ -245,9 +245,9 @@ int qc__seams_build(qc_ctx *ctx, const qc_patches *ps, double tol, qc__seams *ou
     r = (vref *)qc__alloc_array(ctx, n, sizeof *r);
     id = (uint32_t *)qc__alloc_array(ctx, n, sizeof *id);
     out->patch_end = (size_t *)qc__alloc_array(ctx, ps->n, sizeof *out->patch_end);
+    out->npatch = out->patch_end != NULL ? ps->n : 0;
     if (r == NULL || id == NULL || out->patch_end == NULL)
         goto out_free;
-    out->npatch = ps->n;
     for (i = 0; i < ps->n; i++)
         for (j = 0; j < ps->p[i].region.nv; j++, g++) {
             r[g].p = ps->p[i].region.v[j];

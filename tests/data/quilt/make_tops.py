@@ -72,7 +72,7 @@ def log_cabin():
     x0, y0, x1, y1 = 5.0, 5.0, 7.0, 7.0
     out = rect('hearth', x0, y0, 2, 2, '#c0392b', 'hearth')
     k = 0
-    while x1 - x0 < 12:
+    while k < 20:
         side = k % 4
         fill = '#f5f0e1' if side < 2 else '#2c3e50'
         if side == 0:
