@@ -48,6 +48,9 @@ double cli_units_mm(const char *units);
 /* A region from a built-in shape spec ("rect:8x8") or an SVG file, in mm,
  * normalized, moved so its bounding box starts at (0, 0). */
 int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out);
+/* The same, but an SVG is read as a quilt top: every patch's rings in one
+ * region (not normalized: patches share seams), moved to the origin. */
+int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out);
 
 /* Monotonic milliseconds. */
 double cli_now_ms(void);

@@ -171,7 +171,7 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
     qc_region r;
     size_t i, outside = 0;
     double gap;
-    int rc = cli_load_region(ctx, o->region, cli_units_mm(o->units), &r);
+    int rc = cli_load_top(ctx, o->region, cli_units_mm(o->units), &r);
 
     if (rc != CLI_OK)
         return rc;

@@ -282,22 +282,14 @@ static int outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out)
     return CLI_OK;
 }
 
-/* PAT refuses negative coordinates: move everything up and right if needed. */
+/* The top's lower-left corner becomes the origin, as for a block (PAT
+ * refuses negative coordinates; the patterns stay inside the top). */
 static void shift_positive(qc_quilt_result *res, qc_region *out)
 {
-    double minx = 0, miny = 0;
+    qc_bbox b = qc_region_bbox(out);
+    double minx = b.min.x, miny = b.min.y;
     size_t i;
 
-    for (i = 0; i < out->nv; i++) {
-        minx = fmin(minx, out->v[i].x);
-        miny = fmin(miny, out->v[i].y);
-    }
-    for (i = 0; i < res->path.npt; i++) {
-        minx = fmin(minx, res->path.pt[i].x);
-        miny = fmin(miny, res->path.pt[i].y);
-    }
-    if (minx == 0 && miny == 0)
-        return;
     qc_region_translate(out, -minx, -miny);
     for (i = 0; i < res->path.npt; i++) {
         res->path.pt[i].x -= minx;

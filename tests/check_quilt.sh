@@ -1,0 +1,94 @@
+#!/bin/sh
+# quiltc quilt end to end: a pieced top sewn as one line, a plan choosing
+# families, --join jump, and every bad plan or top refused in one line
+# with no file written.
+. tests/cli_lib.sh
+ROOT=$(pwd)
+NINE=$ROOT/tests/data/quilt/nine-patch.svg
+STAR=$ROOT/examples/sawtooth-star.svg
+
+# G00 lines of a .pat: the pieces (the first line always is one).
+pieces() { grep -c 'G00' "$1"; }
+
+one_line() {
+    "$QC" quilt "$NINE" && [ "$(pieces quilt.pat)" -eq 1 ] && grep -q 'id="ditch"' quilt.svg &&
+        grep -q 'id="region"' quilt.svg && "$QC" check quilt.pat >/dev/null &&
+        "$QC" check quilt.pat --region "$NINE" --units in >/dev/null
+}
+check nine_patch_is_one_line_with_outlines_and_ditch one_line
+
+plan_families() {
+    "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o star.pat --stats \
+        2>stats.json && [ "$(pieces star.pat)" -eq 1 ] && python3 -c '
+import json
+s = json.load(open("stats.json"))
+want = {"centre": ("rules[0]", "pebbling")}
+for p in s["patches"]:
+    if p["id"] == "centre": assert (p["rule"], p["family"]) == ("rules[0]", "pebbling"), p
+    elif p["id"].startswith("point-"): assert (p["rule"], p["family"]) == ("rules[1]", "echo"), p
+    elif p["id"].startswith("goose-"): assert (p["rule"], p["family"]) == ("rules[2]", "stipple"), p
+    else: assert (p["rule"], p["family"]) == ("rules[3]", "spiral"), p
+    assert p["length_mm"] > 0 and p["order"] >= 1, p
+assert s["quilted"] == 17 and s["unquilted"] == 0 and s["jumps"] == 0 and s["pieces"] == 1, s
+assert s["ditch_mm"] > 0 and s["sewn_mm"] > s["pattern_mm"], s
+'
+}
+check plan_rules_choose_each_patch_family plan_families
+
+none_rule() {
+    printf '[{"match": {"fill": "#F5F0E1"}, "family": "none"}, {"family": "echo"}]' >p.json &&
+        "$QC" quilt "$NINE" --plan p.json -o n.pat --stats 2>stats.json && python3 -c '
+import json
+s = json.load(open("stats.json"))
+assert s["quilted"] == 5 and s["unquilted"] == 4 and s["pieces"] == 1, s
+assert all(p["family"] == ("echo" if p["id"] in ("p00", "p02", "p11", "p20", "p22") else "none")
+           for p in s["patches"]), s
+'
+}
+check family_none_leaves_light_patches_unquilted none_rule
+
+same_bytes() {
+    "$QC" quilt "$STAR" -o a.pat --seed 5 && "$QC" quilt "$STAR" -o b.pat --seed 5 &&
+        cmp a.pat b.pat && "$QC" quilt "$STAR" -o c.pat --seed 6 && ! cmp -s a.pat c.pat
+}
+check same_seed_same_bytes same_bytes
+
+jump_join() {
+    "$QC" quilt "$NINE" --join jump -o j.pat --tie 0 && [ "$(pieces j.pat)" -eq 9 ]
+}
+check join_jump_starts_a_piece_per_patch jump_join
+
+# A bad plan or top: one line naming the key, exit 2, no file.
+refused() {
+    pattern=$1
+    shift
+    expect_fail 2 "$pattern" "$QC" quilt "$@" -o x.pat -o x.svg && [ ! -e x.pat ] && [ ! -e x.svg ]
+}
+
+plan_case() {
+    printf '%s' "$1" >bad.json
+    refused "$2" "$NINE" --plan bad.json
+}
+check plan_unknown_key plan_case '[{"family": "echo", "colour": "red"}]' 'rules\[0\]\.colour: unknown key'
+check plan_unknown_match_key plan_case '[{"match": {"ID": "p*"}}]' 'rules\[0\]\.match\.ID: unknown key'
+check plan_bad_colour plan_case '[{"match": {"fill": "#12345"}}]' "rules\[0\]\.match\.fill: '#12345' is not a colour"
+check plan_rule_matching_nothing plan_case '[{"match": {"id": "star-*"}, "family": "echo"}, {"family": "stipple"}]' 'rules\[0\] matches no patch'
+check plan_unknown_family plan_case '[{"family": "quilting"}]' 'rules\[0\]\.family: unknown choice'
+check plan_bad_parameter plan_case '[{"params": {"spacing": -1}}]' 'rules\[0\]: spacing -25.4 mm out of range'
+check plan_wrong_type plan_case '[{"match": {"class": 3}}]' 'rules\[0\]\.match\.class: expected a string'
+check plan_not_a_list plan_case '{"rules": []}' 'plan: expected a list'
+check plan_malformed_json plan_case '[{"family": }]' 'malformed JSON at byte'
+
+overlap() {
+    printf '%s\n' '<svg xmlns="http://www.w3.org/2000/svg" width="10in" height="10in" viewBox="0 0 10 10">' \
+        '<rect id="left" x="0" y="0" width="6" height="4"/>' \
+        '<rect id="right" x="5" y="0" width="5" height="4"/></svg>' >o.svg &&
+        refused 'patches id "left" (line 2) and id "right" (line 3) overlap near ([0-9.]*, [0-9.]*) in' o.svg
+}
+check overlapping_patches_name_both overlap
+
+check region_option_refused refused 'not --region' "$NINE" --region rect:8x8
+check bad_join_refused refused "--join: 'seam' is neither ditch nor jump" "$NINE" --join seam
+check missing_top_refused refused 'expected a TOP.svg' --spacing 0.5
+
+finish
