@@ -180,6 +180,8 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
             outside++;
     if (outside > 0)
         finding(t, "%.0f points outside the region", (double)outside, 0);
+    if (qc_plan_segments_outside(&r, p, 0.05, &outside, NULL) == QC_OK && outside > 0)
+        finding(t, "%.0f stitched segments leave the region", (double)outside, 0);
     gap = qc_largest_gap(ctx, &r, p->p, p->n, 0.5, NULL);
     qc_region_free(ctx, &r);
     if (gap < 0)

@@ -87,6 +87,23 @@ overlap() {
 }
 check overlapping_patches_name_both overlap
 
+two_squares() {
+    printf '%s\n' '<svg xmlns="http://www.w3.org/2000/svg" width="10in" height="4in" viewBox="0 0 10 4">' \
+        '<rect x="0" y="0" width="4" height="4"/><rect x="6" y="0" width="4" height="4"/></svg>' >two.svg
+}
+
+pieces_jump() {
+    two_squares && "$QC" generate --region two.svg -o two.pat && [ "$(pieces two.pat)" -eq 2 ] &&
+        "$QC" check two.pat --region two.svg --max-jumps 1 >out.txt && ! grep -q 'leave' out.txt
+}
+check generate_sews_separate_pieces_joined_by_a_jump pieces_jump
+
+gap_segment() {
+    two_squares && printf 'N1G00X1.000Y1.000\r\nN2G01X9.000Y1.000\r\nN3M02\r\n' >gap.pat &&
+        ! "$QC" check gap.pat --region two.svg >out.txt && grep -q '1 stitched segments leave the region' out.txt
+}
+check check_flags_a_segment_across_the_gap gap_segment
+
 check region_option_refused refused 'not --region' "$NINE" --region rect:8x8
 check bad_join_refused refused "--join: 'seam' is neither ditch nor jump" "$NINE" --join seam
 check missing_top_refused refused 'expected a TOP.svg' --spacing 0.5
