@@ -7,5 +7,6 @@ int main(void)
     bench_tour();
     bench_pebbling();
     bench_families();
+    bench_quilt();
     return 0;
 }

@@ -12,6 +12,56 @@
 #include <string.h>
 
 #include "job.h"
+#include "quilt_plan.h"
+
+/* Moves path from its frame (lower-left corner `lo`) to `at`, turned by
+ * rotate degrees about that corner. */
+static void place(block *b, qc_path *path, qc_vec2 lo)
+{
+    double mm = b->pat.mm_per_unit, c = qc_cos(b->rotate * QC_PI / 180);
+    double s = qc_sin(b->rotate * QC_PI / 180);
+    size_t i;
+
+    for (i = 0; i < path->npt; i++) {
+        qc_vec2 p = path->pt[i];
+        p.x -= lo.x;
+        p.y -= lo.y;
+        path->pt[i].x = b->at[0] * mm + c * p.x - s * p.y;
+        path->pt[i].y = b->at[1] * mm + s * p.x + c * p.y;
+    }
+    b->lo.x = b->at[0] * mm;
+    b->lo.y = b->at[1] * mm;
+}
+
+/* A pieced top as a block: quilted as one line in the ditch (its plan's
+ * rules named "job: blocks[i].plan[k]"), its lower-left corner at "at". */
+static int make_top(qc_ctx *ctx, block *b)
+{
+    quilt_plan plan;
+    cli_quilt q;
+    char prefix[48];
+    qc_region drawn = {0};
+    int rc = cli_pattern_finish(ctx, &b->pat);
+
+    memset(&plan, 0, sizeof plan);
+    memset(&q, 0, sizeof q);
+    snprintf(prefix, sizeof prefix, "job: %s.plan", b->where);
+    if (rc == CLI_OK && b->plan != NULL)
+        rc = cli_quilt_plan_parse(&plan, b->plan, &b->pat, prefix);
+    if (rc == CLI_OK)
+        rc = cli_quilt_sew(ctx, &q, b->top, &plan, &b->pat, QC_JOIN_DITCH, b->label);
+    if (rc == CLI_OK)
+        rc = cli_quilt_outlines(ctx, &q.ps, &drawn);
+    if (rc == CLI_OK) {
+        place(b, &q.res.path, qc_region_bbox(&drawn).min);
+        b->path = q.res.path; /* keep the line, free the rest */
+        memset(&q.res.path, 0, sizeof q.res.path);
+    }
+    qc_region_free(ctx, &drawn);
+    cli_quilt_free(ctx, &q);
+    cli_quilt_plan_free(ctx, &plan);
+    return rc;
+}
 
 /* Generates block b in its own frame, then rotates it about its box's
  * lower-left corner and moves that corner to `at`. */
@@ -21,10 +71,12 @@ static int make_block(qc_ctx *ctx, block *b)
     qc_points given = {0};
     qc_motif_set motifs = {0};
     qc_result res = {0};
-    double mm, c, s;
-    size_t i;
-    int rc = cli_pattern_finish(ctx, &b->pat);
+    qc_vec2 origin = {0, 0};
+    int rc;
 
+    if (b->top != NULL)
+        return make_top(ctx, b);
+    rc = cli_pattern_finish(ctx, &b->pat);
     if (rc == CLI_OK)
         rc = cli_pattern_load(ctx, &b->pat, &region, &given);
     if (rc == CLI_OK && b->pat.motifs != NULL)
@@ -33,16 +85,7 @@ static int make_block(qc_ctx *ctx, block *b)
                                     motifs.n ? &motifs : NULL, &res) < 0)
         rc = cli_fail(ctx, b->label, ctx->status);
     if (rc == CLI_OK) {
-        mm = b->pat.mm_per_unit;
-        c = qc_cos(b->rotate * QC_PI / 180);
-        s = qc_sin(b->rotate * QC_PI / 180);
-        for (i = 0; i < res.path.npt; i++) {
-            qc_vec2 p = res.path.pt[i];
-            res.path.pt[i].x = b->at[0] * mm + c * p.x - s * p.y;
-            res.path.pt[i].y = b->at[1] * mm + s * p.x + c * p.y;
-        }
-        b->lo.x = b->at[0] * mm;
-        b->lo.y = b->at[1] * mm;
+        place(b, &res.path, origin);
         b->path = res.path; /* keep the path, free the rest */
         memset(&res.path, 0, sizeof res.path);
     }
@@ -84,19 +127,21 @@ static void sewing_order(block **order, size_t n)
     }
 }
 
-/* One path, a piece per block; moved so nothing is negative (PAT needs that). */
+/* One path, a piece per block; moved so nothing sewn is negative (PAT needs
+ * that). The box is the flattened path's: control points of curves lie
+ * outside the curve and would move the whole quilt. */
 static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
 {
-    double minx = 0, miny = 0;
+    double minx, miny, len;
+    qc_bbox box;
     size_t i;
 
     for (i = 0; i < n; i++)
         if (qc_path_append(ctx, out, &order[i]->path, 0) < 0)
             return cli_fail(ctx, "job", ctx->status);
-    for (i = 0; i < out->npt; i++) {
-        minx = fmin(minx, out->pt[i].x);
-        miny = fmin(miny, out->pt[i].y);
-    }
+    qc_curve_measure(out, 0.01, &len, &box);
+    minx = fmin(0, box.min.x);
+    miny = fmin(0, box.min.y);
     for (i = 0; i < out->npt; i++) {
         out->pt[i].x -= minx;
         out->pt[i].y -= miny;

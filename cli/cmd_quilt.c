@@ -9,7 +9,6 @@
 
 #include "quilt_plan.h"
 
-#define MAX_TOP_BYTES ((size_t)16 << 20)
 #define MAX_PLAN_BYTES ((size_t)1 << 20)
 
 typedef struct quilt_opts {
@@ -151,38 +150,6 @@ static int output_formats(const quilt_opts *q, int *fmt)
     return cli_outputs_distinct(q->out, q->nout);
 }
 
-/* How messages name a patch: its id, else its element number and line. */
-static void patch_name(const qc_patch *p, char *buf, size_t size)
-{
-    if (p->id[0] != '\0')
-        snprintf(buf, size, "id \"%s\" (line %lu)", p->id, p->line);
-    else
-        snprintf(buf, size, "shape %lu (line %lu)", (unsigned long)p->element, p->line);
-}
-
-static int load_top(qc_ctx *ctx, const quilt_opts *q, qc_patches *ps)
-{
-    char *buf = NULL, an[160], bn[160];
-    size_t len, a, b;
-    qc_vec2 at;
-    double u = q->pat.mm_per_unit;
-    int rc = CLI_OK;
-
-    if (cli_read_file(q->top, MAX_TOP_BYTES, &buf, &len) != 0)
-        return CLI_RUNTIME;
-    if (qc_io_read_svg_patches(ctx, buf, len, NULL, ps) < 0)
-        rc = cli_fail(ctx, q->top, ctx->status);
-    free(buf);
-    if (rc == CLI_OK && qc_patches_overlap(ps, 0, &a, &b, &at)) {
-        patch_name(&ps->p[a], an, sizeof an);
-        patch_name(&ps->p[b], bn, sizeof bn);
-        cli_error("%s: patches %s and %s overlap near (%.3f, %.3f) %s", q->top, an, bn,
-                  at.x / u, at.y / u, q->pat.units);
-        rc = CLI_USAGE;
-    }
-    return rc;
-}
-
 static int load_plan(const quilt_opts *q, quilt_plan *plan)
 {
     char *buf = NULL;
@@ -200,86 +167,10 @@ static int load_plan(const quilt_opts *q, quilt_plan *plan)
         free(buf);
         return CLI_USAGE;
     }
-    rc = cli_quilt_plan_parse(plan, root, &q->pat);
-    /* the rules keep pointers to strings in the document: copy them out */
-    if (rc == CLI_OK) {
-        size_t i, k;
-        for (i = 0; i < plan->n && rc == CLI_OK; i++) {
-            plan_rule *r = &plan->rule[i];
-            const char **s[4];
-            s[0] = &r->id;
-            s[1] = &r->cls;
-            s[2] = &r->label;
-            s[3] = &r->pat.motifs;
-            for (k = 0; k < 4; k++)
-                if (*s[k] != NULL && (*s[k] == q->pat.motifs ? 0 : 1)) {
-                    char *d = malloc(strlen(*s[k]) + 1);
-                    if (d == NULL) {
-                        cli_error("out of memory");
-                        rc = CLI_RUNTIME;
-                        break;
-                    }
-                    strcpy(d, *s[k]);
-                    *s[k] = d;
-                }
-        }
-    }
-    cJSON_Delete(root);
     free(buf);
+    rc = cli_quilt_plan_parse(plan, root, &q->pat, "plan: rules");
+    plan->doc = root; /* the rules point into it */
     return rc;
-}
-
-/* The job of every patch: its rule's options, or the command line's. */
-static int make_jobs(qc_ctx *ctx, quilt_opts *q, quilt_plan *plan, const qc_patches *ps,
-                     qc_motif_set *base_motifs, qc_patch_job *jobs, const plan_rule **chosen)
-{
-    size_t i;
-    int rc = cli_pattern_finish(ctx, &q->pat);
-
-    if (rc == CLI_OK && q->pat.motifs != NULL)
-        rc = cli_load_motifs(ctx, q->pat.motifs, base_motifs);
-    for (i = 0; i < plan->n && rc == CLI_OK; i++) {
-        plan_rule *r = &plan->rule[i];
-        rc = cli_pattern_finish(ctx, &r->pat);
-        if (rc == CLI_OK && r->pat.motifs != NULL && !r->none)
-            rc = cli_load_motifs(ctx, r->pat.motifs, &r->motifs);
-    }
-    for (i = 0; i < ps->n && rc == CLI_OK; i++) {
-        plan_rule *r = cli_quilt_plan_match(plan, &ps->p[i]);
-
-        chosen[i] = r;
-        if (r != NULL) {
-            r->matched++;
-            jobs[i].params = r->none ? NULL : &r->pat.params;
-            jobs[i].motifs = r->motifs.n ? &r->motifs : NULL;
-        } else {
-            jobs[i].params = &q->pat.params;
-            jobs[i].motifs = base_motifs->n ? base_motifs : NULL;
-        }
-    }
-    for (i = 0; i < plan->n && rc == CLI_OK; i++)
-        if (plan->rule[i].matched == 0) {
-            cli_error("%s matches no patch of %s", plan->rule[i].where, q->top);
-            rc = CLI_USAGE;
-        }
-    return rc;
-}
-
-/* Every patch outline in one region, to draw. */
-static int outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out)
-{
-    size_t i, k;
-
-    memset(out, 0, sizeof *out);
-    for (i = 0; i < ps->n; i++) {
-        const qc_region *r = &ps->p[i].region;
-        for (k = 0; k < r->nrings; k++) {
-            size_t s = k ? r->ring_end[k - 1] : 0;
-            if (qc_region_add_ring(ctx, out, r->v + s, r->ring_end[k] - s) < 0)
-                return cli_fail(ctx, "quilt", ctx->status);
-        }
-    }
-    return CLI_OK;
 }
 
 /* The top's lower-left corner becomes the origin, as for a block (PAT
@@ -361,29 +252,10 @@ static void print_stats(const qc_patches *ps, const qc_quilt_result *res,
     cJSON_Delete(o);
 }
 
-static void free_plan_strings(quilt_plan *plan, const quilt_opts *q)
-{
-    size_t i;
-
-    for (i = 0; i < plan->n; i++) {
-        plan_rule *r = &plan->rule[i];
-        free((char *)r->id);
-        free((char *)r->cls);
-        free((char *)r->label);
-        if (r->pat.motifs != q->pat.motifs)
-            free((char *)r->pat.motifs);
-    }
-}
-
 static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
 {
-    qc_patches ps = {0};
-    quilt_plan plan = {0};
-    qc_motif_set base_motifs = {0};
-    qc_patch_job *jobs = NULL;
-    const plan_rule **chosen = NULL;
-    qc_quilt_params qp;
-    qc_quilt_result res = {0};
+    quilt_plan plan;
+    cli_quilt top;
     qc_region drawn = {0};
     qc_plan st = {0};
     qc_stitch_params sp;
@@ -391,56 +263,40 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     cli_timer timer;
     int rc = cli_pattern_finish(ctx, &q->pat);
 
+    memset(&plan, 0, sizeof plan);
+    memset(&top, 0, sizeof top);
     cli_timer_start(&timer, ctx);
     ctx->trace = NULL; /* the stages of every patch would repeat: time the whole */
     if (rc == CLI_OK && q->plan_file != NULL)
         rc = load_plan(q, &plan);
-    if (rc == CLI_OK)
-        rc = load_top(ctx, q, &ps);
-    if (rc == CLI_OK) {
-        jobs = calloc(ps.n, sizeof *jobs);
-        chosen = calloc(ps.n, sizeof *chosen);
-        if (jobs == NULL || chosen == NULL) {
-            cli_error("out of memory");
-            rc = CLI_RUNTIME;
-        }
-    }
-    if (rc == CLI_OK)
-        rc = make_jobs(ctx, q, &plan, &ps, &base_motifs, jobs, chosen);
     cli_timer_mark(&timer, "quilt");
-    memset(&qp, 0, sizeof qp);
-    qp.join = q->join;
-    if (rc == CLI_OK && qc_quilt(ctx, &ps, jobs, &qp, &res) < 0)
-        rc = cli_fail(ctx, "quilt", ctx->status);
     if (rc == CLI_OK)
-        rc = outlines(ctx, &ps, &drawn);
+        rc = cli_quilt_sew(ctx, &top, q->top, &plan, &q->pat, q->join, "quilt");
     if (rc == CLI_OK)
-        shift_positive(&res, &drawn);
+        rc = cli_quilt_outlines(ctx, &top.ps, &drawn);
+    if (rc == CLI_OK)
+        shift_positive(&top.res, &drawn);
     cli_timer_mark(&timer, "plan");
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = q->tie;
-    if (rc == CLI_OK && qc_stitch_plan(ctx, &res.path, NULL, &sp, &st) < 0)
+    if (rc == CLI_OK && qc_stitch_plan(ctx, &top.res.path, NULL, &sp, &st) < 0)
         rc = cli_fail(ctx, "stitch plan", ctx->status);
     cli_timer_mark(&timer, "write");
     memset(&io, 0, sizeof io);
     io.region = &drawn;
     io.svg_inches = q->pat.mm_per_unit == 25.4;
     io.feed_mm_min = q->feed;
-    io.travel = &res.ditch;
+    io.travel = &top.res.ditch;
+    io.dxf_outlines = 1;
     if (rc == CLI_OK)
         rc = cli_write_plans(ctx, q->out, fmt, q->nout, &st, &io);
     cli_timer_mark(&timer, NULL);
     if (rc == CLI_OK && q->stats)
-        print_stats(&ps, &res, chosen, &st, &timer);
+        print_stats(&top.ps, &top.res, top.chosen, &st, &timer);
     qc_plan_free(ctx, &st);
     qc_region_free(ctx, &drawn);
-    qc_quilt_result_free(ctx, &res);
-    free(jobs);
-    free(chosen);
-    qc_motif_set_free(ctx, &base_motifs);
-    free_plan_strings(&plan, q);
+    cli_quilt_free(ctx, &top);
     cli_quilt_plan_free(ctx, &plan);
-    qc_patches_free(ctx, &ps);
     return rc;
 }
 

@@ -91,6 +91,8 @@ int cli_job_resolve_names(job *j, const char *file, cli_job_names *o)
         block *b = &j->blocks[i];
         if (b->pat.region != NULL && (b->pat.region = beside(o, dir, b->pat.region)) == NULL)
             goto oom;
+        if (b->top != NULL && (b->top = beside(o, dir, b->top)) == NULL)
+            goto oom;
         if (b->pat.motifs != NULL &&
             (b->pat.motifs = motifs_beside(o, dir, b->pat.motifs)) == NULL)
             goto oom;

@@ -51,7 +51,7 @@ static int take_match(plan_rule *r, const cJSON *m)
 {
     static const char *const known[] = {"id", "class", "label", "fill", NULL};
     const char *const *k;
-    char where[64];
+    char where[96];
     int rc;
 
     snprintf(where, sizeof where, "%s.match", r->where);
@@ -145,7 +145,8 @@ static int take_rule(plan_rule *r, const cJSON *o)
     return CLI_OK;
 }
 
-int cli_quilt_plan_parse(quilt_plan *p, const cJSON *root, const cli_pattern_opts *base)
+int cli_quilt_plan_parse(quilt_plan *p, const cJSON *root, const cli_pattern_opts *base,
+                         const char *prefix)
 {
     size_t i;
     int rc;
@@ -153,7 +154,7 @@ int cli_quilt_plan_parse(quilt_plan *p, const cJSON *root, const cli_pattern_opt
     memset(p, 0, sizeof *p);
     if (!cJSON_IsArray(root) || cJSON_GetArraySize(root) < 1 ||
         cJSON_GetArraySize(root) > MAX_PLAN_RULES)
-        return bad("plan", "", "expected a list of 1 to 256 rules");
+        return bad(prefix, "", "expected a list of 1 to 256 rules");
     p->n = (size_t)cJSON_GetArraySize(root);
     p->rule = calloc(p->n, sizeof *p->rule);
     if (p->rule == NULL) {
@@ -164,7 +165,7 @@ int cli_quilt_plan_parse(quilt_plan *p, const cJSON *root, const cli_pattern_opt
         plan_rule *r = &p->rule[i];
 
         r->pat = *base;
-        snprintf(r->where, sizeof r->where, "plan: rules[%lu]", (unsigned long)i);
+        snprintf(r->where, sizeof r->where, "%s[%lu]", prefix, (unsigned long)i);
         r->pat.where = r->where;
         if ((rc = take_rule(r, cJSON_GetArrayItem(root, (int)i))) != CLI_OK)
             return rc;
@@ -179,6 +180,7 @@ void cli_quilt_plan_free(qc_ctx *ctx, quilt_plan *p)
     for (i = 0; i < p->n; i++)
         qc_motif_set_free(ctx, &p->rule[i].motifs);
     free(p->rule);
+    cJSON_Delete(p->doc);
     memset(p, 0, sizeof *p);
 }
 

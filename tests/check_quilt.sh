@@ -35,6 +35,16 @@ assert s["ditch_mm"] > 0 and s["sewn_mm"] > s["pattern_mm"], s
 }
 check plan_rules_choose_each_patch_family plan_families
 
+dxf_outlines() {
+    "$QC" quilt "$NINE" -o q.dxf && python3 -c '
+lines = open("q.dxf").read().split("\n")
+pairs = [(lines[i].strip(), lines[i + 1].strip()) for i in range(0, len(lines) - 1, 2)]
+layers = [pairs[i + 1][1] for i, p in enumerate(pairs) if p == ("0", "POLYLINE")]
+assert layers.count("OUTLINES") == 9 and layers.count("0") == 1, layers
+'
+}
+check dxf_has_the_outlines_on_their_own_layer dxf_outlines
+
 none_rule() {
     printf '[{"match": {"fill": "#F5F0E1"}, "family": "none"}, {"family": "echo"}]' >p.json &&
         "$QC" quilt "$NINE" --plan p.json -o n.pat --stats 2>stats.json && python3 -c '
@@ -76,7 +86,7 @@ check plan_rule_matching_nothing plan_case '[{"match": {"id": "star-*"}, "family
 check plan_unknown_family plan_case '[{"family": "quilting"}]' 'rules\[0\]\.family: unknown choice'
 check plan_bad_parameter plan_case '[{"params": {"spacing": -1}}]' 'rules\[0\]: spacing -25.4 mm out of range'
 check plan_wrong_type plan_case '[{"match": {"class": 3}}]' 'rules\[0\]\.match\.class: expected a string'
-check plan_not_a_list plan_case '{"rules": []}' 'plan: expected a list'
+check plan_not_a_list plan_case '{"rules": []}' 'plan: rules: expected a list'
 check plan_malformed_json plan_case '[{"family": }]' 'malformed JSON at byte'
 
 overlap() {
@@ -103,6 +113,38 @@ gap_segment() {
         ! "$QC" check gap.pat --region two.svg >out.txt && grep -q '1 stitched segments leave the region' out.txt
 }
 check check_flags_a_segment_across_the_gap gap_segment
+
+# Fix on the way: a job block stays where "at" puts it (the box of the
+# flattened path, not of its control points, decides the shift).
+job_in_place() {
+    printf '{"units": "in", "blocks": [{"region": "rect:4x4", "at": [4, 0], "family": "stipple"}]}' >j.json &&
+        "$QC" job j.json -o j.pat && "$QC" check j.pat >out.txt &&
+        python3 -c '
+import re
+b = [float(v) for v in re.search(r"bbox: (\S+) (\S+) (\S+) (\S+) in", open("out.txt").read()).groups()]
+assert 4.0 < b[0] and 0.0 < b[1] and b[2] < 8.0 and b[3] < 4.0, b
+assert b[1] < 0.2 and b[3] > 3.8, b
+'
+}
+check job_block_stays_at_its_place job_in_place
+
+job_top() {
+    cp "$STAR" star.svg &&
+        printf '%s' '{"units": "in", "blocks": [{"top": "star.svg", "at": [0, 0], "plan": [{"match": {"class": "point"}, "family": "echo"}, {"family": "stipple"}]}, {"region": "rect:12x12", "at": [12, 0], "family": "stipple"}]}' >t.json &&
+        "$QC" job t.json -o t.pat && [ "$(pieces t.pat)" -eq 2 ] && "$QC" check t.pat --max-jumps 1 >out.txt &&
+        python3 -c '
+import re
+b = [float(v) for v in re.search(r"bbox: (\S+) (\S+) (\S+) (\S+) in", open("out.txt").read()).groups()]
+assert b[0] < 0.5 and b[2] > 23.5 and b[2] < 24 and b[3] < 12, b
+'
+}
+check job_mixes_a_pieced_top_with_a_block job_top
+
+job_top_bad_plan() {
+    cp "$STAR" star.svg && printf '%s' '{"blocks": [{"top": "star.svg", "plan": [{"colour": "red"}]}]}' >b.json &&
+        expect_fail 2 'job: blocks\[0\]\.plan\[0\]\.colour: unknown key' "$QC" job b.json -o bj.pat && [ ! -e bj.pat ]
+}
+check job_top_plan_errors_name_the_key job_top_bad_plan
 
 check region_option_refused refused 'not --region' "$NINE" --region rect:8x8
 check bad_join_refused refused "--join: 'seam' is neither ditch nor jump" "$NINE" --join seam
