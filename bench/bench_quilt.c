@@ -69,10 +69,11 @@ static void run(int gap_stat)
         qc_quilt(&ctx, &ps, jobs, NULL, &res) == QC_OK) {
         t2 = bench_now();
         printf("quilt: %lu patches of %g in at 0.5 in, %s: read %.1f ms, overlap+quilt %.1f ms "
-               "(%.2f ms, %.1f KiB peak per patch), %lu piece, ditch %.0f in\n",
+               "(%.2f ms per patch), peak %.2f MiB (%.1f KiB per patch), %lu piece, ditch "
+               "%.0f in\n",
                (unsigned long)ps.n, SIDE, gap_stat ? "with gap stat" : "no gap stat",
                (t1 - t0) * 1e3, (t2 - t1) * 1e3, (t2 - t1) * 1e3 / (double)ps.n,
-               (double)m.peak / 1024.0 / (double)ps.n,
+               (double)m.peak / 1048576.0, (double)m.peak / 1024.0 / (double)ps.n,
                (unsigned long)qc_path_pieces(&res.path), res.ditch_mm / IN);
         qc_quilt_result_free(&ctx, &res);
     } else
