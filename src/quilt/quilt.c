@@ -49,16 +49,16 @@ void qc_quilt_result_free(qc_ctx *ctx, qc_quilt_result *r)
 }
 
 /* The next patch: the unsewn one nearest along the seams (its nearest seam
- * vertex in *entry), or with none reachable the nearest as the crow flies.
- * *by_seam says which. SIZE_MAX when every patch is sewn. */
-static size_t next_patch(const quilter *q, uint32_t *entry, int *by_seam)
+ * vertex in *entry), or with none reachable the nearest as the crow flies;
+ * the first is the one at the top's lowest-leftmost vertex (vertex 0).
+ * SIZE_MAX when every patch is sewn. */
+static size_t next_patch(const quilter *q, uint32_t *entry)
 {
     const qc__seams *s = &q->seams;
     size_t i, best = SIZE_MAX, r, j;
     double bd = HUGE_VAL, be = HUGE_VAL;
 
     *entry = 0;
-    *by_seam = 0;
     for (i = 0; i < q->ps->n; i++) {
         if (q->sewn[i] || q->jobs[i].params == NULL)
             continue;
@@ -68,7 +68,7 @@ static size_t next_patch(const quilter *q, uint32_t *entry, int *by_seam)
                 double d = q->started ? q->sd.d[k] : 0;
                 double e = q->started ? dist(q->at.p, s->v[k]) : (double)k;
 
-                if (d < bd || (d == HUGE_VAL && bd == HUGE_VAL && e < be)) {
+                if (d < bd || (d == bd && e < be)) {
                     bd = d;
                     be = e;
                     best = i;
@@ -76,7 +76,6 @@ static size_t next_patch(const quilter *q, uint32_t *entry, int *by_seam)
                 }
             }
     }
-    *by_seam = bd < HUGE_VAL;
     return best;
 }
 
@@ -102,8 +101,10 @@ static int travel_to(quilter *q, qc__seam_pt b, int *ok)
     return QC_OK;
 }
 
-/* Sews one piece of patch i's pattern: path commands [c0, c1) with their
- * points from k0; `fresh`: the first piece of the patch. */
+/* Sews one piece of patch i's pattern (path commands [c0, c1), their
+ * points from k0): along the seams from where the line is to the boundary
+ * point nearest the piece's start, a straight stitch in, the piece, a
+ * straight stitch out to the boundary point nearest its end. */
 static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t c1, size_t k0)
 {
     qc_vec2 s = pat->pt[k0], t;
@@ -196,7 +197,6 @@ static int run(quilter *q)
 {
     size_t i, n = q->ps->n;
     uint32_t entry;
-    int by_seam;
 
     q->out->patch = (qc_patch_result *)qc__alloc_array(q->ctx, n, sizeof *q->out->patch);
     q->out->order = (uint32_t *)qc__alloc_array(q->ctx, n, sizeof *q->out->order);
@@ -213,13 +213,13 @@ static int run(quilter *q)
     for (;;) {
         if (q->started)
             QC__TRY(qc__seam_dist_from(q->ctx, &q->seams, &q->sd, q->at));
-        i = next_patch(q, &entry, &by_seam);
+        i = next_patch(q, &entry);
         if (i == SIZE_MAX)
             break;
         QC__TRY(sew_patch(q, i, entry));
     }
     if (q->out->norder == 0)
-        return qc__fail(q->ctx, QC_EEMPTY, "quilt: every patch is left unquilted");
+        return qc__fail(q->ctx, QC_EEMPTY, "every patch is left unquilted (family none)");
     return QC_OK;
 }
 

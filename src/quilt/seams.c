@@ -129,6 +129,8 @@ static int split_edge(qc_ctx *ctx, qc__seams *s, uint32_t a, uint32_t b,
         (*hits)[nh].t = t;
         (*hits)[nh++].k = (uint32_t)k;
     }
+    if (nh == 0)
+        return QC_OK;
     qsort(*hits, nh, sizeof **hits, by_t);
     QC__TRY(QC__RESERVE(ctx, s->bnd, s->bnd_cap, s->nbnd + nh));
     for (k = 0; k < nh; k++)

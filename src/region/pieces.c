@@ -90,6 +90,10 @@ int qc_region_pieces(qc_ctx *ctx, const qc_region *r, qc_region **pieces, size_t
         if (area[k] > 0)
             piece_of[k] = np++;
     }
+    if (np == 0) {
+        rc = qc__fail(ctx, QC_EEMPTY, "the region has no outer ring");
+        goto out_free;
+    }
     out = (qc_region *)qc__alloc_array(ctx, np, sizeof *out);
     if (out == NULL)
         goto out_free;
