@@ -14,23 +14,58 @@
 #include "job.h"
 #include "quilt_plan.h"
 
-/* Moves path from its frame (lower-left corner `lo`) to `at`, turned by
- * rotate degrees about that corner. */
-static void place(block *b, qc_path *path, qc_vec2 lo)
+/* Moves n points from the block's frame (lower-left corner `lo`) to `at`,
+ * turned by rotate degrees about that corner. */
+static void place_points(const block *b, qc_vec2 *v, size_t n, qc_vec2 lo)
 {
     double mm = b->pat.mm_per_unit, c = qc_cos(b->rotate * QC_PI / 180);
     double s = qc_sin(b->rotate * QC_PI / 180);
     size_t i;
 
-    for (i = 0; i < path->npt; i++) {
-        qc_vec2 p = path->pt[i];
+    for (i = 0; i < n; i++) {
+        qc_vec2 p = v[i];
         p.x -= lo.x;
         p.y -= lo.y;
-        path->pt[i].x = b->at[0] * mm + c * p.x - s * p.y;
-        path->pt[i].y = b->at[1] * mm + s * p.x + c * p.y;
+        v[i].x = b->at[0] * mm + c * p.x - s * p.y;
+        v[i].y = b->at[1] * mm + s * p.x + c * p.y;
     }
-    b->lo.x = b->at[0] * mm;
-    b->lo.y = b->at[1] * mm;
+}
+
+/* The path and the outline (taken over from *outline) go to the quilt's frame. */
+static void place(block *b, qc_path *path, qc_region *outline, qc_vec2 lo)
+{
+    place_points(b, path->pt, path->npt, lo);
+    place_points(b, outline->v, outline->nv, lo);
+    b->outline = *outline;
+    memset(outline, 0, sizeof *outline);
+    b->lo.x = b->at[0] * b->pat.mm_per_unit;
+    b->lo.y = b->at[1] * b->pat.mm_per_unit;
+}
+
+/* Blocks may touch but not overlap: one line naming both and where. */
+static int check_overlaps(const job *j)
+{
+    qc_patches ps;
+    size_t i, a, b;
+    qc_vec2 at;
+    double mm = cli_units_mm(j->units);
+    int found;
+
+    ps.n = ps.cap = j->n;
+    ps.p = calloc(j->n, sizeof *ps.p);
+    if (ps.p == NULL) {
+        cli_error("job: out of memory");
+        return CLI_RUNTIME;
+    }
+    for (i = 0; i < j->n; i++)
+        ps.p[i].region = j->blocks[i].outline; /* borrowed */
+    found = qc_patches_overlap(&ps, 0, &a, &b, &at);
+    free(ps.p);
+    if (!found)
+        return CLI_OK;
+    cli_error("job: %s and %s overlap near (%.3f, %.3f) %s", j->blocks[a].where,
+              j->blocks[b].where, at.x / mm, at.y / mm, j->units);
+    return CLI_USAGE;
 }
 
 /* A pieced top as a block: quilted as one line in the ditch (its plan's
@@ -53,7 +88,7 @@ static int make_top(qc_ctx *ctx, block *b)
     if (rc == CLI_OK)
         rc = cli_quilt_outlines(ctx, &q.ps, &drawn);
     if (rc == CLI_OK) {
-        place(b, &q.res.path, qc_region_bbox(&drawn).min);
+        place(b, &q.res.path, &drawn, qc_region_bbox(&drawn).min);
         b->path = q.res.path; /* keep the line, free the rest */
         memset(&q.res.path, 0, sizeof q.res.path);
     }
@@ -85,7 +120,7 @@ static int make_block(qc_ctx *ctx, block *b)
                                     motifs.n ? &motifs : NULL, &res) < 0)
         rc = cli_fail(ctx, b->label, ctx->status);
     if (rc == CLI_OK) {
-        place(b, &res.path, origin);
+        place(b, &res.path, &region, origin);
         b->path = res.path; /* keep the path, free the rest */
         memset(&res.path, 0, sizeof res.path);
     }
@@ -164,6 +199,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
         order[i] = &j->blocks[i];
         rc = make_block(ctx, &j->blocks[i]);
     }
+    if (rc == CLI_OK)
+        rc = check_overlaps(j);
     if (rc == CLI_OK) {
         sewing_order(order, j->n);
         rc = join_blocks(ctx, order, j->n, &all);
@@ -260,8 +297,10 @@ int cmd_job(int argc, char **argv)
     if (rc == CLI_OK) {
         qc_ctx_init(&ctx, NULL, NULL);
         rc = run_job(&ctx, &j, outputs, formats, nout);
-        for (i = 0; i < j.n; i++)
+        for (i = 0; i < j.n; i++) {
             qc_path_free(&ctx, &j.blocks[i].path);
+            qc_region_free(&ctx, &j.blocks[i].outline);
+        }
     }
     free(j.blocks);
     cJSON_Delete(root);

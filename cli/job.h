@@ -25,6 +25,7 @@ typedef struct block {
     char where[32];             /* "blocks[3]" for messages */
     char label[40];             /* "job: blocks[3]", for the parameters' messages */
     qc_path path;               /* in the quilt's frame */
+    qc_region outline;          /* its region (or top's patches) there, for overlaps */
     qc_vec2 lo;                 /* lower-left of its box, for ordering */
 } block;
 

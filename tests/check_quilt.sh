@@ -128,6 +128,13 @@ assert b[1] < 0.2 and b[3] > 3.8, b
 }
 check job_block_stays_at_its_place job_in_place
 
+job_overlap() {
+    printf '{"blocks": [{"region": "rect:8x8", "at": [0, 0]}, {"region": "circle:6", "at": [7, 1]}]}' >ov.json &&
+        expect_fail 2 'job: blocks\[0\] and blocks\[1\] overlap near ([0-9.]*, [0-9.]*) in' "$QC" job ov.json -o ov.pat &&
+        [ ! -e ov.pat ] && "$QC" job "$ROOT/examples/quilt.json" -o ok.pat
+}
+check job_blocks_that_overlap_are_refused job_overlap
+
 job_top() {
     cp "$STAR" star.svg &&
         printf '%s' '{"units": "in", "blocks": [{"top": "star.svg", "at": [0, 0], "plan": [{"match": {"class": "point"}, "family": "echo"}, {"family": "stipple"}]}, {"region": "rect:12x12", "at": [12, 0], "family": "stipple"}]}' >t.json &&
