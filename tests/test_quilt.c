@@ -431,6 +431,69 @@ static void test_quilt_should_free_everything_when_memory_runs_out(void)
     qc_patches_free(&ctx, &ps);
 }
 
+static void test_colours_should_parse_as_css_writes_them(void)
+{
+    uint32_t c = 0;
+
+    TEST_ASSERT_TRUE(qc_color_parse("#c0392b", &c));
+    TEST_ASSERT_EQUAL_UINT32(0xc0392bu, c);
+    TEST_ASSERT_TRUE(qc_color_parse(" #FfF ", &c));
+    TEST_ASSERT_EQUAL_UINT32(0xffffffu, c);
+    TEST_ASSERT_TRUE(qc_color_parse("rgb(255, 0, 10)", &c));
+    TEST_ASSERT_EQUAL_UINT32(0xff000au, c);
+    TEST_ASSERT_TRUE(qc_color_parse("rgb(100%,50%,0%)", &c));
+    TEST_ASSERT_EQUAL_UINT32(0xff8000u, c);
+    TEST_ASSERT_TRUE(qc_color_parse("Navy", &c));
+    TEST_ASSERT_EQUAL_UINT32(0x000080u, c);
+    TEST_ASSERT_FALSE(qc_color_parse("#12345", &c));
+    TEST_ASSERT_FALSE(qc_color_parse("#ggg", &c));
+    TEST_ASSERT_FALSE(qc_color_parse("rgb(256, 0, 0)", &c));
+    TEST_ASSERT_FALSE(qc_color_parse("rgb(1, 2)", &c));
+    TEST_ASSERT_FALSE(qc_color_parse("url(#grad)", &c));
+    TEST_ASSERT_FALSE(qc_color_parse("", &c));
+    TEST_ASSERT_FALSE(qc_color_parse(NULL, &c));
+}
+
+static void test_reading_a_top_should_survive_running_out_of_memory(void)
+{
+    size_t len, k;
+    char *buf = slurp("examples/sawtooth-star.svg", &len);
+    int ok = 0;
+
+    for (k = 1; k < 20000 && !ok; k += 3) {
+        qc_patches ps;
+        int rc;
+
+        ta.fail_at = ta.allocs + k;
+        rc = qc_io_read_svg_patches(&ctx, buf, len, NULL, &ps);
+        ta.fail_at = 0;
+        if (rc == QC_OK) {
+            TEST_ASSERT_EQUAL_size_t(17, ps.n);
+            qc_patches_free(&ctx, &ps);
+            ok = 1;
+        } else {
+            TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
+            TEST_ASSERT_EQUAL_size_t(0, ps.n);
+        }
+    }
+    free(buf);
+    TEST_ASSERT_TRUE(ok);
+}
+
+static void test_shape_crossing_itself_should_be_named(void)
+{
+    static const char svg[] =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='100mm' height='100mm' "
+        "viewBox='0 0 100 100'>\n<rect id='ok' width='10' height='10'/>\n"
+        "<path id='bow' d='M20,0 L40,10 L40,0 L20,20 Z'/></svg>";
+    qc_patches ps;
+
+    TEST_ASSERT_EQUAL_INT(QC_EINTERSECT,
+                          qc_io_read_svg_patches(&ctx, svg, strlen(svg), NULL, &ps));
+    TEST_ASSERT_EQUAL_size_t(0, ps.n);
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "svg line 3, <id=\"bow\">"));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -448,5 +511,8 @@ int main(void)
     RUN_TEST(test_same_seed_should_give_the_same_line);
     RUN_TEST(test_patches_apart_should_be_joined_by_a_jump);
     RUN_TEST(test_quilt_should_free_everything_when_memory_runs_out);
+    RUN_TEST(test_colours_should_parse_as_css_writes_them);
+    RUN_TEST(test_reading_a_top_should_survive_running_out_of_memory);
+    RUN_TEST(test_shape_crossing_itself_should_be_named);
     return UNITY_END();
 }
