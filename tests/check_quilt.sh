@@ -17,6 +17,16 @@ one_line() {
 }
 check nine_patch_is_one_line_with_outlines_and_ditch one_line
 
+# Every real top: one line whose points and stitched segments all lie in its
+# patches or on their seams, as quiltc check measures them.
+every_top() {
+    for t in "$STAR" "$ROOT"/tests/data/quilt/*.svg; do
+        "$QC" quilt "$t" -o t.pat && [ "$(pieces t.pat)" -eq 1 ] &&
+            "$QC" check t.pat --region "$t" >out.txt || { cat out.txt; echo "$t"; return 1; }
+    done
+}
+check every_top_is_one_line_inside_its_patches every_top
+
 plan_families() {
     "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o star.pat --stats \
         2>stats.json && [ "$(pieces star.pat)" -eq 1 ] && python3 -c '
