@@ -104,8 +104,10 @@ typedef struct qc_quilt_result {
 /*
  * Quilts a top: jobs[i] says what to sew in ps->p[i] (n = ps->n). Patches
  * are sewn in a greedy order that keeps the travel along the seams short
- * (the nearest unsewn patch by seam distance from where the last one
- * ended); each pattern starts where the travel arrives (its params'
+ * (next, the unsewn patch cheapest to reach from where the last one ended:
+ * seam distance divided by the unsewn patches meeting at the arrival
+ * vertex, so corners shared by several patches are sewn in one visit);
+ * each pattern starts where the travel arrives (its params'
  * start_x/start_y are set to the arrival point; patch i's seed is the
  * params' seed + i, so equal patches differ) and every piece of a
  * pattern is linked to the nearest point of its patch's boundary by a

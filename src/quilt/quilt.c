@@ -29,8 +29,32 @@ typedef struct quilter {
     qc__seam_pt at;       /* where the line is (valid when started) */
     int started;
     unsigned char *sewn;
+    uint32_t *hub;        /* per seam vertex: unsewn quilted patches touching it */
+    uint32_t *stamp;      /* per seam vertex: last patch counted + 1 */
     qc_quilt_result *out;
 } quilter;
+
+/* Counts, for every seam vertex, the unsewn quilted patches on it. */
+static void count_hubs(quilter *q)
+{
+    const qc__seams *s = &q->seams;
+    size_t i, j, r;
+
+    memset(q->hub, 0, s->nv * sizeof *q->hub);
+    memset(q->stamp, 0, s->nv * sizeof *q->stamp);
+    for (i = 0; i < q->ps->n; i++) {
+        if (q->sewn[i] || q->jobs[i].params == NULL)
+            continue;
+        for (r = i ? s->patch_end[i - 1] : 0; r < s->patch_end[i]; r++)
+            for (j = r ? s->ring_end[r - 1] : 0; j < s->ring_end[r]; j++) {
+                uint32_t k = s->bnd[j];
+                if (q->stamp[k] != i + 1) {
+                    q->stamp[k] = (uint32_t)i + 1;
+                    q->hub[k]++;
+                }
+            }
+    }
+}
 
 static double dist(qc_vec2 a, qc_vec2 b)
 {
@@ -48,33 +72,46 @@ void qc_quilt_result_free(qc_ctx *ctx, qc_quilt_result *r)
     memset(r, 0, sizeof *r);
 }
 
-/* The next patch: the unsewn one nearest along the seams (its nearest seam
- * vertex in *entry), or with none reachable the nearest as the crow flies;
- * the first is the one at the top's lowest-leftmost vertex (vertex 0).
- * SIZE_MAX when every patch is sewn. */
-static size_t next_patch(const quilter *q, uint32_t *entry)
+/* The next patch and where to enter it (*entry): the unsewn one whose
+ * boundary costs least to reach along the seams per unsewn patch meeting
+ * there (travel / hub count), so the line goes to corners where several
+ * patches meet and sews them one after the other with no travel between
+ * them; where the line stands on one of its seams, the cost is 0. With no
+ * seam leading on, the nearest as the crow flies; the first patch is entered
+ * at the top's biggest hub. SIZE_MAX when every patch is sewn. */
+static size_t next_patch(quilter *q, qc_vec2 *entry)
 {
     const qc__seams *s = &q->seams;
     size_t i, best = SIZE_MAX, r, j;
     double bd = HUGE_VAL, be = HUGE_VAL;
 
-    *entry = 0;
+    entry->x = entry->y = 0;
+    count_hubs(q);
     for (i = 0; i < q->ps->n; i++) {
         if (q->sewn[i] || q->jobs[i].params == NULL)
             continue;
-        for (r = i ? s->patch_end[i - 1] : 0; r < s->patch_end[i]; r++)
-            for (j = r ? s->ring_end[r - 1] : 0; j < s->ring_end[r]; j++) {
-                uint32_t k = s->bnd[j];
-                double d = q->started ? q->sd.d[k] : 0;
-                double e = q->started ? dist(q->at.p, s->v[k]) : (double)k;
+        for (r = i ? s->patch_end[i - 1] : 0; r < s->patch_end[i]; r++) {
+            size_t start = r ? s->ring_end[r - 1] : 0, end = s->ring_end[r];
 
+            for (j = start; j < end; j++) {
+                uint32_t k = s->bnd[j], k2 = s->bnd[j + 1 < end ? j + 1 : start];
+                double d = q->started ? q->sd.d[k] / (double)q->hub[k] : 1.0 / (double)q->hub[k];
+                double e = q->started ? dist(q->at.p, s->v[k]) : (double)k;
+                qc_vec2 at = s->v[k];
+
+                if (q->started && q->at.u != q->at.v &&
+                    ((k == q->at.u && k2 == q->at.v) || (k == q->at.v && k2 == q->at.u))) {
+                    d = e = 0; /* the line stands on this patch's seam */
+                    at = q->at.p;
+                }
                 if (d < bd || (d == bd && e < be)) {
                     bd = d;
                     be = e;
                     best = i;
-                    *entry = k;
+                    *entry = at;
                 }
             }
+        }
     }
     return best;
 }
@@ -147,7 +184,7 @@ static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t
     return QC_OK;
 }
 
-static int sew_patch(quilter *q, size_t i, uint32_t entry)
+static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
 {
     const qc_patch_job *job = &q->jobs[i];
     qc_params p = *job->params;
@@ -158,8 +195,8 @@ static int sew_patch(quilter *q, size_t i, uint32_t entry)
 
     memset(&res, 0, sizeof res);
     p.seed += (uint64_t)i; /* equal patches get different patterns */
-    QC__TRY(qc_params_set(q->ctx, &p, "start-x", q->seams.v[entry].x));
-    QC__TRY(qc_params_set(q->ctx, &p, "start-y", q->seams.v[entry].y));
+    QC__TRY(qc_params_set(q->ctx, &p, "start-x", entry.x));
+    QC__TRY(qc_params_set(q->ctx, &p, "start-y", entry.y));
     rc = qc_generate(q->ctx, &q->ps->p[i].region, &p, NULL, job->motifs, &res);
     if (rc < 0) {
         char msg[QC_ERRMSG_MAX];
@@ -196,7 +233,7 @@ static int sew_patch(quilter *q, size_t i, uint32_t entry)
 static int run(quilter *q)
 {
     size_t i, n = q->ps->n;
-    uint32_t entry;
+    qc_vec2 entry;
 
     q->out->patch = (qc_patch_result *)qc__alloc_array(q->ctx, n, sizeof *q->out->patch);
     q->out->order = (uint32_t *)qc__alloc_array(q->ctx, n, sizeof *q->out->order);
@@ -210,6 +247,10 @@ static int run(quilter *q)
         q->out->patch[i].order = SIZE_MAX;
     QC__TRY(qc__seams_build(q->ctx, q->ps, q->seam_tol, &q->seams));
     QC__TRY(qc__seam_dist_init(q->ctx, &q->seams, &q->sd));
+    q->hub = (uint32_t *)qc__alloc_array(q->ctx, q->seams.nv, sizeof *q->hub);
+    q->stamp = (uint32_t *)qc__alloc_array(q->ctx, q->seams.nv, sizeof *q->stamp);
+    if (q->hub == NULL || q->stamp == NULL)
+        return QC_ENOMEM;
     for (;;) {
         if (q->started)
             QC__TRY(qc__seam_dist_from(q->ctx, &q->seams, &q->sd, q->at));
@@ -247,6 +288,8 @@ int qc_quilt(qc_ctx *ctx, const qc_patches *ps, const qc_patch_job *jobs,
         return qc__fail(ctx, QC_EINVAL, "quilt: seam tolerance %g mm must be in (0, 10]",
                         q.seam_tol);
     rc = run(&q);
+    qc__free(ctx, q.hub, q.seams.nv * sizeof *q.hub);
+    qc__free(ctx, q.stamp, q.seams.nv * sizeof *q.stamp);
     qc__seam_dist_free(ctx, &q.seams, &q.sd);
     qc__seams_free(ctx, &q.seams);
     qc_points_free(ctx, &q.travel);
