@@ -11,6 +11,7 @@ void bench_tour(void);
 void bench_pebbling(void);
 void bench_families(void);
 void bench_meander(void);
+void bench_quilt(void);
 
 /* An allocator hook (qc_ctx_init) that counts the library's live and peak bytes. */
 typedef struct bench_meter {

@@ -8,5 +8,6 @@ int main(void)
     bench_pebbling();
     bench_families();
     bench_meander();
+    bench_quilt();
     return 0;
 }

@@ -53,6 +53,9 @@ double cli_units_mm(const char *units);
 /* A region from a built-in shape spec ("rect:8x8") or an SVG file, in mm,
  * normalized, moved so its bounding box starts at (0, 0). */
 int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out);
+/* The same, but an SVG is read as a quilt top: every patch's rings in one
+ * region (not normalized: patches share seams), moved to the origin. */
+int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out);
 
 /* Monotonic milliseconds. */
 double cli_now_ms(void);
@@ -132,6 +135,7 @@ int cmd_convert(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_list(int argc, char **argv);
 int cmd_job(int argc, char **argv);
+int cmd_quilt(int argc, char **argv);
 int cmd_motifs(int argc, char **argv);
 /* USB (usb_*.c, or usb_none.c when built with USB=0). */
 int cmd_devices(int argc, char **argv);

@@ -173,7 +173,7 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
     qc_region r;
     size_t i, outside = 0;
     double gap;
-    int rc = cli_load_region(ctx, o->region, cli_units_mm(o->units), &r);
+    int rc = cli_load_top(ctx, o->region, cli_units_mm(o->units), &r);
 
     if (rc != CLI_OK)
         return rc;
@@ -182,6 +182,8 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
             outside++;
     if (outside > 0)
         finding(t, "%.0f points outside the region", (double)outside, 0);
+    if (qc_plan_segments_outside(&r, p, 0.05, &outside, NULL) == QC_OK && outside > 0)
+        finding(t, "%.0f stitched segments leave the region", (double)outside, 0);
     gap = qc_largest_gap(ctx, &r, p->p, p->n, 0.5, NULL);
     qc_region_free(ctx, &r);
     if (gap < 0)

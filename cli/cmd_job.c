@@ -12,6 +12,91 @@
 #include <string.h>
 
 #include "job.h"
+#include "quilt_plan.h"
+
+/* Moves n points from the block's frame (lower-left corner `lo`) to `at`,
+ * turned by rotate degrees about that corner. */
+static void place_points(const block *b, qc_vec2 *v, size_t n, qc_vec2 lo)
+{
+    double mm = b->pat.mm_per_unit, c = qc_cos(b->rotate * QC_PI / 180);
+    double s = qc_sin(b->rotate * QC_PI / 180);
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        qc_vec2 p = v[i];
+        p.x -= lo.x;
+        p.y -= lo.y;
+        v[i].x = b->at[0] * mm + c * p.x - s * p.y;
+        v[i].y = b->at[1] * mm + s * p.x + c * p.y;
+    }
+}
+
+/* The path and the outline (taken over from *outline) go to the quilt's frame. */
+static void place(block *b, qc_path *path, qc_region *outline, qc_vec2 lo)
+{
+    place_points(b, path->pt, path->npt, lo);
+    place_points(b, outline->v, outline->nv, lo);
+    b->outline = *outline;
+    memset(outline, 0, sizeof *outline);
+    b->lo.x = b->at[0] * b->pat.mm_per_unit;
+    b->lo.y = b->at[1] * b->pat.mm_per_unit;
+}
+
+/* Blocks may touch but not overlap: one line naming both and where. */
+static int check_overlaps(const job *j)
+{
+    qc_patches ps;
+    size_t i, a, b;
+    qc_vec2 at;
+    double mm = cli_units_mm(j->units);
+    int found;
+
+    ps.n = ps.cap = j->n;
+    ps.p = calloc(j->n, sizeof *ps.p);
+    if (ps.p == NULL) {
+        cli_error("job: out of memory");
+        return CLI_RUNTIME;
+    }
+    for (i = 0; i < j->n; i++)
+        ps.p[i].region = j->blocks[i].outline; /* borrowed */
+    found = qc_patches_overlap(&ps, 0, &a, &b, &at);
+    free(ps.p);
+    if (!found)
+        return CLI_OK;
+    cli_error("job: %s and %s overlap near (%.3f, %.3f) %s", j->blocks[a].where,
+              j->blocks[b].where, at.x / mm, at.y / mm, j->units);
+    return CLI_USAGE;
+}
+
+/* A pieced top as a block: quilted as one line in the ditch (its plan's
+ * rules named "job: blocks[i].plan[k]"), its lower-left corner at "at". */
+static int make_top(qc_ctx *ctx, block *b)
+{
+    quilt_plan plan;
+    cli_quilt q;
+    char prefix[48];
+    qc_region drawn = {0};
+    int rc = CLI_OK; /* params: cli_job_budget */
+
+    memset(&plan, 0, sizeof plan);
+    memset(&q, 0, sizeof q);
+    snprintf(prefix, sizeof prefix, "job: %s.plan", b->where);
+    if (rc == CLI_OK && b->plan != NULL)
+        rc = cli_quilt_plan_parse(&plan, b->plan, &b->pat, prefix);
+    if (rc == CLI_OK)
+        rc = cli_quilt_sew(ctx, &q, b->top, &plan, &b->pat, QC_JOIN_DITCH, b->label);
+    if (rc == CLI_OK)
+        rc = cli_quilt_outlines(ctx, &q.ps, &drawn);
+    if (rc == CLI_OK) {
+        place(b, &q.res.path, &drawn, qc_region_bbox(&drawn).min);
+        b->path = q.res.path; /* keep the line, free the rest */
+        memset(&q.res.path, 0, sizeof q.res.path);
+    }
+    qc_region_free(ctx, &drawn);
+    cli_quilt_free(ctx, &q);
+    cli_quilt_plan_free(ctx, &plan);
+    return rc;
+}
 
 /* Generates block b in its own frame, then rotates it about its box's
  * lower-left corner and moves that corner to `at`. */
@@ -21,10 +106,12 @@ static int make_block(qc_ctx *ctx, block *b)
     qc_points given = {0};
     qc_motif_set motifs = {0};
     qc_result res = {0};
-    double mm, c, s;
-    size_t i;
-    int rc = cli_pattern_load(ctx, &b->pat, &region, &given); /* params: cli_job_budget */
+    qc_vec2 origin = {0, 0};
+    int rc;
 
+    if (b->top != NULL)
+        return make_top(ctx, b);
+    rc = cli_pattern_load(ctx, &b->pat, &region, &given); /* params: cli_job_budget */
     if (rc == CLI_OK && b->pat.motifs != NULL)
         rc = cli_load_motifs(ctx, b->pat.motifs, &motifs);
     if (rc == CLI_OK && qc_generate(ctx, &region, &b->pat.params, &given,
@@ -34,16 +121,7 @@ static int make_block(qc_ctx *ctx, block *b)
         rc = cli_check_inside(res.path.pt, res.path.npt, &res.params, &region,
                               b->pat.region != NULL ? b->pat.region : "rect:8x8", b->label);
     if (rc == CLI_OK) {
-        mm = b->pat.mm_per_unit;
-        c = qc_cos(b->rotate * QC_PI / 180);
-        s = qc_sin(b->rotate * QC_PI / 180);
-        for (i = 0; i < res.path.npt; i++) {
-            qc_vec2 p = res.path.pt[i];
-            res.path.pt[i].x = b->at[0] * mm + c * p.x - s * p.y;
-            res.path.pt[i].y = b->at[1] * mm + s * p.x + c * p.y;
-        }
-        b->lo.x = b->at[0] * mm;
-        b->lo.y = b->at[1] * mm;
+        place(b, &res.path, &region, origin);
         b->path = res.path; /* keep the path, free the rest */
         memset(&res.path, 0, sizeof res.path);
     }
@@ -85,19 +163,21 @@ static void sewing_order(block **order, size_t n)
     }
 }
 
-/* One path, a piece per block; moved so nothing is negative (PAT needs that). */
+/* One path, a piece per block; moved so nothing sewn is negative (PAT needs
+ * that). The box is the flattened path's: control points of curves lie
+ * outside the curve and would move the whole quilt. */
 static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
 {
-    double minx = 0, miny = 0;
+    double minx, miny, len;
+    qc_bbox box;
     size_t i;
 
     for (i = 0; i < n; i++)
         if (qc_path_append(ctx, out, &order[i]->path, 0) < 0)
             return cli_fail(ctx, "job", ctx->status);
-    for (i = 0; i < out->npt; i++) {
-        minx = fmin(minx, out->pt[i].x);
-        miny = fmin(miny, out->pt[i].y);
-    }
+    qc_curve_measure(out, 0.01, &len, &box);
+    minx = fmin(0, box.min.x);
+    miny = fmin(0, box.min.y);
     for (i = 0; i < out->npt; i++) {
         out->pt[i].x -= minx;
         out->pt[i].y -= miny;
@@ -122,6 +202,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
         order[i] = &j->blocks[i];
         rc = make_block(ctx, &j->blocks[i]);
     }
+    if (rc == CLI_OK)
+        rc = check_overlaps(j);
     if (rc == CLI_OK) {
         sewing_order(order, j->n);
         rc = join_blocks(ctx, order, j->n, &all);
@@ -218,8 +300,10 @@ int cmd_job(int argc, char **argv)
     if (rc == CLI_OK) {
         qc_ctx_init(&ctx, NULL, NULL);
         rc = run_job(&ctx, &j, outputs, formats, nout);
-        for (i = 0; i < j.n; i++)
+        for (i = 0; i < j.n; i++) {
             qc_path_free(&ctx, &j.blocks[i].path);
+            qc_region_free(&ctx, &j.blocks[i].outline);
+        }
     }
     free(j.blocks);
     cJSON_Delete(root);

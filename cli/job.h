@@ -21,9 +21,12 @@ typedef struct block {
     cli_pattern_opts pat;
     char values[64][VALUE_LEN]; /* numbers from JSON, as option text */
     double at[2], rotate;
+    const char *top;            /* a pieced top (SVG) instead of a region */
+    const cJSON *plan;          /* its plan (rules), or NULL */
     char where[32];             /* "blocks[3]" for messages */
     char label[40];             /* "job: blocks[3]", for the parameters' messages */
     qc_path path;               /* in the quilt's frame */
+    qc_region outline;          /* its region (or top's patches) there, for overlaps */
     qc_vec2 lo;                 /* lower-left of its box, for ordering */
 } block;
 

@@ -17,7 +17,8 @@ static int block_points(qc_ctx *ctx, block *b, const qc_params *r, double *n)
     qc_region region = {0};
     qc_points given = {0};
     qc_sample_params sp;
-    int rc = cli_pattern_load(ctx, &b->pat, &region, &given);
+    int rc = b->top != NULL ? cli_load_top(ctx, b->top, b->pat.mm_per_unit, &region)
+                            : cli_pattern_load(ctx, &b->pat, &region, &given);
 
     if (rc != CLI_OK)
         return rc;

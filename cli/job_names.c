@@ -143,6 +143,9 @@ int cli_job_resolve_names(job *j, const char *file, int allow_outside, cli_job_n
         if (b->pat.region != NULL && is_file_name(b->pat.region) &&
             (b->pat.region = beside(&c, b->pat.region, what)) == NULL)
             break;
+        snprintf(what, sizeof what, "job: %s.top", b->where);
+        if (b->top != NULL && (b->top = beside(&c, b->top, what)) == NULL)
+            break;
         snprintf(what, sizeof what, "job: %s.motif", b->where);
         if (b->pat.motifs != NULL && (b->pat.motifs = motifs_beside(&c, b->pat.motifs, what)) == NULL)
             break;

@@ -56,7 +56,7 @@ static int take_params(block *b, const cJSON *params)
 static int take_block(const job *j, block *b, const cJSON *o)
 {
     static const char *const known[] = {"region", "at", "rotate", "family", "motif", "params",
-                                        NULL};
+                                        "top", "plan", NULL};
     const cJSON *v;
     size_t nrows;
     double mm;
@@ -74,6 +74,18 @@ static int take_block(const job *j, block *b, const cJSON *o)
         if (!cJSON_IsString(v))
             return bad(b->where, "region", "expected a shape or an SVG file name");
         b->pat.region = v->valuestring;
+    }
+    if ((v = cJSON_GetObjectItemCaseSensitive(o, "top")) != NULL) {
+        if (!cJSON_IsString(v))
+            return bad(b->where, "top", "expected an SVG file name");
+        if (cJSON_GetObjectItemCaseSensitive(o, "region") != NULL)
+            return bad(b->where, "top", "a block has a region or a top, not both");
+        b->top = v->valuestring;
+    }
+    if ((v = cJSON_GetObjectItemCaseSensitive(o, "plan")) != NULL) {
+        if (b->top == NULL)
+            return bad(b->where, "plan", "a plan needs a \"top\"");
+        b->plan = v;
     }
     if ((v = cJSON_GetObjectItemCaseSensitive(o, "at")) != NULL) {
         if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 2 ||

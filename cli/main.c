@@ -14,6 +14,7 @@ static const struct command {
     {"convert", cmd_convert, "convert a pattern between machine formats (any quiltc writes)"},
     {"check", cmd_check, "lint a pattern file (any format) and check its geometry"},
     {"job", cmd_job, "generate a whole quilt of blocks from a JSON job file"},
+    {"quilt", cmd_quilt, "quilt a pieced top (SVG): a pattern per patch, one line in the ditch"},
     {"motifs", cmd_motifs, "list the motif library, or draw one motif as SVG"},
     {"list", cmd_list, "list families, parameters, motifs or formats"},
     {"devices", cmd_devices, "list USB devices that could take a pattern"},

@@ -18,5 +18,6 @@
 #include "quiltc/pattern.h"
 #include "quiltc/measure.h"
 #include "quiltc/tile.h"
+#include "quiltc/quilt.h"
 
 #endif

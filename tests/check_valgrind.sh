@@ -55,7 +55,7 @@ small_job() {
     cat > job.json <<'JSON'
 {"units": "in", "tie": 2, "blocks": [
  {"region": "rect:3x3", "at": [0, 0], "family": "stipple", "params": {"spacing": 0.75}},
- {"region": "circle:3", "at": [3, 0], "rotate": 45, "family": "vine", "params": {"spacing": "20mm"}}]}
+ {"region": "circle:3", "at": [5, 0], "rotate": 45, "family": "vine", "params": {"spacing": "20mm"}}]}
 JSON
     vg 0 job job.json -o quilt.pat -o quilt.svg
 }

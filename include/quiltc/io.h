@@ -44,6 +44,9 @@ typedef struct qc_io_opts {
     const qc_region *region; /* SVG: drawn under the path; may be NULL */
     int svg_inches;          /* SVG: width/height in inches (else mm) */
     double feed_mm_min;      /* G-code feed rate; 0 = 1500 */
+    const qc_path *travel;   /* SVG: layer "ditch" drawn over the path in a third colour
+                              * (a quilt's travel along seams, lines only); may be NULL */
+    int dxf_outlines;        /* DXF: region's rings as closed polylines on layer OUTLINES */
 } qc_io_opts;
 
 /* Encodes plan as format through write(ud, ...), buffered (8 KiB chunks).

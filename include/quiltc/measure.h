@@ -8,6 +8,7 @@
 
 #include "core.h"
 #include "region.h"
+#include "stitch.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -55,6 +56,21 @@ double qc_path_largest_gap(qc_ctx *ctx, const qc_region *region, const qc_path *
 #define QC_MAX_CROSSING_PAIRS 20000000u /* about a second of exact tests */
 int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed,
                            size_t *count);
+
+/*
+ * Counts the sewn segments of plan (from each point to the next unless
+ * the next starts a piece, QC_ST_JUMP) that leave region somewhere along
+ * their length by more than tol mm: a stitched line across the gap between
+ * two pieces, or across a notch, even when both its ends are inside. The
+ * region need not be normalized (a quilt top's patches, sharing seams,
+ * will do: a segment along a seam stays inside). *count receives the
+ * number, *first (may be NULL) a point outside on the first such segment.
+ * O(segments x boundary edges), plus samples every tol along segments that
+ * come near the boundary. Errors: QC_EINVAL (NULL, no ring, tol not > 0).
+ * Allocates nothing.
+ */
+int qc_plan_segments_outside(const qc_region *region, const qc_plan *plan, double tol,
+                             size_t *count, qc_vec2 *first);
 
 #ifdef __cplusplus
 }

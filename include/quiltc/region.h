@@ -55,6 +55,15 @@ qc_bbox qc_region_bbox(const qc_region *r);
 /* Copies src into dst, built as every output is (core.h): zeroed first, not
  * freed, so pass an empty or freed dst; on error dst is empty. */
 int qc_region_copy(qc_ctx *ctx, qc_region *dst, const qc_region *src);
+/*
+ * Splits a normalized region into its separate pieces: each outer ring with
+ * the holes directly inside it (an island in a hole is a piece of its own),
+ * pieces in the order of their outer rings, each normalized. *pieces
+ * receives an array of *n regions (free with qc_region_pieces_free).
+ * Errors: QC_EEMPTY (no ring), QC_ENOMEM (*pieces NULL, *n 0).
+ */
+int qc_region_pieces(qc_ctx *ctx, const qc_region *r, qc_region **pieces, size_t *n);
+void qc_region_pieces_free(qc_ctx *ctx, qc_region *pieces, size_t n);
 /* Moves every vertex by (dx, dy). */
 void qc_region_translate(qc_region *r, double dx, double dy);
 

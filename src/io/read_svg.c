@@ -53,6 +53,8 @@ typedef struct region_sink {
     signed char *keep;
     size_t keep_cap;
     size_t open_shapes, stroke_only; /* left out, for the QC_EEMPTY message */
+    qc__svg_rings_fn per_shape;      /* set: each shape's rings go to it, then out is emptied */
+    void *per_shape_ud;
 } region_sink;
 
 static int resolve_opts(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
@@ -265,7 +267,7 @@ static int subpath_closed(const qc_path *shape, size_t c, size_t k)
     return last.x == first.x && last.y == first.y;
 }
 
-static int region_shape(void *ud, const qc_path *shape, unsigned flags)
+static int region_shape(void *ud, const qc_path *shape, unsigned flags, const qc__svg_elem *el)
 {
     region_sink *s = (region_sink *)ud;
     size_t c, k = 0;
@@ -314,24 +316,31 @@ static int region_shape(void *ud, const qc_path *shape, unsigned flags)
         if (s->keep[k])
             QC__TRY(qc_region_add_ring(s->ctx, s->out, s->rings.v + rs_start(&s->rings, k),
                                        s->rings.end[k] - rs_start(&s->rings, k)));
+    if (s->per_shape != NULL && s->out->nrings > 0) {
+        int rc = s->per_shape(s->per_shape_ud, s->out, el);
+
+        s->out->nv = s->out->nrings = 0;
+        return rc;
+    }
     return QC_OK;
 }
 
-int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
-                          qc_region *out)
+/* The region reader, or with per_shape set the shape-by-shape walk. */
+static int read_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
+                       qc_region *out, qc__svg_rings_fn per_shape, void *ud)
 {
     region_sink s;
     int rc;
 
-    if (out == NULL)
-        return qc__fail(ctx, QC_EINVAL, "svg: no output region");
     memset(out, 0, sizeof *out);
     memset(&s, 0, sizeof s);
     QC__TRY(resolve_opts(ctx, buf, len, opts, &s.tol));
     s.ctx = ctx;
     s.out = out;
+    s.per_shape = per_shape;
+    s.per_shape_ud = ud;
     rc = qc__svg_walk(ctx, buf, len, region_shape, &s);
-    if (rc >= 0 && out->nrings == 0)
+    if (rc >= 0 && per_shape == NULL && out->nrings == 0)
         rc = qc__fail(ctx, QC_EEMPTY,
                       "svg: no closed shape with an area (ignored: %lu polyline or line "
                       "shapes, %lu unclosed subpaths with fill:none)",
@@ -341,11 +350,25 @@ int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg
     qc__free(ctx, s.rings.end, s.rings.end_cap * sizeof *s.rings.end);
     qc__free(ctx, s.cur, s.cur_cap * sizeof *s.cur);
     qc__free(ctx, s.keep, s.keep_cap * sizeof *s.keep);
-    if (rc < 0) {
+    if (rc < 0 || per_shape != NULL)
         qc_region_free(ctx, out);
-        return rc;
-    }
-    return QC_OK;
+    return rc < 0 ? rc : QC_OK;
+}
+
+int qc_io_read_svg_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
+                          qc_region *out)
+{
+    if (out == NULL)
+        return qc__fail(ctx, QC_EINVAL, "svg: no output region");
+    return read_region(ctx, buf, len, opts, out, NULL, NULL);
+}
+
+int qc__svg_walk_rings(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
+                       qc__svg_rings_fn fn, void *ud)
+{
+    qc_region scratch;
+
+    return read_region(ctx, buf, len, opts, &scratch, fn, ud);
 }
 
 /* ---- path ---- */
@@ -355,10 +378,11 @@ typedef struct path_sink {
     qc_path *out;
 } path_sink;
 
-static int path_shape(void *ud, const qc_path *shape, unsigned flags)
+static int path_shape(void *ud, const qc_path *shape, unsigned flags, const qc__svg_elem *el)
 {
     path_sink *s = (path_sink *)ud;
 
+    (void)el;
     if (flags & (QC__SVG_DASHED | QC__SVG_REGION_LAYER))
         return QC_OK; /* a jump or the block's outline, not a stitch line */
     if (s->out->npt + shape->npt > QC_MAX_POINTS)

@@ -168,10 +168,31 @@ enum {
     QC__SVG_REGION_LAYER = 16
 };
 
+/* The element a shape comes from, for naming it: valid during the callback. */
+typedef struct qc__svg_elem {
+    size_t index;        /* shape elements in document order, 1-based */
+    unsigned long line;  /* of its '<' */
+    const char *id, *cls, *label; /* id, class, inkscape:label; NULL when absent */
+    uint32_t fill;       /* 0xRRGGBB when fill_rgb (inherited like fill) */
+    int fill_rgb;        /* the fill is a colour quiltc understood */
+} qc__svg_elem;
+
 /* Receives each shape in document order: its path in mm, y up (already
- * transformed, coordinates checked) and its QC__SVG_* flags. A negative
- * return stops the walk. */
-typedef int (*qc__svg_shape_fn)(void *ud, const qc_path *shape, unsigned flags);
+ * transformed, coordinates checked), its QC__SVG_* flags and its element.
+ * A negative return stops the walk. */
+typedef int (*qc__svg_shape_fn)(void *ud, const qc_path *shape, unsigned flags,
+                                const qc__svg_elem *el);
+
+/* Reads the document as qc_io_read_svg_region does, but hands each shape's
+ * kept rings (in mm, y up, not normalized) to fn with the shape's element;
+ * the rings are only valid during the call. Errors: the reader's, or fn's. */
+typedef int (*qc__svg_rings_fn)(void *ud, const qc_region *rings, const qc__svg_elem *el);
+QC__HIDDEN int qc__svg_walk_rings(qc_ctx *ctx, const char *buf, size_t len,
+                                  const qc_svg_opts *opts, qc__svg_rings_fn fn, void *ud);
+
+/* A CSS colour: #rgb, #rrggbb, rgb(r, g, b) (numbers or %) or one of the
+ * 16 basic names plus orange; 1 and *rgb (0xRRGGBB) when understood. */
+QC__HIDDEN int qc__svg_color(const char *s, size_t n, uint32_t *rgb);
 
 /* Parses the document and hands every visible shape to fn. Errors: those
  * of the tokenizer and parsers, QC_ERANGE for a coordinate beyond 1e6 mm

@@ -18,7 +18,9 @@ typedef struct frame {
     int evenodd;
     int unfilled;  /* fill:none */
     int dashed;    /* stroke-dasharray other than none (inherited) */
-    int in_region; /* inside the element with id="region" (quiltc's outline layer) */
+    int in_region; /* inside id="region" or id="ditch" (quiltc's outline and travel layers) */
+    int fill_rgb;  /* fill is a colour, in fill (inherited) */
+    uint32_t fill;
     int skip;      /* this element and its subtree draw nothing */
 } frame;
 
@@ -32,6 +34,7 @@ typedef struct walker {
     void *ud;
     qc__svg_where w;
     char elem[24];
+    size_t shapes; /* shape elements so far */
 } walker;
 
 static int name_is(const walker *k, const char *name)
@@ -425,9 +428,28 @@ static int is_container(const walker *k)
     return name_is(k, "g") || name_is(k, "a") || name_is(k, "switch") || name_is(k, "svg");
 }
 
+/* An attribute by its qualified name (prefix included), or NULL. */
+static const char *qualified_attr(const walker *k, const char *qname)
+{
+    size_t i, n = strlen(qname);
+
+    for (i = 0; i < k->x.nattr; i++)
+        if (k->x.attr[i].name_len == n && memcmp(k->x.attr[i].name, qname, n) == 0)
+            return k->x.attr[i].value;
+    return NULL;
+}
+
+static const char *attr_value(const walker *k, const char *name)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(&k->x, name);
+
+    return a != NULL ? a->value : NULL;
+}
+
 /* Maps the shape to mm and hands it over. */
 static int emit(walker *k, const frame *f, int closed)
 {
+    qc__svg_elem el;
     size_t i;
 
     if (k->shape.ncmd == 0)
@@ -446,10 +468,18 @@ static int emit(walker *k, const frame *f, int closed)
                             k->w.line, k->w.elem, p.x, p.y, QC__SVG_MAX_MM);
         k->shape.pt[i] = p;
     }
+    el.index = k->shapes;
+    el.line = k->w.line;
+    el.id = attr_value(k, "id");
+    el.cls = attr_value(k, "class");
+    el.label = qualified_attr(k, "inkscape:label");
+    el.fill = f->fill;
+    el.fill_rgb = f->fill_rgb;
     return k->fn(k->ud, &k->shape,
                  (closed ? QC__SVG_CLOSED : 0u) | (f->evenodd ? QC__SVG_EVENODD : 0u) |
                      (f->unfilled ? 0u : QC__SVG_FILLED) | (f->dashed ? QC__SVG_DASHED : 0u) |
-                     (f->in_region ? QC__SVG_REGION_LAYER : 0u));
+                     (f->in_region ? QC__SVG_REGION_LAYER : 0u),
+                 &el);
 }
 
 static int open_element(walker *k)
@@ -480,6 +510,8 @@ static int open_element(walker *k)
         f->unfilled = 0;
         f->dashed = 0;
         f->in_region = 0;
+        f->fill_rgb = 1; /* SVG's initial fill is black */
+        f->fill = 0;
         QC__TRY(qc__svg_root_viewport(&k->w, &k->x, &f->m, &k->vp_w, &k->vp_h));
     } else if (parent->skip || !k->x.svg || !(is_container(k) || is_shape(k))) {
         f->skip = 1;
@@ -506,18 +538,22 @@ static int open_element(walker *k)
         else if (value_is(v, vn, "nonzero"))
             f->evenodd = 0;
     }
-    if (property(k, "fill", &v, &vn) && !value_is(v, vn, "inherit"))
+    if (property(k, "fill", &v, &vn) && !value_is(v, vn, "inherit")) {
         f->unfilled = value_is(v, vn, "none");
+        f->fill_rgb = qc__svg_color(v, vn, &f->fill);
+    }
     if (property(k, "stroke-dasharray", &v, &vn) && !value_is(v, vn, "inherit"))
         f->dashed = !value_is(v, vn, "none");
     {
         const qc__xml_attr *id = qc__xml_attr_get(&k->x, "id");
-        if (id != NULL && id->value_len == 6 && memcmp(id->value, "region", 6) == 0)
+        if (id != NULL && ((id->value_len == 6 && memcmp(id->value, "region", 6) == 0) ||
+                           (id->value_len == 5 && memcmp(id->value, "ditch", 5) == 0)))
             f->in_region = 1;
     }
     if (!is_shape(k))
         return QC_OK;
     f->skip = 1; /* children of a shape draw nothing */
+    k->shapes++;
     k->shape.ncmd = k->shape.npt = 0;
     QC__TRY(build_shape(k, &closed));
     return emit(k, f, closed);

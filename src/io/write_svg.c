@@ -1,7 +1,8 @@
 /*
  * SVG preview: width/height in mm (or inches) with a matching viewBox, so one
  * user unit is one mm (or inch); y flipped. Layer <g id="region"> holds the
- * region's rings, <g id="path"> the sewn path and, dashed, the jumps.
+ * region's rings, <g id="path"> the sewn path and, dashed, the jumps, and
+ * <g id="ditch"> (when given) a quilt's travel along the seams, in green.
  * Coordinates rounded to 0.001 mm (0.0001 in), trailing zeros dropped.
  */
 #include <math.h>
@@ -91,6 +92,23 @@ static void path_layer(qc__out *o, const frame *f, const qc_plan *plan)
     qc__out_str(o, "</g>\n");
 }
 
+static void ditch_layer(qc__out *o, const frame *f, const qc_path *t)
+{
+    size_t c, k = 0;
+
+    qc__out_str(o, "<g id=\"ditch\" fill=\"none\" stroke=\"#27ae60\" stroke-width=\"");
+    num(o, f, 0.5 * f->scale);
+    qc__out_str(o, "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n<path d=\"");
+    for (c = 0; c < t->ncmd; c++) {
+        size_t np = qc_path_cmd_points(t->cmd[c]);
+
+        qc__out_char(o, t->cmd[c] == QC_PATH_MOVE ? 'M' : 'L');
+        point(o, f, t->pt[k + np - 1]); /* a cubic is drawn as its chord */
+        k += np;
+    }
+    qc__out_str(o, "\"/>\n</g>\n");
+}
+
 int qc__write_svg(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
                   qc__out *o)
 {
@@ -131,6 +149,8 @@ int qc__write_svg(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
     if (r != NULL && r->nrings > 0)
         region_layer(o, &f, r);
     path_layer(o, &f, plan);
+    if (opts->travel != NULL && opts->travel->ncmd > 0)
+        ditch_layer(o, &f, opts->travel);
     qc__out_str(o, "</svg>\n");
     return QC_OK;
 }

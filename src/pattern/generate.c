@@ -7,11 +7,12 @@
 #include <string.h>
 
 #include "internal.h"
+#include "pattern_internal.h"
 #include "region_index.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
-#define STATS_TOL_MM 0.05
+#define STATS_TOL_MM QC__STATS_TOL_MM
 
 static void trace(qc_ctx *ctx, const char *stage)
 {
@@ -22,8 +23,8 @@ static void trace(qc_ctx *ctx, const char *stage)
 /* Given points must lie in the region, margin from its boundary, as sampled
  * points do: a pattern sewn beyond the block would run into its neighbours
  * or the frame. */
-static int check_given_inside(qc_ctx *ctx, const qc_region *region, const qc_points *given,
-                              double margin)
+int qc__check_given_inside(qc_ctx *ctx, const qc_region *region, const qc_points *given,
+                           double margin)
 {
     qc__rindex ix;
     qc_bbox box;
@@ -55,7 +56,7 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
         if (given->n > QC_MAX_POINTS)
             return qc__fail(ctx, QC_ELIMIT, "%lu points exceed the limit of %lu",
                             (unsigned long)given->n, (unsigned long)QC_MAX_POINTS);
-        QC__TRY(check_given_inside(ctx, region, given, p->margin));
+        QC__TRY(qc__check_given_inside(ctx, region, given, p->margin));
         for (i = 0; i < given->n; i++)
             QC__TRY(qc_points_push(ctx, out, given->v[i]));
         return QC_OK;
@@ -144,8 +145,8 @@ static int build_skeleton(qc_ctx *ctx, const qc_region *region, const qc_params 
     return QC_OK;
 }
 
-static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
-               const qc_motif_set *motifs, qc_result *res)
+int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *given,
+                     const qc_motif_set *motifs, qc_result *res)
 {
     const qc_params *p = &res->params;
     qc_skeleton skel;
@@ -181,8 +182,13 @@ int qc_generate(qc_ctx *ctx, const qc_region *region, const qc_params *params,
 
     memset(out, 0, sizeof *out);
     rc = qc_params_resolve(ctx, params, &out->params);
-    if (rc == QC_OK)
-        rc = run(ctx, region, given, motifs, out);
+    if (rc == QC_OK) {
+        int handled = 0;
+
+        rc = qc__generate_pieces(ctx, region, given, motifs, out, &handled);
+        if (rc == QC_OK && !handled)
+            rc = qc__generate_one(ctx, region, given, motifs, out);
+    }
     if (rc < 0)
         qc_result_free(ctx, out);
     return rc;
