@@ -8,16 +8,7 @@
 
 #include "measure_internal.h"
 
-#define MAX_CELLS ((size_t)1 << 22)
-#define FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */
-
-typedef struct gap_grid {
-    double x0, y0, h;
-    size_t nx, ny;
-    double *f;
-} gap_grid;
-
-static void seed_segment(gap_grid *g, qc_vec2 a, qc_vec2 b)
+void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y);
     double steps = ceil(len / (0.5 * g->h));
@@ -40,7 +31,26 @@ static void seed_segment(gap_grid *g, qc_vec2 a, qc_vec2 b)
     }
 }
 
-static int transform(qc_ctx *ctx, gap_grid *g)
+void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
+{
+    g->h = resolution;
+    for (;;) {
+        double fx = ceil((box.max.x - box.min.x) / g->h), fy = ceil((box.max.y - box.min.y) / g->h);
+        fx = fx < 1.0 ? 1.0 : fx;
+        fy = fy < 1.0 ? 1.0 : fy;
+        if (fx * fy <= (double)QC__GAP_MAX_CELLS) {
+            g->nx = (size_t)fx;
+            g->ny = (size_t)fy;
+            break;
+        }
+        g->h *= 1.25;
+    }
+    g->x0 = box.min.x;
+    g->y0 = box.min.y;
+    g->f = NULL;
+}
+
+int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
     size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
     double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
@@ -106,7 +116,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
 {
     const qc_vec2 *pts = pc->pts;
     size_t n = pc->n;
-    gap_grid g;
+    qc__gap_grid g;
     qc_bbox box;
     unsigned char *mask = NULL;
     size_t i, j, k, best_at = 0, rs = 0;
@@ -130,20 +140,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
             return qc__fail(ctx, QC_ERANGE, "largest gap: region vertex %lu is not finite",
                             (unsigned long)i);
     box = qc_region_bbox(region);
-    g.h = resolution;
-    for (;;) {
-        double fx = ceil((box.max.x - box.min.x) / g.h), fy = ceil((box.max.y - box.min.y) / g.h);
-        fx = fx < 1.0 ? 1.0 : fx;
-        fy = fy < 1.0 ? 1.0 : fy;
-        if (fx * fy <= (double)MAX_CELLS) {
-            g.nx = (size_t)fx;
-            g.ny = (size_t)fy;
-            break;
-        }
-        g.h *= 1.25;
-    }
-    g.x0 = box.min.x;
-    g.y0 = box.min.y;
+    qc__gap_grid_size(&g, box, resolution);
     g.f = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.f);
     mask = qc__alloc(ctx, g.nx * g.ny);
     if (g.f == NULL || mask == NULL) {
@@ -155,15 +152,15 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)
-        g.f[k] = FAR;
+        g.f[k] = QC__GAP_FAR;
     {
         size_t b = 0, q;
         for (q = 0; q < (pc->ends != NULL ? pc->nends : 1); q++) {
             size_t e = piece_end(pc, q);
             if (e == b + 1)
-                seed_segment(&g, pts[b], pts[b]);
+                qc__gap_seed_segment(&g, pts[b], pts[b]);
             for (i = b + 1; i < e; i++)
-                seed_segment(&g, pts[i - 1], pts[i]);
+                qc__gap_seed_segment(&g, pts[i - 1], pts[i]);
             b = e;
         }
     }
@@ -171,10 +168,10 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
         size_t end = region->ring_end[k], p = end - 1;
 
         for (i = rs; i < end; p = i++)
-            seed_segment(&g, region->v[p], region->v[i]);
+            qc__gap_seed_segment(&g, region->v[p], region->v[i]);
         rs = end;
     }
-    rc = transform(ctx, &g);
+    rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)

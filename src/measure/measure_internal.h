@@ -21,4 +21,22 @@ QC__HIDDEN int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0
  * (step 1) into d; v (n ints) and z (n + 1 doubles) are scratch. */
 QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z);
 
+/* A raster of squared distances in cells (gap.c): the bounding box from
+ * (x0, y0), cells h wide, f[j * nx + i]. */
+#define QC__GAP_MAX_CELLS ((size_t)1 << 22)
+#define QC__GAP_FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */
+typedef struct qc__gap_grid {
+    double x0, y0, h;
+    size_t nx, ny;
+    double *f;
+} qc__gap_grid;
+
+/* Sizes g over box at resolution (raised until at most 2^22 cells); f NULL. */
+QC__HIDDEN void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution);
+/* Zeroes the cells segment ab passes through (points up to a cell outside
+ * the box go to its edge cells). */
+QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);
+/* f becomes each cell's squared distance (in cells) to the nearest zero cell. */
+QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
+
 #endif

@@ -12,6 +12,10 @@
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
 #define STATS_TOL_MM 0.05
+/* The farthest-fabric raster: d / 10, and no coarser than `quiltc check`'s
+ * 0.5 mm so both report the same figure. */
+#define FABRIC_RES 0.1
+#define FABRIC_RES_MAX_MM 0.5
 
 static qc_family_fn family_fn(int family)
 {
@@ -198,6 +202,10 @@ static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
     res->stats.order = res->order.n;
     qc_curve_measure(&res->path, STATS_TOL_MM, &res->stats.length_mm, &res->stats.bbox);
     res->stats.pieces = qc_path_pieces(&res->path);
+    if (!p->skip_gap_stat) {
+        trace(ctx, "measure");
+        QC__TRY(qc_result_measure(ctx, region, res));
+    }
     trace(ctx, "done");
     return QC_OK;
 }
@@ -225,4 +233,18 @@ void qc_result_free(qc_ctx *ctx, qc_result *res)
     qc_order_free(ctx, &res->order);
     qc_path_free(ctx, &res->path);
     memset(res, 0, sizeof *res);
+}
+
+/* The farthest fabric, the same figure for every family (the CLI's --stats,
+ * the page and `quiltc check --region` all report it). */
+int qc_result_measure(qc_ctx *ctx, const qc_region *region, qc_result *res)
+{
+    qc_fabric f;
+
+    QC__TRY(qc_path_fabric(ctx, region, &res->path,
+                           fmin(res->params.spacing * FABRIC_RES, FABRIC_RES_MAX_MM), 0.0,
+                           NULL, &f));
+    res->stats.farthest_fabric_mm = f.farthest_mm;
+    res->stats.seam_bare = f.seam_bare;
+    return QC_OK;
 }
