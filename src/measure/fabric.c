@@ -196,8 +196,8 @@ double qc_region_corner_angle(const qc_region *region, size_t i)
             qc_vec2 p = region->v[i == rs ? end - 1 : i - 1], v = region->v[i];
             qc_vec2 nx = region->v[i + 1 == end ? rs : i + 1];
             double ax = v.x - p.x, ay = v.y - p.y, bx = nx.x - v.x, by = nx.y - v.y;
-            double turn = atan2(ax * by - ay * bx, ax * bx + ay * by);
-            return 180.0 - turn * (180.0 / 3.14159265358979323846);
+            double turn = qc_atan2(ax * by - ay * bx, ax * bx + ay * by);
+            return 180.0 - turn * (180.0 / QC_PI);
         }
         rs = end;
     }
