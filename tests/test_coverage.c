@@ -186,9 +186,28 @@ static void corpus_should_generate_and_measure(void)
     TEST_ASSERT_TRUE(nshapes >= 13);
 }
 
+/* Goal: points or segments outside (sampled every 0.01 in against the
+ * region grown by 0.02 in): 0, every family, every shape, spacing and seed. */
+static void every_family_should_keep_every_stitch_inside(void)
+{
+    char msg[200];
+    size_t k;
+    int fam;
+
+    run_all();
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            snprintf(msg, sizeof msg, "%s on %s: %lu segments outside, up to %.2f mm",
+                     qc_family_name(fam), shapes[k].name, (unsigned long)table[fam][k].outside,
+                     table[fam][k].outside_mm);
+            TEST_ASSERT_EQUAL_size_t_MESSAGE(0, table[fam][k].outside, msg);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(corpus_should_generate_and_measure);
+    RUN_TEST(every_family_should_keep_every_stitch_inside);
     return UNITY_END();
 }

@@ -202,7 +202,8 @@ static void generate_should_report_the_farthest_fabric(void)
         memset(&p, 0, sizeof p);
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "family", fam));
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, NULL, &res));
-        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_fabric(&ctx, &r, &res.path, 0.5, 0, NULL, &f));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_fabric(&ctx, &r, &res.path, res.params.spacing / 10,
+                                                    0, NULL, &f));
         TEST_ASSERT_TRUE(res.stats.farthest_fabric_mm > 0);
         TEST_ASSERT_DOUBLE_WITHIN(1e-9, f.farthest_mm, res.stats.farthest_fabric_mm);
         TEST_ASSERT_DOUBLE_WITHIN(1e-9, f.seam_bare, res.stats.seam_bare);

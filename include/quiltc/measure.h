@@ -25,7 +25,7 @@ extern "C" {
  * clearance, and the best cell's exact clearance (distance to the nearest
  * segment and boundary edge, O(n)) is returned. The result never exceeds
  * the true largest gap and is at most about 2.2 * resolution below it.
- * O(cells + n + path length / resolution) time, 9 bytes per cell.
+ * O(cells + n + path length / resolution) time, 5 bytes per cell.
  * centre_out (may be NULL) receives the circle's centre. n == 0 measures
  * the region alone. Returns the radius (>= 0), or a negative QC_E* code:
  * QC_EINVAL (region NULL or without rings, pts NULL with n > 0, resolution
@@ -76,17 +76,19 @@ typedef struct qc_fabric {
  * distance transform of the cells the path passes through finds the farthest
  * cell; the boundary is walked every min(resolution, 0.254) mm. Distances at
  * the farthest cell, along the boundary and at the corners are exact (a
- * segment grid answers them); farthest_mm is at most about 1.5 * resolution
- * below the true figure, never above. seam_mm 0 means 6.35 (1/4 in).
+ * segment grid answers them, with a local climb round the farthest cell):
+ * farthest_mm is never above the true figure and at most about one cell
+ * below it. seam_mm 0 means 6.35 (1/4 in).
  * corner_mm (NULL, or region->nv doubles) receives every ring vertex's
  * distance to the path. Errors: QC_EINVAL (region or out NULL, no ring,
- * n == 0, pts NULL, resolution not > 0), QC_ERANGE (NaN/inf), QC_ENOMEM.
+ * n == 0, pts NULL, resolution not > 0), QC_ERANGE (NaN/inf), QC_ELIMIT
+ * (2^31 points or more), QC_ENOMEM.
  */
 int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, size_t n,
                       const uint32_t *ends, size_t nends, double resolution, double seam_mm,
                       double *corner_mm, qc_fabric *out);
 
-/* qc_fabric_measure over every piece of path (curves flattened to 0.01 mm;
+/* qc_fabric_measure over every piece of path (curves flattened to 0.05 mm;
  * jumps between pieces are not sewn and do not count). */
 int qc_path_fabric(qc_ctx *ctx, const qc_region *region, const qc_path *path,
                    double resolution, double seam_mm, double *corner_mm, qc_fabric *out);

@@ -13,12 +13,15 @@
 
 #define SEAM_DEFAULT_MM 6.35 /* 1/4 in: a seam allowance */
 #define BOUNDARY_STEP_MM 0.254 /* 0.01 in */
+#define FLATTEN_MM 0.05     /* curves to polylines: a fiftieth of a stitch */
 #define SHARP_DEG 150.0      /* corners sharper than this count in worst_corner_mm */
 
-/* The path's segments (a point piece is a segment a == b) in a bucket grid. */
+/* The path's segments in a bucket grid: segment k ends at point
+ * seg[k] & ~POINT_BIT and starts one before, or there too (a point piece). */
+#define POINT_BIT 0x80000000u
 typedef struct seg_index {
     const qc_vec2 *pts;
-    uint32_t *seg;   /* 2 per segment: its end indices */
+    uint32_t *seg;
     size_t nseg;
     double x0, y0, cell;
     size_t gx, gy;
@@ -34,10 +37,19 @@ static size_t cell_of(double v, double lo, double cell, size_t count)
     return f > 0.0 ? (size_t)(f < m ? f : m) : 0;
 }
 
+static void seg_ends(const seg_index *s, size_t k, qc_vec2 *a, qc_vec2 *b)
+{
+    uint32_t e = s->seg[k];
+
+    *b = s->pts[e & ~POINT_BIT];
+    *a = (e & POINT_BIT) ? *b : s->pts[e - 1];
+}
+
 static void seg_cells(const seg_index *s, size_t k, size_t c[4])
 {
-    qc_vec2 a = s->pts[s->seg[2 * k]], b = s->pts[s->seg[2 * k + 1]];
+    qc_vec2 a, b;
 
+    seg_ends(s, k, &a, &b);
     c[0] = cell_of(fmin(a.x, b.x), s->x0, s->cell, s->gx);
     c[1] = cell_of(fmin(a.y, b.y), s->y0, s->cell, s->gy);
     c[2] = cell_of(fmax(a.x, b.x), s->x0, s->cell, s->gx);
@@ -46,7 +58,7 @@ static void seg_cells(const seg_index *s, size_t k, size_t c[4])
 
 static void seg_index_free(qc_ctx *ctx, seg_index *s)
 {
-    qc__free(ctx, s->seg, 2 * s->nseg * sizeof *s->seg);
+    qc__free(ctx, s->seg, s->nseg * sizeof *s->seg);
     qc__free(ctx, s->start, (s->gx * s->gy + 1) * sizeof *s->start);
     qc__free(ctx, s->item, s->nitem * sizeof *s->item);
     memset(s, 0, sizeof *s);
@@ -57,41 +69,39 @@ static int seg_index_build(qc_ctx *ctx, seg_index *s, const qc_vec2 *pts, size_t
 {
     size_t k, b = 0, q, x, y, c[4], ncell, np = ends != NULL ? nends : 1;
     qc_bbox box = qc__points_bbox(pts, n);
+    int pass;
     double side;
 
     memset(s, 0, sizeof *s);
     s->pts = pts;
-    s->seg = qc__alloc_array(ctx, 2 * (n + np), sizeof *s->seg);
-    if (s->seg == NULL)
-        return QC_ENOMEM;
-    for (q = 0; q < np; q++) {
-        size_t e = ends != NULL ? ends[q] : n, i;
-        if (e > n)
-            e = n;
-        if (e == b + 1) {
-            s->seg[2 * s->nseg] = s->seg[2 * s->nseg + 1] = (uint32_t)b;
-            s->nseg++;
+    for (pass = 0; pass < 2; pass++) { /* count, then fill */
+        b = 0;
+        s->nseg = 0;
+        for (q = 0; q < np; q++) {
+            size_t e = ends != NULL ? ends[q] : n, i;
+            if (e > n)
+                e = n;
+            if (e == b + 1) {
+                if (pass)
+                    s->seg[s->nseg] = (uint32_t)b | POINT_BIT;
+                s->nseg++;
+            }
+            for (i = b + 1; i < e; i++) {
+                if (pass)
+                    s->seg[s->nseg] = (uint32_t)i;
+                s->nseg++;
+            }
+            b = e > b ? e : b;
         }
-        for (i = b + 1; i < e; i++) {
-            s->seg[2 * s->nseg] = (uint32_t)(i - 1);
-            s->seg[2 * s->nseg + 1] = (uint32_t)i;
-            s->nseg++;
+        if (s->nseg == 0) { /* no piece given: the first point */
+            if (pass)
+                s->seg[0] = POINT_BIT;
+            s->nseg = 1;
         }
-        b = e > b ? e : b;
-    }
-    /* keep the allocation's size honest for the free */
-    {
-        uint32_t *t = qc__realloc(ctx, s->seg, 2 * (n + np) * sizeof *s->seg,
-                                  2 * (s->nseg ? s->nseg : 1) * sizeof *s->seg);
-        if (t == NULL) {
-            qc__free(ctx, s->seg, 2 * (n + np) * sizeof *s->seg);
-            s->seg = NULL;
+        if (!pass && (s->seg = qc__alloc_array(ctx, s->nseg, sizeof *s->seg)) == NULL) {
             s->nseg = 0;
             return QC_ENOMEM;
         }
-        s->seg = t;
-        if (s->nseg == 0)
-            s->nseg = 1, s->seg[0] = s->seg[1] = 0;
     }
     side = fmax(box.max.x - box.min.x, box.max.y - box.min.y);
     s->cell = qc__fit_cell(box, fmax(side / sqrt((double)s->nseg + 1.0), 1e-3),
@@ -155,8 +165,9 @@ static double seg_index_dist(const seg_index *s, qc_vec2 q, double bound)
         for (x = x0; x <= x1; x++) {
             size_t c = y * s->gx + x;
             for (k = s->start[c]; k < s->start[c + 1]; k++) {
-                uint32_t g = s->item[k];
-                best = fmin(best, qc__seg_dist2(q, s->pts[s->seg[2 * g]], s->pts[s->seg[2 * g + 1]]));
+                qc_vec2 a, e;
+                seg_ends(s, s->item[k], &a, &e);
+                best = fmin(best, qc__seg_dist2(q, a, e));
             }
         }
     return sqrt(best);
@@ -174,7 +185,7 @@ static double bound_at(const fabric_run *r, qc_vec2 q)
 {
     const qc__gap_grid *g = &r->g;
     size_t i = cell_of(q.x, g->x0, g->h, g->nx), j = cell_of(q.y, g->y0, g->h, g->ny);
-    double f = g->f[j * g->nx + i];
+    double f = (double)g->f[j * g->nx + i];
 
     if (f >= 0.5 * QC__GAP_FAR)
         return HUGE_VAL;
@@ -184,6 +195,34 @@ static double bound_at(const fabric_run *r, qc_vec2 q)
 static double exact_at(const fabric_run *r, qc_vec2 q)
 {
     return seg_index_dist(&r->s, q, bound_at(r, q));
+}
+
+/* Climbs from the winning cell centre: exact distances on a 7 x 7 lattice
+ * one cell either side, then a third of that round the best, so the figure
+ * hardly depends on the raster (check and --stats use different ones). */
+static void refine(const fabric_run *r, const qc_region *region, const unsigned char *mask,
+                   qc_fabric *out)
+{
+    double span = r->g.h;
+    int round, i, j;
+
+    for (round = 0; round < 2; round++, span /= 3.0) {
+        qc_vec2 c = out->farthest_at;
+        for (j = -3; j <= 3; j++)
+            for (i = -3; i <= 3; i++) {
+                qc_vec2 q = QC__V2(c.x + span * i / 3.0, c.y + span * j / 3.0);
+                size_t ci = cell_of(q.x, r->g.x0, r->g.h, r->g.nx);
+                size_t cj = cell_of(q.y, r->g.y0, r->g.h, r->g.ny);
+                double d;
+                if (!mask[cj * r->g.nx + ci] || !qc_region_contains(region, q))
+                    continue;
+                d = exact_at(r, q);
+                if (d > out->farthest_mm) {
+                    out->farthest_mm = d;
+                    out->farthest_at = q;
+                }
+            }
+    }
 }
 
 double qc_region_corner_angle(const qc_region *region, size_t i)
@@ -216,6 +255,9 @@ static int check_args(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
     if (!(resolution > 0.0) || !(resolution < HUGE_VAL))
         return qc__fail(ctx, QC_EINVAL, "fabric measure: resolution %g mm must be > 0",
                         resolution);
+    if (n >= POINT_BIT)
+        return qc__fail(ctx, QC_ELIMIT, "fabric measure: %lu points exceed 2^31",
+                        (unsigned long)n);
     for (i = 0; i < n; i++)
         if (!isfinite(pts[i].x) || !isfinite(pts[i].y))
             return qc__fail(ctx, QC_ERANGE, "fabric measure: point %lu is not finite",
@@ -300,7 +342,7 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
     if (rc < 0)
         goto out;
     for (k = 0; k < cells; k++)
-        r.g.f[k] = QC__GAP_FAR;
+        r.g.f[k] = (float)QC__GAP_FAR;
     for (q = 0; q < np; q++) {
         size_t e = ends != NULL ? ends[q] : n, i;
         if (e > n)
@@ -318,8 +360,8 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
     if (rc < 0)
         goto out;
     for (k = 0; k < cells; k++)
-        if (mask[k] && r.g.f[k] > best) {
-            best = r.g.f[k];
+        if (mask[k] && (double)r.g.f[k] > best) {
+            best = (double)r.g.f[k];
             best_at = k;
         }
     if (best >= 0.0) {
@@ -328,6 +370,7 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
         c.y = r.g.y0 + ((double)(best_at / r.g.nx) + 0.5) * r.g.h;
         out->farthest_mm = exact_at(&r, c);
         out->farthest_at = c;
+        refine(&r, region, mask, out);
     }
     walk_boundary(&r, region, seam_mm, corner_mm, out);
 out:
@@ -346,7 +389,7 @@ int qc_path_fabric(qc_ctx *ctx, const qc_region *region, const qc_path *path,
 
     if (path == NULL)
         return qc__fail(ctx, QC_EINVAL, "fabric measure: path is NULL");
-    rc = qc_curve_flatten(ctx, path, 0.01, &flat, &ends);
+    rc = qc_curve_flatten(ctx, path, FLATTEN_MM, &flat, &ends);
     if (rc == QC_OK)
         rc = qc_fabric_measure(ctx, region, flat.v, flat.n, ends.i, ends.n, resolution,
                                seam_mm, corner_mm, out);

@@ -26,7 +26,7 @@ void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
         if (x >= -1.0 && y >= -1.0 && x < (double)g->nx + 1.0 && y < (double)g->ny + 1.0) {
             x = fmin(fmax(x, 0.0), (double)(g->nx - 1));
             y = fmin(fmax(y, 0.0), (double)(g->ny - 1));
-            g->f[(size_t)y * g->nx + (size_t)x] = 0.0;
+            g->f[(size_t)y * g->nx + (size_t)x] = 0.0f;
         }
     }
 }
@@ -66,14 +66,17 @@ int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
     z = out + m;
     for (i = 0; i < g->nx; i++) {
         for (j = 0; j < g->ny; j++)
-            col[j] = g->f[j * g->nx + i];
+            col[j] = (double)g->f[j * g->nx + i];
         qc__edt_1d(col, g->ny, out, v, z);
         for (j = 0; j < g->ny; j++)
-            g->f[j * g->nx + i] = out[j];
+            g->f[j * g->nx + i] = (float)out[j];
     }
     for (j = 0; j < g->ny; j++) {
-        memcpy(col, g->f + j * g->nx, g->nx * sizeof *col);
-        qc__edt_1d(col, g->nx, g->f + j * g->nx, v, z);
+        for (i = 0; i < g->nx; i++)
+            col[i] = (double)g->f[j * g->nx + i];
+        qc__edt_1d(col, g->nx, out, v, z);
+        for (i = 0; i < g->nx; i++)
+            g->f[j * g->nx + i] = (float)out[i];
     }
     qc__free(ctx, col, (3 * m + 1) * sizeof *col);
     qc__free(ctx, v, m * sizeof *v);
@@ -152,7 +155,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)
-        g.f[k] = QC__GAP_FAR;
+        g.f[k] = (float)QC__GAP_FAR;
     {
         size_t b = 0, q;
         for (q = 0; q < (pc->ends != NULL ? pc->nends : 1); q++) {
@@ -175,8 +178,8 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)
-        if (mask[k] && g.f[k] > best) {
-            best = g.f[k];
+        if (mask[k] && (double)g.f[k] > best) {
+            best = (double)g.f[k];
             best_at = k;
         }
 out:

@@ -28,7 +28,7 @@ QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double 
 typedef struct qc__gap_grid {
     double x0, y0, h;
     size_t nx, ny;
-    double *f;
+    float *f; /* squared cell distances: integers, exact in a float up to 2^24 */
 } qc__gap_grid;
 
 /* Sizes g over box at resolution (raised until at most 2^22 cells); f NULL. */

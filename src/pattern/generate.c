@@ -8,14 +8,14 @@
 
 #include "internal.h"
 #include "../region/region_index.h"
+#include "../curve/keep_inside.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
 #define STATS_TOL_MM 0.05
-/* The farthest-fabric raster: d / 10, and no coarser than `quiltc check`'s
- * 0.5 mm so both report the same figure. */
+/* The farthest-fabric raster: d / 10 (its cells grow with the points, so
+ * memory stays linear); exact along the boundary and at the winner. */
 #define FABRIC_RES 0.1
-#define FABRIC_RES_MAX_MM 0.5
 
 static qc_family_fn family_fn(int family)
 {
@@ -194,6 +194,8 @@ static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
     QC__TRY(build_skeleton(ctx, region, p, res, &skel));
     trace(ctx, "decorate");
     QC__TRY(fn(ctx, region, p, &skel, motifs, &res->path, &res->stats));
+    if (p->tile != QC_TILE_EDGE_TO_EDGE && p->tile != QC_TILE_ALL_OVER) /* tiles: many regions */
+        QC__TRY(qc__path_keep_inside(ctx, region, qc_family_name(p->family), &res->path, NULL));
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
                         qc_family_name(p->family));
@@ -242,7 +244,7 @@ int qc_result_measure(qc_ctx *ctx, const qc_region *region, qc_result *res)
     qc_fabric f;
 
     QC__TRY(qc_path_fabric(ctx, region, &res->path,
-                           fmin(res->params.spacing * FABRIC_RES, FABRIC_RES_MAX_MM), 0.0,
+                           res->params.spacing * FABRIC_RES, 0.0,
                            NULL, &f));
     res->stats.farthest_fabric_mm = f.farthest_mm;
     res->stats.seam_bare = f.seam_bare;
