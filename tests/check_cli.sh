@@ -87,7 +87,9 @@ s = json.load(open("s.json"))
 n = len(s["points"])
 assert s["units"] == "mm" and n > 10, s
 assert len(s["edges"]) == n - 1 and len(s["order"]) == 2 * (n - 1) + 1, s
-assert abs(s["length_mm"] - 2 * 10 * (n - 1)) < 1e-6, s["length_mm"]
+p = s["points"]
+tree = sum(((p[a][0] - p[b][0]) ** 2 + (p[a][1] - p[b][1]) ** 2) ** 0.5 for a, b in s["edges"])
+assert abs(s["length_mm"] - 2 * tree) < 1e-6, (s["length_mm"], tree)  # the walk runs every edge twice
 ' && "$QC" skeleton --region square:60 --units mm -o s.svg && grep -q '<circle' s.svg &&
         "$QC" skeleton --region square:60 --units mm --points square --spacing 10 -o t.json \
             -o t.svg && cmp s.json t.json && grep -q '<circle' t.svg

@@ -176,8 +176,7 @@ static void print_table(void)
         printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", qc_family_name(fam), w[0], w[1], w[2],
                w[3]);
     }
-    (void)bin_deg;
-}
+    }
 
 static void corpus_should_generate_and_measure(void)
 {
@@ -204,10 +203,55 @@ static void every_family_should_keep_every_stitch_inside(void)
         }
 }
 
+/* Goal: corner to nearest stitch, worst over shapes, spacings and seeds:
+ * 90 deg <= 0.9 d, 45 <= 1.3 d, 36 <= 1.5 d, 31 <= 1.6 d (exact distances
+ * from the corner vertex to the path flattened to 0.01 mm; no tolerance).
+ * Pebbling and packing (pebbles keep off the seams) and spiral do not meet
+ * it yet (docs/coverage.md). */
+static void families_should_reach_into_corners(void)
+{
+    static const double goal[NBIN] = {0.9, 1.3, 1.5, 1.6};
+    char msg[200];
+    size_t k;
+    int fam, b;
+
+    run_all();
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++) {
+        if (fam == QC_FAMILY_PEBBLING || fam == QC_FAMILY_PACKING || fam == QC_FAMILY_SPIRAL)
+            continue;
+        for (k = 0; k < nshapes; k++)
+            for (b = 0; b < NBIN; b++) {
+                snprintf(msg, sizeof msg, "%s on %s: %.0f deg corner %.2f d from a stitch",
+                         qc_family_name(fam), shapes[k].name, bin_deg[b], table[fam][k].corner[b]);
+                if (!(table[fam][k].corner[b] <= goal[b]))
+                    TEST_FAIL_MESSAGE(msg);
+            }
+    }
+}
+
+/* Every family makes a pattern on every shape at both spacings (the 0.75 in
+ * border at d = 0.6 in gets one row of points instead of "no point fits"). */
+static void every_family_should_fill_every_shape(void)
+{
+    char msg[QC_ERRMSG_MAX + 100];
+    size_t k;
+    int fam;
+
+    run_all();
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            snprintf(msg, sizeof msg, "%s on %s: %s", qc_family_name(fam), shapes[k].name,
+                     table[fam][k].why);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(0, table[fam][k].failed, msg);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(corpus_should_generate_and_measure);
     RUN_TEST(every_family_should_keep_every_stitch_inside);
+    RUN_TEST(families_should_reach_into_corners);
+    RUN_TEST(every_family_should_fill_every_shape);
     return UNITY_END();
 }

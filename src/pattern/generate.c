@@ -9,6 +9,7 @@
 #include "internal.h"
 #include "../region/region_index.h"
 #include "../curve/keep_inside.h"
+#include "../sample/sample_internal.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
@@ -93,6 +94,8 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
     sp.margin = p->margin;
     sp.seed = p->seed;
     QC__TRY(qc_sample(ctx, region, &sp, out));
+    /* into corners, star points and strips the fill cannot reach */
+    QC__TRY(qc__sample_medial(ctx, region, p->spacing, p->margin, out));
     if (out->n == 0)
         return qc__fail(ctx, QC_EEMPTY,
                         "no point fits in the region at spacing %g mm with margin %g mm",
