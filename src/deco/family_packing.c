@@ -1,0 +1,378 @@
+/*
+ * Shape Packing (paper §5.3.2): pebbling first (shared_pebble_pack.c), then every
+ * pebble replaced by a motif whose minimum bounding circle is the pebble
+ * (the motif's unit frame scaled by the radius), turned so the motif's
+ * start faces the pebble it hangs from (paper Fig. 12). The motifs stay one
+ * path: each child is sewn as a detour from the point of its parent's motif
+ * nearest the child's start, out and back along a short straight stitch.
+ * The motif for each pebble is drawn from the set by the seed.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pebble_internal.h"
+
+#define FIT 0.999     /* motifs drawn this fraction of their pebble */
+#define SAMPLES 16    /* per cubic when looking for the nearest point */
+#define TRIM_TOL 1e-3 /* flattening where trimmed, times d */
+#define DRAW_IN 0.05  /* motifs kept this many mm inside their pebble and the region ... */
+#define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
+
+/* Where on motif m (unit frame) is nearest x: command *cmd at parameter *t. */
+static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
+{
+    const qc_path *p = &m->path;
+    size_t j, k = qc_path_cmd_points(p->cmd[0]);
+    double best = HUGE_VAL;
+    qc_vec2 cur = p->pt[0];
+
+    *cmd = 1;
+    *t = 0;
+    for (j = 1; j < p->ncmd; j++) {
+        const qc_vec2 *q = p->pt + k;
+        k += qc_path_cmd_points(p->cmd[j]);
+        if (p->cmd[j] == QC_PATH_CUBIC) {
+            qc_vec2 c[4];
+            int s;
+            c[0] = cur;
+            c[1] = q[0];
+            c[2] = q[1];
+            c[3] = q[2];
+            for (s = 0; s <= SAMPLES; s++) {
+                qc_vec2 b = qc_cubic_point(c, (double)s / SAMPLES);
+                double dd = qc_hypot(b.x - x.x, b.y - x.y);
+                if (dd < best) {
+                    best = dd;
+                    *cmd = (uint32_t)j;
+                    *t = (double)s / SAMPLES;
+                }
+            }
+            cur = q[2];
+        } else {
+            double ex = q[0].x - cur.x, ey = q[0].y - cur.y, l2 = ex * ex + ey * ey;
+            double tt = l2 > 0 ? ((x.x - cur.x) * ex + (x.y - cur.y) * ey) / l2 : 0, dd;
+            tt = tt < 0 ? 0 : tt > 1 ? 1 : tt;
+            dd = qc_hypot(cur.x + tt * ex - x.x, cur.y + tt * ey - x.y);
+            if (dd < best) {
+                best = dd;
+                *cmd = (uint32_t)j;
+                *t = tt;
+            }
+            cur = q[0];
+        }
+    }
+}
+
+typedef struct att {
+    uint32_t parent, kid, cmd;
+    double t;
+} att;
+
+static int cmp_att(const void *pa, const void *pb)
+{
+    const att *a = pa, *b = pb;
+
+    if (a->parent != b->parent)
+        return a->parent < b->parent ? -1 : 1;
+    if (a->cmd != b->cmd)
+        return a->cmd < b->cmd ? -1 : 1;
+    if (a->t != b->t)
+        return a->t < b->t ? -1 : 1;
+    return a->kid < b->kid ? -1 : a->kid > b->kid;
+}
+
+/* Per pebble a motif (seeded) and its map: entry turned towards the parent. */
+static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, uint64_t seed,
+                        double a0, double inset)
+{
+    size_t n = pb->n, i, nchoice = 0;
+    uint32_t *choice = qc__alloc_array(ctx, set->n, sizeof *choice);
+    qc_rng rng;
+
+    pb->motif = qc__alloc_array(ctx, n, sizeof *pb->motif);
+    pb->xf = qc__alloc_array(ctx, n, sizeof *pb->xf);
+    if (choice == NULL || pb->motif == NULL || pb->xf == NULL) {
+        qc__free(ctx, choice, set->n * sizeof *choice);
+        return QC_ENOMEM;
+    }
+    for (i = 0; i < set->n; i++) /* closed motifs first; open ones only if that is all */
+        if (set->m[i].legs == 0 && set->m[i].path.ncmd >= 2)
+            choice[nchoice++] = (uint32_t)i;
+    if (nchoice == 0)
+        for (i = 0; i < set->n; i++)
+            if (set->m[i].path.ncmd >= 2)
+                choice[nchoice++] = (uint32_t)i;
+    if (nchoice == 0) {
+        qc__free(ctx, choice, set->n * sizeof *choice);
+        return qc__fail(ctx, QC_EINVAL, "packing: the motif set has no drawable motif");
+    }
+    qc_rng_seed(&rng, seed ^ 0x7061636b696e67ull);
+    for (i = 0; i < n; i++) {
+        const qc_motif *m;
+        uint32_t p = pb->parent[i];
+        double want, have, s, co, si;
+        pb->motif[i] = choice[nchoice > 1 ? qc_rng_below(&rng, nchoice) : 0];
+        m = &set->m[pb->motif[i]];
+        want = p == QC__PEB_NONE ? a0
+                                 : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
+        have = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
+                                                  : -QC_PI / 2;
+        s = FIT * pb->r[i] - inset;
+        co = qc_cos(want - have);
+        si = qc_sin(want - have);
+        pb->xf[i].a = s * co;
+        pb->xf[i].b = -s * si;
+        pb->xf[i].c = s * si;
+        pb->xf[i].d = s * co;
+        pb->xf[i].tx = pb->c[i].x;
+        pb->xf[i].ty = pb->c[i].y;
+    }
+    qc__free(ctx, choice, set->n * sizeof *choice);
+    return QC_OK;
+}
+
+/* The motif points all copies would hold, refused over the budget before
+ * any copy is drawn. */
+static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set)
+{
+    double total = 0;
+    size_t i, most = 0;
+
+    for (i = 0; i < pb->n; i++) {
+        size_t k = set->m[pb->motif[i]].path.npt;
+        total += (double)k;
+        most = k > most ? k : most;
+    }
+    if (total > (double)QC_MAX_PACKED_POINTS)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "packing: %lu motif copies (up to %lu points each) make %.0f points, "
+                        "over the limit of %u; use a simpler motif or raise the spacing",
+                        (unsigned long)pb->n, (unsigned long)most, total, QC_MAX_PACKED_POINTS);
+    return QC_OK;
+}
+
+/* x in the unit frame of f. */
+static qc_vec2 unmap(const qc__xf *f, qc_vec2 x)
+{
+    double det = f->a * f->d - f->b * f->c, dx = x.x - f->tx, dy = x.y - f->ty;
+    qc_vec2 u;
+    u.x = (f->d * dx - f->b * dy) / det;
+    u.y = (-f->c * dx + f->a * dy) / det;
+    return u;
+}
+
+typedef struct frame {
+    uint32_t i, cmd, pt;   /* pebble; its motif's command and point offset */
+    uint32_t next;         /* next attachment */
+    int loaded;
+    double t0;             /* the command is drawn up to t0 */
+    qc_vec2 seg[4];        /* the command's remaining piece, mm */
+    qc_vec2 back;          /* where the parent resumes */
+} frame;
+
+static void start_frame(frame *g, uint32_t i, uint32_t next, const qc_motif *m, qc_vec2 back)
+{
+    g->i = i;
+    g->cmd = 1;
+    g->pt = (uint32_t)qc_path_cmd_points(m->path.cmd[0]);
+    g->next = next;
+    g->loaded = 0;
+    g->t0 = 0;
+    g->back = back;
+}
+
+static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                  const att *atts, const uint32_t *first, qc_path *out)
+{
+    frame *st = NULL;
+    size_t sp = 0, cap = 0;
+    qc_vec2 e0;
+    int rc;
+
+    e0 = qc__xf_apply(&pb->xf[0], set->m[pb->motif[0]].entry);
+    rc = QC__RESERVE(ctx, st, cap, 64);
+    if (rc == QC_OK) {
+        start_frame(&st[0], 0, first[0], &set->m[pb->motif[0]], e0);
+        sp = 1;
+        rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, e0) : qc_path_line_to(ctx, out, e0);
+    }
+    while (rc == QC_OK && sp > 0) {
+        frame *f = &st[sp - 1];
+        const qc_motif *m = &set->m[pb->motif[f->i]];
+        const qc__xf *xf = &pb->xf[f->i];
+        int cubic;
+        if (f->cmd >= m->path.ncmd) { /* done: an open motif comes back to its start */
+            qc_vec2 entry = qc__xf_apply(xf, m->entry), back = f->back;
+            if (m->legs != 0 || m->exit.x != m->entry.x || m->exit.y != m->entry.y)
+                rc = qc_path_line_to(ctx, out, entry);
+            sp--;
+            if (rc == QC_OK && sp > 0)
+                rc = qc_path_line_to(ctx, out, back);
+            continue;
+        }
+        cubic = m->path.cmd[f->cmd] == QC_PATH_CUBIC;
+        if (!f->loaded) {
+            f->seg[0] = qc_path_last(out);
+            f->seg[1] = qc__xf_apply(xf, m->path.pt[f->pt]);
+            if (cubic) {
+                f->seg[2] = qc__xf_apply(xf, m->path.pt[f->pt + 1]);
+                f->seg[3] = qc__xf_apply(xf, m->path.pt[f->pt + 2]);
+            }
+            f->t0 = 0;
+            f->loaded = 1;
+        }
+        if (f->next < first[f->i + 1] && atts[f->next].cmd == f->cmd) {
+            const att *a = &atts[f->next++];
+            double t = a->t;
+            qc_vec2 q, ek;
+            if (t > f->t0 + 1e-12 && f->t0 < 1) {
+                double tl = (t - f->t0) / (1 - f->t0);
+                if (cubic) {
+                    qc_vec2 l[4], r[4];
+                    int z;
+                    qc_cubic_split(f->seg, tl, l, r);
+                    rc = qc_path_cubic_to(ctx, out, l[1], l[2], l[3]);
+                    for (z = 0; z < 4; z++)
+                        f->seg[z] = r[z];
+                } else {
+                    f->seg[0].x += tl * (f->seg[1].x - f->seg[0].x);
+                    f->seg[0].y += tl * (f->seg[1].y - f->seg[0].y);
+                    rc = qc_path_line_to(ctx, out, f->seg[0]);
+                }
+                f->t0 = t;
+            }
+            q = qc_path_last(out);
+            ek = qc__xf_apply(&pb->xf[a->kid], set->m[pb->motif[a->kid]].entry);
+            if (rc == QC_OK)
+                rc = qc_path_line_to(ctx, out, ek);
+            if (rc == QC_OK)
+                rc = QC__RESERVE(ctx, st, cap, sp + 1);
+            if (rc == QC_OK) {
+                start_frame(&st[sp], a->kid, first[a->kid], &set->m[pb->motif[a->kid]], q);
+                sp++;
+            }
+            continue;
+        }
+        if (f->t0 < 1 - 1e-12)
+            rc = cubic ? qc_path_cubic_to(ctx, out, f->seg[1], f->seg[2], f->seg[3])
+                       : qc_path_line_to(ctx, out, f->seg[1]);
+        f->pt += (uint32_t)qc_path_cmd_points(m->path.cmd[f->cmd]);
+        f->cmd++;
+        f->loaded = 0;
+    }
+    qc__free(ctx, st, cap * sizeof *st);
+    return rc;
+}
+
+/* Children grouped by parent, in the order their parent's motif meets them. */
+static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                       att **atts_out, uint32_t **first_out)
+{
+    size_t n = pb->n, i, m = 0;
+    att *atts = qc__alloc_array(ctx, n, sizeof *atts);
+    uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
+
+    *atts_out = atts;
+    *first_out = first;
+    if (atts == NULL || first == NULL)
+        return QC_ENOMEM;
+    for (i = 0; i < n; i++) {
+        uint32_t p = pb->parent[i];
+        qc_vec2 e;
+        if (p == QC__PEB_NONE)
+            continue;
+        e = qc__xf_apply(&pb->xf[i], set->m[pb->motif[i]].entry);
+        atts[m].parent = p;
+        atts[m].kid = (uint32_t)i;
+        nearest_on(&set->m[pb->motif[p]], unmap(&pb->xf[p], e), &atts[m].cmd, &atts[m].t);
+        m++;
+    }
+    if (m > 1)
+        qsort(atts, m, sizeof *atts, cmp_att);
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < m; i++)
+        first[atts[i].parent + 1]++;
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
+    return QC_OK;
+}
+
+int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                    const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                    qc_stats *stats, qc__pebbles *keep)
+{
+    qc__pbound b;
+    qc__pebbles pb;
+    qc_motif_set def = {0};
+    qc_path raw = {0};
+    uint32_t *first = NULL, *kfirst = NULL, *kids = NULL;
+    att *atts = NULL;
+    double d = params->spacing, a0 = 0;
+    size_t n = 0;
+    int rc;
+
+    memset(&pb, 0, sizeof pb);
+    memset(&b, 0, sizeof b);
+    if (skel == NULL || skel->n == 0)
+        return qc__fail(ctx, QC_EEMPTY, "packing needs at least one point");
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EEMPTY, "packing needs a region");
+    if (motifs == NULL || motifs->n == 0) {
+        rc = qc_motif_builtin(ctx, "heart", &def);
+        if (rc != QC_OK)
+            goto out;
+        motifs = &def;
+    }
+    rc = qc__pbound_init(ctx, &b, region, d, 4 * skel->n + 4096);
+    if (rc == QC_OK)
+        rc = qc__pebbles_pack(ctx, region, &b, params, skel, &pb);
+    n = pb.n;
+    pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
+    if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
+        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
+    if (rc == QC_OK)
+        rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
+    if (rc == QC_OK)
+        rc = copies_budget(ctx, &pb, motifs);
+    if (rc == QC_OK)
+        rc = attachments(ctx, &pb, motifs, &atts, &first);
+    if (rc == QC_OK && pb.k < 1) {
+        rc = render(ctx, &pb, motifs, atts, first, &raw);
+        if (rc == QC_OK)
+            rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
+                               TRIM_TOL * d, out, &pb.trim_jumps);
+    } else if (rc == QC_OK) {
+        rc = render(ctx, &pb, motifs, atts, first, out);
+    }
+    if (rc == QC_OK && stats != NULL) {
+        rc = qc__pebbles_stats(ctx, &pb, &b, stats);
+        stats->motifs_placed += pb.n;
+    }
+out:
+    qc__free(ctx, atts, n * sizeof *atts);
+    qc__free(ctx, first, (n + 1) * sizeof *first);
+    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst);
+    qc__free(ctx, kids, n * sizeof *kids);
+    qc_path_free(ctx, &raw);
+    qc__pbound_free(ctx, &b);
+    qc_motif_set_free(ctx, &def);
+    if (rc == QC_OK && keep != NULL)
+        *keep = pb;
+    else
+        qc__pebbles_free(ctx, &pb);
+    return rc;
+}
+
+int qc_deco_packing(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                    const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                    qc_stats *stats)
+{
+    return qc__packing_run(ctx, region, params, skel, motifs, out, stats, NULL);
+}
+
+const qc_family_desc qc__family_packing = {
+    QC_FAMILY_PACKING, "packing", "pebbles replaced by motifs, one path (paper §5.3.2)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED), qc_deco_packing,
+    qc__pebble_param_default};

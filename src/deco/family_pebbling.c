@@ -1,0 +1,211 @@
+/*
+ * Pebbling (paper §5.3.1), rendering: one continuous path from the root
+ * pebble, each circle drawn once counter-clockwise; at the tangent point of
+ * each child (met counter-clockwise from where the circle was entered) the
+ * path turns onto the child, draws it the same way and comes back to the
+ * same point (paper Fig. 11 left). The path is the outline of the union of
+ * the pebbles, so it touches itself at tangent points and never crosses.
+ * Circles are drawn a little inside their radius (at most 0.05 mm, so
+ * touching pebbles stay apart once stitches are rounded to machine units)
+ * with cubic arcs that stay inside the circle. With edge overgrow the path
+ * is then trimmed to the region, inset by the same amount, and joined along
+ * its boundary (shared_pebble_trim.c).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "pebble_internal.h"
+
+#define ARC_K 0.99    /* handle length factor: a cubic arc of <= 90 degrees stays inside */
+#define DRAW_IN 0.05  /* circles drawn this many mm inside their radius ... */
+#define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
+#define TRIM_TOL 1e-3 /* flattening where trimmed, times d */
+
+static qc_vec2 on_circle(qc_vec2 c, double r, double a)
+{
+    qc_vec2 p;
+    p.x = c.x + r * qc_cos(a);
+    p.y = c.y + r * qc_sin(a);
+    return p;
+}
+
+/* The arc of (c, r) from angle a over sweep (> 0) counter-clockwise, from the
+ * current point, in cubics of at most 90 degrees; ends at *end when given. */
+static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double sweep,
+               const qc_vec2 *end)
+{
+    int i, m = (int)ceil(sweep / (QC_PI / 2) - 1e-9);
+    double th, k, s1, c1;
+
+    if (!(sweep > 1e-12))
+        return end != NULL ? qc_path_line_to(ctx, out, *end) : QC_OK;
+    if (m < 1)
+        m = 1;
+    th = sweep / m;
+    k = ARC_K * 4.0 / 3.0 * qc_sin(th / 4) / qc_cos(th / 4) * r;
+    s1 = qc_sin(a);
+    c1 = qc_cos(a);
+    for (i = 0; i < m; i++) {
+        double a1 = a + th * (i + 1), s0 = s1, c0 = c1;
+        qc_vec2 p0, p1, p2, p3;
+        s1 = qc_sin(a1);
+        c1 = qc_cos(a1);
+        p0.x = c.x + r * c0;
+        p0.y = c.y + r * s0;
+        if (i + 1 == m && end != NULL) {
+            p3 = *end;
+        } else {
+            p3.x = c.x + r * c1;
+            p3.y = c.y + r * s1;
+        }
+        p1.x = p0.x - k * s0;
+        p1.y = p0.y + k * c0;
+        p2.x = p3.x + k * s1;
+        p2.y = p3.y - k * c1;
+        QC__TRY(qc_path_cubic_to(ctx, out, p1, p2, p3));
+    }
+    return QC_OK;
+}
+
+/* (0, 2 pi] */
+static double wrap(double a)
+{
+    while (a <= 0)
+        a += 2 * QC_PI;
+    while (a > 2 * QC_PI)
+        a -= 2 * QC_PI;
+    return a;
+}
+
+typedef struct frame {
+    uint32_t i, next;
+    double entry, cur;  /* entry angle; how far round from it */
+    qc_vec2 start, back; /* where this circle began; where its parent resumes */
+} frame;
+
+static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
+{
+    uint32_t *first = NULL, *kids = NULL;
+    frame *st = NULL;
+    size_t sp = 0, cap = 0;
+    double a0;
+    int rc;
+
+    rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0);
+    if (rc == QC_OK)
+        rc = QC__RESERVE(ctx, st, cap, 64);
+    if (rc == QC_OK) {
+        st[0].i = 0;
+        st[0].next = first[0];
+        st[0].entry = a0;
+        st[0].cur = 0;
+        st[0].start = on_circle(pb->c[0], pb->r[0] - eps, a0);
+        st[0].back = st[0].start;
+        sp = 1;
+        rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, st[0].start)
+                            : qc_path_line_to(ctx, out, st[0].start);
+    }
+    while (rc == QC_OK && sp > 0) {
+        frame *f = &st[sp - 1];
+        uint32_t i = f->i;
+        double ri = pb->r[i] - eps;
+        if (f->next < first[i + 1]) {
+            uint32_t c = kids[f->next++];
+            double phi = qc_atan2(pb->c[c].y - pb->c[i].y, pb->c[c].x - pb->c[i].x);
+            double key = wrap(phi - f->entry);
+            qc_vec2 ti = on_circle(pb->c[i], ri, phi), tc = ti;
+            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, key - f->cur, &ti);
+            if (key > f->cur)
+                f->cur = key;
+            /* a tangent child starts where its parent turns (a cusp the
+             * stitches cannot cross); a bridged one at the end of its stitch */
+            if (rc == QC_OK && (pb->flags[c] & QC__PEB_BRIDGE)) {
+                tc = on_circle(pb->c[c], pb->r[c] - eps, phi + QC_PI);
+                rc = qc_path_line_to(ctx, out, tc);
+            }
+            if (rc == QC_OK)
+                rc = QC__RESERVE(ctx, st, cap, sp + 1);
+            if (rc == QC_OK) {
+                frame *g = &st[sp++];
+                g->i = c;
+                g->next = first[c];
+                g->entry = phi + QC_PI;
+                g->cur = 0;
+                g->start = tc;
+                g->back = ti;
+            }
+        } else {
+            qc_vec2 back = f->back, start = f->start;
+            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, 2 * QC_PI - f->cur, &start);
+            sp--;
+            if (rc == QC_OK && sp > 0 && (back.x != start.x || back.y != start.y))
+                rc = qc_path_line_to(ctx, out, back);
+        }
+    }
+    qc__free(ctx, st, cap * sizeof *st);
+    qc__free(ctx, first, (pb->n + 1) * sizeof *first);
+    qc__free(ctx, kids, pb->n * sizeof *kids);
+    return rc;
+}
+
+int qc__pebbling_run(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                     const qc_skeleton *skel, qc_path *out, qc_stats *stats, qc__pebbles *keep)
+{
+    qc__pbound b;
+    qc__pebbles pb;
+    qc_path raw = {0};
+    double d = params->spacing;
+    int rc;
+
+    memset(&pb, 0, sizeof pb);
+    if (skel == NULL || skel->n == 0)
+        return qc__fail(ctx, QC_EEMPTY, "pebbling needs at least one point");
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EEMPTY, "pebbling needs a region");
+    rc = qc__pbound_init(ctx, &b, region, d, 4 * skel->n + 4096);
+    if (rc != QC_OK)
+        return rc;
+    rc = qc__pebbles_pack(ctx, region, &b, params, skel, &pb);
+    if (rc == QC_OK)
+        pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
+    if (rc == QC_OK && pb.k < 1) {
+        rc = render(ctx, &pb, pb.draw_in, &raw);
+        if (rc == QC_OK)
+            rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
+                               TRIM_TOL * d, out, &pb.trim_jumps);
+    } else if (rc == QC_OK) {
+        rc = render(ctx, &pb, pb.draw_in, out);
+    }
+    if (rc == QC_OK && stats != NULL)
+        rc = qc__pebbles_stats(ctx, &pb, &b, stats);
+    qc_path_free(ctx, &raw);
+    qc__pbound_free(ctx, &b);
+    if (rc == QC_OK && keep != NULL)
+        *keep = pb;
+    else
+        qc__pebbles_free(ctx, &pb);
+    return rc;
+}
+
+int qc_deco_pebbling(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                     const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                     qc_stats *stats)
+{
+    (void)motifs;
+    return qc__pebbling_run(ctx, region, params, skel, out, stats, NULL);
+}
+
+/* Snub-square points by default: their even spacing packs the pebbles tightest. */
+int qc__pebble_param_default(const qc_params *p, int id, double *value)
+{
+    (void)p;
+    if (id != QC_PARAM_ID_POINTS)
+        return 0;
+    *value = QC_POINTS_SNUB;
+    return 1;
+}
+
+const qc_family_desc qc__family_pebbling = {
+    QC_FAMILY_PEBBLING, "pebbling", "packed circles drawn as one path (paper §5.3.1)",
+    QC_FAMILY_NEEDS_POINTS, QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED),
+    qc_deco_pebbling, qc__pebble_param_default};

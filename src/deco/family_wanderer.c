@@ -1,0 +1,455 @@
+/*
+ * Wanderer (paper §5.2): a two-legged primitive centred on each tour point,
+ * its leg bisector turned towards CC_prev + CC_next, the variant (and
+ * mirror image) whose legs make angles closest to 60 degrees with the
+ * directions to its neighbours; neighbours joined by cubic Béziers that
+ * leave and meet the legs with tangents l * |P0P3|. A join that would cross
+ * another primitive's hull, another join or the boundary is retried with
+ * shorter tangents (l/2, l/4, 0), then with the next primitive's other
+ * variants; what still crosses is kept as stated and counted. A primitive
+ * whose hull reaches the boundary is shrunk (3/4, then 1/2).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "deco_internal.h"
+
+enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 };
+
+typedef struct prim {
+    qc__xf xf;
+    uint32_t m;
+    uint32_t rec;  /* its hull's record in the grid */
+    qc_vec2 entry, exit, in_dir, out_dir; /* world */
+    qc_vec2 bis;   /* where the legs' bisector points */
+} prim;
+
+typedef struct cand {
+    double score;
+    uint32_t m;
+    int mirror;
+} cand;
+
+typedef struct wrun {
+    qc_ctx *ctx;
+    const qc_motif_set *set;
+    uint32_t *var;
+    size_t nvar;
+    double s;
+    qc__cgrid grid;
+    uint32_t *rec_owner; /* hull records: owner primitive, or UINT32_MAX when replaced */
+    size_t nrec, rec_cap;
+    qc_vec2 *hbuf;
+    size_t nhbuf;
+} wrun;
+
+static qc_vec2 unit(double x, double y)
+{
+    double len = qc_hypot(x, y);
+    qc_vec2 r = {0, 0};
+    if (len > 0) {
+        r.x = x / len;
+        r.y = y / len;
+    }
+    return r;
+}
+
+static double angle_between(qc_vec2 a, qc_vec2 b)
+{
+    return qc_atan2(a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y) * (180 / QC_PI);
+}
+
+/* A unit direction mapped by f, a similarity of scale k. */
+static qc_vec2 lin(const qc__xf *f, qc_vec2 d, double k)
+{
+    qc_vec2 r;
+    r.x = (f->a * d.x + f->b * d.y) / k;
+    r.y = (f->c * d.x + f->d * d.y) / k;
+    return r;
+}
+
+/* The map of motif m centred at c, bisector along bis, scaled k, mirrored or not. */
+static qc__xf orient(const qc_motif *m, qc_vec2 c, qc_vec2 bis, double k, int mirror)
+{
+    qc_vec2 mb = unit(m->entry_dir.x + m->exit_dir.x, m->entry_dir.y + m->exit_dir.y);
+    double co, si, a, b, cc, d;
+    qc__xf f;
+
+    if (mb.x == 0 && mb.y == 0)
+        mb.y = -1;
+    co = mb.x * bis.x + mb.y * bis.y;
+    si = mb.x * bis.y - mb.y * bis.x;
+    a = co; b = -si; cc = si; d = co;
+    if (mirror) { /* reflect about the motif's bisector first: H = 2 mb mb^T - I */
+        double h00 = 2 * mb.x * mb.x - 1, h01 = 2 * mb.x * mb.y, h11 = 2 * mb.y * mb.y - 1;
+        double na = a * h00 + b * h01, nb = a * h01 + b * h11;
+        double nc = cc * h00 + d * h01, nd = cc * h01 + d * h11;
+        a = na; b = nb; cc = nc; d = nd;
+    }
+    f.a = k * a; f.b = k * b; f.c = k * cc; f.d = k * d;
+    f.tx = c.x;
+    f.ty = c.y;
+    return f;
+}
+
+static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 bis)
+{
+    const qc_motif *mo = &w->set->m[m];
+    prim p;
+
+    memset(&p, 0, sizeof p);
+    p.xf = orient(mo, c, bis, w->s / 2, mirror);
+    p.m = m;
+    p.in_dir = lin(&p.xf, mo->entry_dir, w->s / 2);
+    p.out_dir = lin(&p.xf, mo->exit_dir, w->s / 2);
+    p.entry = qc__xf_apply(&p.xf, mo->entry);
+    p.exit = qc__xf_apply(&p.xf, mo->exit);
+    p.bis = bis;
+    return p;
+}
+
+/* Every (variant, mirror) for tour point i, best first; returns the count. */
+static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd)
+{
+    size_t n = sk->norder, v, k, nc = 0;
+    qc_vec2 c = sk->p[sk->order[i]];
+    qc_vec2 pv = sk->p[sk->order[(i + n - 1) % n]], nx = sk->p[sk->order[(i + 1) % n]];
+    qc_vec2 dp = unit(pv.x - c.x, pv.y - c.y), dn = unit(nx.x - c.x, nx.y - c.y);
+    qc_vec2 bis = unit(dp.x + dn.x, dp.y + dn.y);
+    int mir;
+
+    if (bis.x == 0 && bis.y == 0) /* straight through: bend to the left */
+        bis = unit(-dn.y, dn.x);
+    if (bis.x == 0 && bis.y == 0)
+        bis.y = -1;
+    if (n == 1)
+        dp = dn = bis;
+    for (v = 0; v < w->nvar && nc < MAXV; v++) {
+        for (mir = 0; mir < 2; mir++) {
+            prim p = make_prim(w, w->var[v], mir, c, bis);
+            cand t;
+            /* a quick measure: unit vectors 60 degrees apart are 1 apart */
+            t.score = fabs(qc_hypot(p.in_dir.x - dp.x, p.in_dir.y - dp.y) - 1) +
+                      fabs(qc_hypot(p.out_dir.x - dn.x, p.out_dir.y - dn.y) - 1);
+            t.m = w->var[v];
+            t.mirror = mir;
+            for (k = nc; k > 0 && cd[k - 1].score > t.score + 1e-9; k--)
+                cd[k] = cd[k - 1];
+            cd[k] = t;
+            nc++;
+        }
+    }
+    *bis_out = bis;
+    return nc;
+}
+
+typedef struct skipctx {
+    const wrun *w;
+    uint32_t i, n, seg;
+} skipctx;
+
+static int skip_seg(void *ud, unsigned kind, uint32_t id, size_t seg)
+{
+    const skipctx *s = ud;
+    uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
+    if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
+        uint32_t owner = s->w->rec_owner[id];
+        return owner == UINT32_MAX || owner == s->i || owner == next;
+    }
+    if (kind == K_JOIN) /* neighbouring joins share end points */
+        return (id == prev && seg < 2) || (id == next && seg + 2 >= NFLAT);
+    return 0;
+}
+
+static int skip_fn(void *ud, unsigned kind, uint32_t id)
+{
+    const skipctx *s = ud;
+    uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
+    if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
+        uint32_t owner = s->w->rec_owner[id];
+        return owner == UINT32_MAX || owner == s->i || owner == next;
+    }
+    if (kind == K_JOIN) /* neighbouring joins share end points */
+        return (id == prev && s->seg < 2) || (id == next && s->seg + 2 >= NFLAT);
+    return 0;
+}
+
+static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_vec2 *c2)
+{
+    double len = qc_hypot(b->entry.x - a->exit.x, b->entry.y - a->exit.y) * l;
+    c1->x = a->exit.x + a->out_dir.x * len;
+    c1->y = a->exit.y + a->out_dir.y * len;
+    c2->x = b->entry.x + b->in_dir.x * len;
+    c2->y = b->entry.y + b->in_dir.y * len;
+}
+
+static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
+{
+    int k;
+    for (k = 0; k <= NFLAT; k++) {
+        double t = (double)k / NFLAT, u = 1 - t;
+        double w0 = u * u * u, w1 = 3 * u * u * t, w2 = 3 * u * t * t, w3 = t * t * t;
+        o[k].x = w0 * p0.x + w1 * c1.x + w2 * c2.x + w3 * p3.x;
+        o[k].y = w0 * p0.y + w1 * c1.y + w2 * c2.y + w3 * p3.y;
+    }
+}
+
+/* Whether the join i (polyline f) crosses anything it must not. */
+static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
+{
+    skipctx sk;
+
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)n;
+    sk.seg = 0;
+    return qc__cgrid_hit_polyline(&w->grid, f, NFLAT + 1,
+                                  1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN, skip_seg, &sk);
+}
+
+/* Adds primitive i's hull as a new record. */
+static int add_hull(wrun *w, prim *p, uint32_t owner)
+{
+    const qc_motif *m = &w->set->m[p->m];
+    size_t k;
+
+    QC__TRY(QC__RESERVE(w->ctx, w->rec_owner, w->rec_cap, w->nrec + 1));
+    for (k = 0; k < m->nhull; k++)
+        w->hbuf[k] = qc__xf_apply(&p->xf, m->hull[k]);
+    QC__TRY(qc__cgrid_add(w->ctx, &w->grid, w->hbuf, m->nhull, K_PRIM, (uint32_t)w->nrec));
+    p->rec = (uint32_t)w->nrec;
+    w->rec_owner[w->nrec++] = owner;
+    return QC_OK;
+}
+
+/* Tries the tangent ladder for join a -> b: 1 and the controls when clear. */
+static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, size_t n,
+                    qc_vec2 *c1, qc_vec2 *c2, qc_vec2 *f)
+{
+    static const double shrink[] = {1, 0.5, 0.25, 0};
+    size_t tr;
+
+    for (tr = 0; tr < 4; tr++) {
+        join_ctrl(a, b, l * shrink[tr], c1, c2);
+        flat_join(a->exit, *c1, *c2, b->entry, f);
+        if (!join_hits(w, f, i, n))
+            return 1;
+        if (l == 0)
+            break;
+    }
+    return 0;
+}
+
+int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                     const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
+                     qc_stats *stats)
+{
+    qc_motif_set def = {0};
+    wrun w;
+    prim *pr = NULL;
+    cand cd[MAXV];
+    size_t n, i, maxhull = 0;
+    double l = params->tangent;
+    qc_stats dummy;
+    int rc = QC_OK;
+
+    memset(&w, 0, sizeof w);
+    if (stats == NULL)
+        stats = memset(&dummy, 0, sizeof dummy);
+    if (skel == NULL || skel->norder == 0)
+        return qc__fail(ctx, QC_EEMPTY, "wanderer needs at least one point");
+    if (!(params->size > 0))
+        return qc__fail(ctx, QC_ERANGE, "motif size %g mm must be > 0", params->size);
+    if (!(l >= 0))
+        l = 0;
+    n = skel->norder;
+    w.ctx = ctx;
+    w.s = params->size;
+    w.set = motifs;
+    if (motifs != NULL)
+        for (i = 0; i < motifs->n; i++)
+            w.nvar += motifs->m[i].legs == 2;
+    if (w.nvar == 0) { /* no primitive with legs: the built-in variants of the
+                        * motifs named ("heart" -> heart60, heart90), else the loops */
+        char names[512];
+        size_t len = 0, b;
+        names[0] = '\0';
+        for (i = 0; motifs != NULL && i < motifs->n; i++) {
+            size_t nl = strlen(motifs->m[i].name);
+            for (b = 0; b < qc_motif_builtin_count(); b++) {
+                const char *bn = qc_motif_builtin_name(b);
+                size_t bl = strlen(bn);
+                if (nl == 0 || bl <= nl || memcmp(bn, motifs->m[i].name, nl) != 0 ||
+                    bn[nl] < '0' || bn[nl] > '9' || len + bl + 2 > sizeof names)
+                    continue;
+                if (len > 0)
+                    names[len++] = ',';
+                memcpy(names + len, bn, bl + 1);
+                len += bl;
+            }
+        }
+        rc = qc_motif_builtin(ctx, len > 0 ? names : "loop30,loop60,loop90,loop120", &def);
+        if (rc != QC_OK) {
+            qc_motif_set_free(ctx, &def);
+            return rc;
+        }
+        w.set = &def;
+    }
+    w.var = qc__alloc_array(ctx, w.set->n, sizeof *w.var);
+    pr = qc__alloc_array(ctx, n, sizeof *pr);
+    if (w.var == NULL || pr == NULL) {
+        rc = QC_ENOMEM;
+        goto out_free;
+    }
+    w.nvar = 0;
+    for (i = 0; i < w.set->n; i++) {
+        if (w.set->m[i].legs == 2)
+            w.var[w.nvar++] = (uint32_t)i;
+        if (w.set->m[i].nhull > maxhull)
+            maxhull = w.set->m[i].nhull;
+    }
+    w.hbuf = qc__alloc_array(ctx, maxhull, sizeof *w.hbuf);
+    if (w.hbuf == NULL) {
+        rc = QC_ENOMEM;
+        goto out_free;
+    }
+    w.nhbuf = maxhull;
+
+    for (i = 0; i < n; i++) { /* each primitive its best variant ... */
+        qc_vec2 bis;
+        rank(&w, skel, i, &bis, cd);
+        pr[i] = make_prim(&w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+    }
+    for (i = 0; n > 1 && i < n; i++) { /* ... judged again against the real P0P3 */
+        const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
+        qc_vec2 bis = pr[i].bis;
+        size_t k;
+        double best = 1e300;
+        for (k = 0; k < 2 * w.nvar; k++) {
+            prim q = make_prim(&w, w.var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
+            qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
+            qc_vec2 dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
+            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60) +
+                        fabs(fabs(angle_between(q.out_dir, dout)) - 60);
+            if (sc < best - 1e-9) {
+                best = sc;
+                pr[i] = q;
+            }
+        }
+    }
+    {
+        qc_bbox b = qc_region_bbox(region);
+        double s = w.s;
+        for (i = 0; i < n; i++) {
+            qc_vec2 c = skel->p[skel->order[i]];
+            b.min.x = fmin(b.min.x, c.x);
+            b.min.y = fmin(b.min.y, c.y);
+            b.max.x = fmax(b.max.x, c.x);
+            b.max.y = fmax(b.max.y, c.y);
+        }
+        b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
+        rc = qc__cgrid_init(ctx, &w.grid, b, s, 8 * n + 4096);
+        if (rc == QC_OK)
+            rc = qc__cgrid_reserve(ctx, &w.grid, (NFLAT + 1) * n + region->nv,
+                                   (2 * NFLAT + maxhull) * n + 2 * region->nv,
+                                   (NFLAT * 2 + 4) * n + 4 * region->nv);
+    }
+    if (rc == QC_OK)
+        rc = qc__cgrid_add_region(ctx, &w.grid, region, K_BOUND);
+    for (i = 0; rc == QC_OK && i < n; i++) {
+        /* a primitive that reaches the boundary shrinks, down to half size */
+        static const double shrink[] = {0.75, 0.5};
+        const qc_motif *m = &w.set->m[pr[i].m];
+        double s0 = w.s;
+        size_t k, tr;
+        for (tr = 0; tr < 2; tr++) {
+            for (k = 0; k < m->nhull; k++)
+                w.hbuf[k] = qc__xf_apply(&pr[i].xf, m->hull[k]);
+            if (!qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_BOUND, NULL, NULL))
+                break;
+            w.s = s0 * shrink[tr];
+            {
+                uint32_t mi = pr[i].m;
+                int mir = pr[i].xf.a * pr[i].xf.d - pr[i].xf.b * pr[i].xf.c < 0;
+                pr[i] = make_prim(&w, mi, mir, skel->p[skel->order[i]], pr[i].bis);
+            }
+            w.s = s0;
+        }
+        stats->motifs_shrunk += tr > 0;
+        rc = add_hull(&w, &pr[i], (uint32_t)i);
+    }
+
+    /* The path: primitive, join, primitive, ..., back to the first. */
+    if (rc == QC_OK)
+        rc = qc_path_move_to(ctx, out, pr[0].entry);
+    for (i = 0; rc == QC_OK && i < n; i++) {
+        size_t j = (i + 1) % n, k, nc, alt;
+        qc_vec2 c1, c2, f[NFLAT + 1];
+        int ok;
+        rc = qc__path_append_xf(ctx, out, &w.set->m[pr[i].m].path, &pr[i].xf);
+        if (rc != QC_OK || n == 1)
+            break;
+        ok = try_join(&w, &pr[i], &pr[j], l, i, n, &c1, &c2, f);
+        if (!ok && j != 0) { /* the next primitive's other variants, unless it is sewn */
+            qc_vec2 bis;
+            nc = rank(&w, skel, j, &bis, cd);
+            for (alt = 1; alt < nc && !ok; alt++) {
+                prim q = make_prim(&w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
+                const qc_motif *m = &w.set->m[q.m];
+                skipctx sk;
+                for (k = 0; k < m->nhull; k++)
+                    w.hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
+                sk.w = &w;
+                sk.i = (uint32_t)j; /* its hull may meet its own joins and primitives */
+                sk.n = (uint32_t)n;
+                sk.seg = NFLAT / 2;
+                if (qc__cgrid_hit(&w.grid, w.hbuf, m->nhull, 1u << K_JOIN | 1u << K_BOUND, skip_fn, &sk))
+                    continue;
+                if (try_join(&w, &pr[i], &q, l, i, n, &c1, &c2, f)) {
+                    w.rec_owner[pr[j].rec] = UINT32_MAX;
+                    pr[j] = q;
+                    rc = add_hull(&w, &pr[j], (uint32_t)j);
+                    ok = 1;
+                }
+            }
+        }
+        if (rc != QC_OK)
+            break;
+        if (!ok) { /* nothing helped: keep the stated tangents */
+            stats->joins_unfixed++;
+            join_ctrl(&pr[i], &pr[j], l, &c1, &c2);
+            flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
+        }
+        for (k = 0; k < NFLAT && rc == QC_OK; k++)
+            rc = qc__cgrid_add(ctx, &w.grid, f + k, 2, K_JOIN, (uint32_t)i);
+        if (rc == QC_OK)
+            rc = qc_path_cubic_to(ctx, out, c1, c2, pr[j].entry);
+    }
+    if (rc == QC_OK)
+        stats->motifs_placed += n;
+
+out_free:
+    qc__cgrid_free(ctx, &w.grid);
+    qc__free(ctx, w.rec_owner, w.rec_cap * sizeof *w.rec_owner);
+    qc__free(ctx, w.hbuf, w.nhbuf * sizeof *w.hbuf);
+    qc__free(ctx, pr, n * sizeof *pr);
+    qc__free(ctx, w.var, w.set->n * sizeof *w.var);
+    qc_motif_set_free(ctx, &def);
+    return rc;
+}
+
+/* A tour by default: the primitives sit on consecutive tour points. */
+static int wanderer_default(const qc_params *p, int id, double *value)
+{
+    (void)p;
+    if (id != QC_PARAM_ID_SKELETON)
+        return 0;
+    *value = QC_SKELETON_TSP;
+    return 1;
+}
+
+const qc_family_desc qc__family_wanderer = {
+    QC_FAMILY_WANDERER, "wanderer", "two-legged motifs on a tour, joined by curves (paper §5.2)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_PARAM_BIT(QC_PARAM_ID_SIZE) | QC_PARAM_BIT(QC_PARAM_ID_TANGENT), qc_deco_wanderer,
+    wanderer_default};
