@@ -121,8 +121,8 @@ int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
 typedef struct cli_timer {
     double t0, last;
     const char *stage;
-    double ms[8];
-    const char *name[8];
+    double ms[12];
+    const char *name[12];
     size_t n;
 } cli_timer;
 void cli_timer_start(cli_timer *t, qc_ctx *ctx);

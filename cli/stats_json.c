@@ -32,6 +32,10 @@ static void add_family_figures(cJSON *o, const qc_stats *s)
         cJSON_AddNumberToObject(o, "radius_max_mm", s->radius_max);
         cJSON_AddNumberToObject(o, "coverage", s->coverage);
     }
+    if (s->farthest_fabric_mm > 0) {
+        cJSON_AddNumberToObject(o, "farthest_fabric_mm", s->farthest_fabric_mm);
+        cJSON_AddNumberToObject(o, "seam_bare", s->seam_bare);
+    }
     if (s->largest_gap_mm > 0)
         cJSON_AddNumberToObject(o, "largest_gap_mm", s->largest_gap_mm);
 }

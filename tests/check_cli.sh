@@ -87,7 +87,9 @@ s = json.load(open("s.json"))
 n = len(s["points"])
 assert s["units"] == "mm" and n > 10, s
 assert len(s["edges"]) == n - 1 and len(s["order"]) == 2 * (n - 1) + 1, s
-assert abs(s["length_mm"] - 2 * 10 * (n - 1)) < 1e-6, s["length_mm"]
+p = s["points"]
+tree = sum(((p[a][0] - p[b][0]) ** 2 + (p[a][1] - p[b][1]) ** 2) ** 0.5 for a, b in s["edges"])
+assert abs(s["length_mm"] - 2 * tree) < 1e-6, (s["length_mm"], tree)  # the walk runs every edge twice
 ' && "$QC" skeleton --region square:60 --units mm -o s.svg && grep -q '<circle' s.svg &&
         "$QC" skeleton --region square:60 --units mm --points square --spacing 10 -o t.json \
             -o t.svg && cmp s.json t.json && grep -q '<circle' t.svg
@@ -210,8 +212,28 @@ check check_finds_unknown_command check_finds unknown_command.pat "unknown comma
 check check_finds_missing_m02 check_finds missing_m02.pat "missing the final M02"
 check check_finds_jumps check_finds jump.pat "1 jumps (needle-up moves), more than 0"
 check check_finds_short_stitch check_finds short_stitch.pat "stitch of 0.051 mm shorter"
-check check_finds_points_outside check_finds outside.pat "1 points outside the region"
+check check_finds_points_outside check_finds outside.pat "segments outside the region, up to"
 check check_finds_self_crossing check_finds crossing.pat "1 self-crossings"
+# a stitch whose ends are both in the block but which crosses its window
+through_hole() {
+    "$QC" check "$ROOT/tests/bad/pat/through_hole.pat" --units mm \
+        --region "$ROOT/tests/fixtures/svg/block_with_hole.svg" > out.txt
+    [ $? -eq 1 ] && grep -q "1 segments outside the region, up to 19.9" out.txt &&
+        grep -q "farthest fabric from a stitch: 65.2 mm" out.txt || { cat out.txt; return 1; }
+}
+check check_finds_segments_through_a_hole through_hole
+# check and --stats report the same farthest fabric
+same_farthest() {
+    "$QC" generate --family stipple --region star:6 --spacing 0.4 -o s.pat --stats 2> st.json &&
+        "$QC" check s.pat --region star:6 > out.txt
+    python3 -c '
+import json, re, sys
+s = json.loads(open("st.json").read())
+m = re.search(r"farthest fabric from a stitch: ([0-9.]+) mm", open("out.txt").read())
+assert m and abs(float(m.group(1)) - s["farthest_fabric_mm"]) < 0.6, (m and m.group(1), s)
+' || { cat out.txt st.json; return 1; }
+}
+check check_and_stats_agree_on_the_farthest_fabric same_farthest
 check check_finds_empty_file check_finds empty.pat "no stitches"
 
 # Every format quiltc writes from a PAT reads back; a PAT round trip is exact.

@@ -334,6 +334,8 @@ static void test_generate_should_use_memory_linear_in_the_points(void)
         }
         if (skip)
             continue;
+        if (getenv("QC_LIMITS_PRINT"))
+            printf("%s: %.0f %.0f B/point\n", qc_family_name(family), per_point[0], per_point[1]);
         TEST_ASSERT_TRUE_MESSAGE(per_point[1] < 2.0 * per_point[0], qc_family_name(family));
         TEST_ASSERT_TRUE_MESSAGE(per_point[1] < 4096.0, qc_family_name(family));
         measured++;

@@ -407,8 +407,12 @@ int qcw_run(qcw_job *job, int tie_stitches)
     job->params.skip_gap_stat = 1; /* a live preview: the path is the same without it */
     rc = qc_generate(&job->ctx, &job->region, &job->params, NULL,
                      job->motifs.n ? &job->motifs : NULL, &job->result);
-    if (rc < 0)
+    if (rc == QC_OK) /* the same figure as --stats and `quiltc check` */
+        rc = qc_result_measure(&job->ctx, &job->region, &job->result);
+    if (rc < 0) {
+        drop_result(job);
         return rc;
+    }
     t1 = now_ms();
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = tie_stitches;
@@ -449,13 +453,15 @@ const char *qcw_stats_json(qcw_job *job)
               "\"stitches\":%lu,\"thread_mm\":%.1f,\"sew_seconds\":%.1f,\"jumps\":%lu,"
               "\"ties\":%lu,\"width_mm\":%.3f,\"height_mm\":%.3f,"
               "\"motifs_placed\":%lu,\"motifs_shrunk\":%lu,\"motifs_skipped\":%lu,"
-              "\"pebbles\":%lu,\"largest_gap_mm\":%.3f,\"spacing_mm\":%.6g,\"stages_ms\":{",
+              "\"pebbles\":%lu,\"largest_gap_mm\":%.3f,\"farthest_fabric_mm\":%.3f,"
+              "\"seam_bare\":%.4f,\"spacing_mm\":%.6g,\"stages_ms\":{",
         (unsigned long)s->points, (unsigned long)job->plan.n, (unsigned long)s->pieces,
         s->length_mm, (unsigned long)est.stitches, est.thread_mm, est.seconds,
         (unsigned long)est.jumps, (unsigned long)est.ties, est.bbox.max.x - est.bbox.min.x,
         est.bbox.max.y - est.bbox.min.y, (unsigned long)s->motifs_placed,
         (unsigned long)s->motifs_shrunk, (unsigned long)s->motifs_skipped,
-        (unsigned long)s->pebbles, s->largest_gap_mm, job->result.params.spacing);
+        (unsigned long)s->pebbles, s->largest_gap_mm, s->farthest_fabric_mm, s->seam_bare,
+        job->result.params.spacing);
     for (i = 0; i + 1 < job->nstages; i++) {
         add(&out, "%s", i ? "," : "");
         add_str(&out, job->stage[i]);

@@ -135,7 +135,8 @@ typedef struct qc_params {
     double wiggle;      /* meander: irregularity, 0..1 */
     double turn_radius; /* meander: smallest turn radius */
     double iterations;  /* meander: rounds of curve evolution */
-    /* Not in the table: non-zero leaves qc_stats.largest_gap_mm at 0. The
+    /* Not in the table: non-zero leaves qc_stats.largest_gap_mm,
+     * farthest_fabric_mm and seam_bare at 0. The
      * measure never changes the path but costs about a third of a stipple,
      * so a live preview skips it. */
     int skip_gap_stat;
@@ -201,6 +202,10 @@ typedef struct qc_stats {
     size_t pebbles, pebbles_under3;
     double radius_min, radius_mean, radius_max, coverage;
     double largest_gap_mm; /* largest empty circle the path misses; 0 if not computed */
+    /* Every family (0 when skip_gap_stat): the farthest any point of the
+     * region, boundary included, lies from the path (qc_fabric_measure at
+     * d / 10), and the share of the boundary farther than 1/4 in from it. */
+    double farthest_fabric_mm, seam_bare;
 } qc_stats;
 
 typedef struct qc_result {
@@ -279,6 +284,13 @@ int qc_generate(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                 const qc_points *given, const qc_motif_set *motifs,
                 qc_result *out);
 void qc_result_free(qc_ctx *ctx, qc_result *res);
+
+/*
+ * Fills res->stats.farthest_fabric_mm and seam_bare as qc_generate does
+ * without skip_gap_stat (for a preview that generated with it and measures
+ * afterwards). Errors: those of qc_path_fabric.
+ */
+int qc_result_measure(qc_ctx *ctx, const qc_region *region, qc_result *res);
 
 /* Caps that keep every request linear-memory and bounded (see README). */
 #define QC_MAX_POINTS 4000000u

@@ -6,18 +6,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "internal.h"
+#include "measure_internal.h"
 
-#define MAX_CELLS ((size_t)1 << 22)
-#define FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */
-
-typedef struct gap_grid {
-    double x0, y0, h;
-    size_t nx, ny;
-    double *f;
-} gap_grid;
-
-static void seed_segment(gap_grid *g, qc_vec2 a, qc_vec2 b)
+void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y);
     double steps = ceil(len / (0.5 * g->h));
@@ -35,12 +26,31 @@ static void seed_segment(gap_grid *g, qc_vec2 a, qc_vec2 b)
         if (x >= -1.0 && y >= -1.0 && x < (double)g->nx + 1.0 && y < (double)g->ny + 1.0) {
             x = fmin(fmax(x, 0.0), (double)(g->nx - 1));
             y = fmin(fmax(y, 0.0), (double)(g->ny - 1));
-            g->f[(size_t)y * g->nx + (size_t)x] = 0.0;
+            g->f[(size_t)y * g->nx + (size_t)x] = 0.0f;
         }
     }
 }
 
-static int transform(qc_ctx *ctx, gap_grid *g)
+void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
+{
+    g->h = resolution;
+    for (;;) {
+        double fx = ceil((box.max.x - box.min.x) / g->h), fy = ceil((box.max.y - box.min.y) / g->h);
+        fx = fx < 1.0 ? 1.0 : fx;
+        fy = fy < 1.0 ? 1.0 : fy;
+        if (fx * fy <= (double)QC__GAP_MAX_CELLS) {
+            g->nx = (size_t)fx;
+            g->ny = (size_t)fy;
+            break;
+        }
+        g->h *= 1.25;
+    }
+    g->x0 = box.min.x;
+    g->y0 = box.min.y;
+    g->f = NULL;
+}
+
+int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
     size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
     double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
@@ -56,14 +66,17 @@ static int transform(qc_ctx *ctx, gap_grid *g)
     z = out + m;
     for (i = 0; i < g->nx; i++) {
         for (j = 0; j < g->ny; j++)
-            col[j] = g->f[j * g->nx + i];
+            col[j] = (double)g->f[j * g->nx + i];
         qc__edt_1d(col, g->ny, out, v, z);
         for (j = 0; j < g->ny; j++)
-            g->f[j * g->nx + i] = out[j];
+            g->f[j * g->nx + i] = (float)out[j];
     }
     for (j = 0; j < g->ny; j++) {
-        memcpy(col, g->f + j * g->nx, g->nx * sizeof *col);
-        qc__edt_1d(col, g->nx, g->f + j * g->nx, v, z);
+        for (i = 0; i < g->nx; i++)
+            col[i] = (double)g->f[j * g->nx + i];
+        qc__edt_1d(col, g->nx, out, v, z);
+        for (i = 0; i < g->nx; i++)
+            g->f[j * g->nx + i] = (float)out[i];
     }
     qc__free(ctx, col, (3 * m + 1) * sizeof *col);
     qc__free(ctx, v, m * sizeof *v);
@@ -106,7 +119,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
 {
     const qc_vec2 *pts = pc->pts;
     size_t n = pc->n;
-    gap_grid g;
+    qc__gap_grid g;
     qc_bbox box;
     unsigned char *mask = NULL;
     size_t i, j, k, best_at = 0, rs = 0;
@@ -130,20 +143,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
             return qc__fail(ctx, QC_ERANGE, "largest gap: region vertex %lu is not finite",
                             (unsigned long)i);
     box = qc_region_bbox(region);
-    g.h = resolution;
-    for (;;) {
-        double fx = ceil((box.max.x - box.min.x) / g.h), fy = ceil((box.max.y - box.min.y) / g.h);
-        fx = fx < 1.0 ? 1.0 : fx;
-        fy = fy < 1.0 ? 1.0 : fy;
-        if (fx * fy <= (double)MAX_CELLS) {
-            g.nx = (size_t)fx;
-            g.ny = (size_t)fy;
-            break;
-        }
-        g.h *= 1.25;
-    }
-    g.x0 = box.min.x;
-    g.y0 = box.min.y;
+    qc__gap_grid_size(&g, box, resolution);
     g.f = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.f);
     mask = qc__alloc(ctx, g.nx * g.ny);
     if (g.f == NULL || mask == NULL) {
@@ -155,15 +155,15 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)
-        g.f[k] = FAR;
+        g.f[k] = (float)QC__GAP_FAR;
     {
         size_t b = 0, q;
         for (q = 0; q < (pc->ends != NULL ? pc->nends : 1); q++) {
             size_t e = piece_end(pc, q);
             if (e == b + 1)
-                seed_segment(&g, pts[b], pts[b]);
+                qc__gap_seed_segment(&g, pts[b], pts[b]);
             for (i = b + 1; i < e; i++)
-                seed_segment(&g, pts[i - 1], pts[i]);
+                qc__gap_seed_segment(&g, pts[i - 1], pts[i]);
             b = e;
         }
     }
@@ -171,15 +171,15 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
         size_t end = region->ring_end[k], p = end - 1;
 
         for (i = rs; i < end; p = i++)
-            seed_segment(&g, region->v[p], region->v[i]);
+            qc__gap_seed_segment(&g, region->v[p], region->v[i]);
         rs = end;
     }
-    rc = transform(ctx, &g);
+    rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;
     for (k = 0; k < g.nx * g.ny; k++)
-        if (mask[k] && g.f[k] > best) {
-            best = g.f[k];
+        if (mask[k] && (double)g.f[k] > best) {
+            best = (double)g.f[k];
             best_at = k;
         }
 out:

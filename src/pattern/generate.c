@@ -9,10 +9,15 @@
 #include "internal.h"
 #include "pattern_internal.h"
 #include "region_index.h"
+#include "../curve/keep_inside.h"
+#include "../sample/sample_internal.h"
 
 /* Curves flattened this close for the length and box in qc_stats: well under
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
 #define STATS_TOL_MM QC__STATS_TOL_MM
+/* The farthest-fabric raster: d / 10 (its cells grow with the points, so
+ * memory stays linear); exact along the boundary and at the winner. */
+#define FABRIC_RES 0.1
 
 static void trace(qc_ctx *ctx, const char *stage)
 {
@@ -67,6 +72,8 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
     sp.margin = p->margin;
     sp.seed = p->seed;
     QC__TRY(qc_sample(ctx, region, &sp, out));
+    /* into corners, star points and strips the fill cannot reach */
+    QC__TRY(qc__sample_medial(ctx, region, p->spacing, p->margin, out));
     if (out->n == 0)
         return qc__fail(ctx, QC_EEMPTY,
                         "no point fits in the region at spacing %g mm with margin %g mm",
@@ -163,6 +170,8 @@ int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *give
     QC__TRY(build_skeleton(ctx, region, p, res, &skel));
     trace(ctx, "decorate");
     QC__TRY(family->run(ctx, region, p, &skel, motifs, &res->path, &res->stats));
+    if (p->tile != QC_TILE_EDGE_TO_EDGE && p->tile != QC_TILE_ALL_OVER) /* tiles: many regions */
+        QC__TRY(qc__path_keep_inside(ctx, region, family->name, &res->path, NULL));
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
                         family->name);
@@ -171,6 +180,10 @@ int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *give
     res->stats.order = res->order.n;
     qc_curve_measure(&res->path, STATS_TOL_MM, &res->stats.length_mm, &res->stats.bbox);
     res->stats.pieces = qc_path_pieces(&res->path);
+    if (!p->skip_gap_stat) {
+        trace(ctx, "measure");
+        QC__TRY(qc_result_measure(ctx, region, res));
+    }
     trace(ctx, "done");
     return QC_OK;
 }
@@ -203,4 +216,18 @@ void qc_result_free(qc_ctx *ctx, qc_result *res)
     qc_order_free(ctx, &res->order);
     qc_path_free(ctx, &res->path);
     memset(res, 0, sizeof *res);
+}
+
+/* The farthest fabric, the same figure for every family (the CLI's --stats,
+ * the page and `quiltc check --region` all report it). */
+int qc_result_measure(qc_ctx *ctx, const qc_region *region, qc_result *res)
+{
+    qc_fabric f;
+
+    QC__TRY(qc_path_fabric(ctx, region, &res->path,
+                           res->params.spacing * FABRIC_RES, 0.0,
+                           NULL, &f));
+    res->stats.farthest_fabric_mm = f.farthest_mm;
+    res->stats.seam_bare = f.seam_bare;
+    return QC_OK;
 }

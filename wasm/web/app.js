@@ -319,6 +319,8 @@ function showStats(r) {
   ];
   if (s.motifs_placed) rows.push(['motifs placed', s.motifs_placed]);
   if (s.pebbles) rows.push(['pebbles', s.pebbles]);
+  if (s.farthest_fabric_mm) rows.push(['farthest fabric from a stitch', inch ? `${(s.farthest_fabric_mm / 25.4).toFixed(2)} in` : `${s.farthest_fabric_mm.toFixed(1)} mm`]);
+  if (s.farthest_fabric_mm) rows.push(['seam farther than 1/4 in', `${(100 * s.seam_bare).toFixed(0)}%`]);
   if (s.largest_gap_mm) rows.push(['largest gap', inch ? `${(s.largest_gap_mm / 25.4).toFixed(2)} in` : `${s.largest_gap_mm.toFixed(1)} mm`]);
   $('stats').innerHTML = rows.map(([k, v]) => `<div><dt>${k}</dt><dd data-stat="${k}">${v}</dd></div>`).join('');
 }

@@ -1,0 +1,29 @@
+/*
+ * Internals of the measures (src/measure/) that the sampler's corner and
+ * medial-axis seeding (src/sample/medial.c) also uses: the largest-gap
+ * distance raster.
+ */
+#ifndef QC_MEASURE_INTERNAL_H
+#define QC_MEASURE_INTERNAL_H
+
+#include "internal.h"
+
+/* A raster of squared distances in cells (gap.c): the bounding box from
+ * (x0, y0), cells h wide, f[j * nx + i]. */
+#define QC__GAP_MAX_CELLS ((size_t)1 << 22)
+#define QC__GAP_FAR 1e12 /* beyond any squared cell distance, yet FAR + q^2 stays exact */
+typedef struct qc__gap_grid {
+    double x0, y0, h;
+    size_t nx, ny;
+    float *f; /* squared cell distances: integers, exact in a float up to 2^24 */
+} qc__gap_grid;
+
+/* Sizes g over box at resolution (raised until at most 2^22 cells); f NULL. */
+QC__HIDDEN void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution);
+/* Zeroes the cells segment ab passes through (points up to a cell outside
+ * the box go to its edge cells). */
+QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);
+/* f becomes each cell's squared distance (in cells) to the nearest zero cell. */
+QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
+
+#endif

@@ -1,0 +1,238 @@
+/*
+ * Seeds on the medial axis: a lattice or Poisson fill stops a spacing or
+ * more short of a star point and can miss a narrow strip altogether. The
+ * ridge of the boundary distance runs down every strip and into every
+ * corner along its bisector, so points are added on it, the ones deepest
+ * in a corner first (where the margin is just kept from both seams: the
+ * floor a margin allows), wherever no point lies within SEED_GAP * d.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sample_internal.h"
+#include "../measure/measure_internal.h"
+
+#define CELLS_PER_D 4.0 /* raster: d / 4 */
+#define SEED_GAP 0.8    /* no seed nearer an existing point than this * d */
+#define CORNER_MAX 150.0 /* corners sharper than this, degrees, get a point */
+#define CORNER_GAP 0.6   /* a corner point drops fill points nearer than this * d */
+#define CORNER_SLACK 1.01 /* just inside the margin, for the admission test */
+
+typedef struct near_grid {
+    double x0, y0, cell;
+    size_t gx, gy;
+    size_t *head, *next; /* chains over pts; SIZE_MAX ends */
+    size_t cap;
+} near_grid;
+
+static size_t ncell(const near_grid *g, qc_vec2 p, size_t *cx, size_t *cy)
+{
+    double fx = floor((p.x - g->x0) / g->cell), fy = floor((p.y - g->y0) / g->cell);
+
+    fx = fx < 0 ? 0 : (fx > (double)(g->gx - 1) ? (double)(g->gx - 1) : fx);
+    fy = fy < 0 ? 0 : (fy > (double)(g->gy - 1) ? (double)(g->gy - 1) : fy);
+    *cx = (size_t)fx;
+    *cy = (size_t)fy;
+    return *cy * g->gx + *cx;
+}
+
+static int grid_add(qc_ctx *ctx, near_grid *g, const qc_points *pts, size_t i)
+{
+    size_t cx, cy, c = ncell(g, pts->v[i], &cx, &cy);
+
+    if (i >= g->cap) {
+        size_t nc = g->cap * 2 + 64;
+        size_t *t = qc__realloc(ctx, g->next, g->cap * sizeof *t, nc * sizeof *t);
+        if (t == NULL)
+            return QC_ENOMEM;
+        g->next = t;
+        g->cap = nc;
+    }
+    g->next[i] = g->head[c];
+    g->head[c] = i;
+    return QC_OK;
+}
+
+static int grid_near(const near_grid *g, const qc_points *pts, qc_vec2 p, double r)
+{
+    size_t cx, cy, x, y;
+
+    ncell(g, p, &cx, &cy);
+    for (y = cy ? cy - 1 : 0; y <= cy + 1 && y < g->gy; y++)
+        for (x = cx ? cx - 1 : 0; x <= cx + 1 && x < g->gx; x++) {
+            size_t i;
+            for (i = g->head[y * g->gx + x]; i != SIZE_MAX; i = g->next[i])
+                if (qc_hypot(pts->v[i].x - p.x, pts->v[i].y - p.y) < r)
+                    return 1;
+        }
+    return 0;
+}
+
+typedef struct ridge {
+    float f; /* squared boundary distance, cells */
+    uint32_t at;
+} ridge;
+
+static int cmp_ridge(const void *pa, const void *pb)
+{
+    const ridge *a = pa, *b = pb;
+
+    if (a->f != b->f)
+        return a->f < b->f ? -1 : 1;
+    return (a->at > b->at) - (a->at < b->at);
+}
+
+/* Whether cell k is a ridge: no lower than both neighbours across it in
+ * some direction, and strictly above one of them. */
+static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, size_t j)
+{
+    static const int dx[4] = {1, 0, 1, 1}, dy[4] = {0, 1, 1, -1};
+    double c = (double)g->f[j * g->nx + i];
+    int k;
+
+    for (k = 0; k < 4; k++) {
+        long ax = (long)i + dx[k], ay = (long)j + dy[k], bx = (long)i - dx[k], by = (long)j - dy[k];
+        double a, b;
+        if (ax < 0 || ay < 0 || bx < 0 || by < 0 || ax >= (long)g->nx || bx >= (long)g->nx ||
+            ay >= (long)g->ny || by >= (long)g->ny)
+            continue;
+        if (!mask[ay * (long)g->nx + ax] || !mask[by * (long)g->nx + bx])
+            continue;
+        a = (double)g->f[ay * (long)g->nx + ax];
+        b = (double)g->f[by * (long)g->nx + bx];
+        if (c >= a && c >= b && (c > a || c > b))
+            return 1;
+    }
+    return 0;
+}
+
+/* A point on each convex corner's bisector where the margin is just kept
+ * from both seams (m / sin(theta / 2) from the corner), the points of out
+ * nearer than CORNER_GAP * d to it dropped: the fill's nearest point can lie
+ * 1.5 d or more from a corner, and the floor point is what a margin allows. */
+static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix, double d,
+                        double margin, qc_points *out)
+{
+    size_t q, rs = 0, i, k, w;
+
+    for (q = 0; q < region->nrings; q++) {
+        size_t end = region->ring_end[q];
+        for (i = rs; i < end; i++) {
+            qc_vec2 pv = region->v[i == rs ? end - 1 : i - 1], v = region->v[i];
+            qc_vec2 nx = region->v[i + 1 == end ? rs : i + 1], c;
+            double th = qc_region_corner_angle(region, i) * (QC_PI / 180.0);
+            double l1 = qc_hypot(v.x - pv.x, v.y - pv.y), l2 = qc_hypot(nx.x - v.x, nx.y - v.y);
+            double bx, by, bl, far;
+
+            if (!(th < CORNER_MAX * (QC_PI / 180.0)) || !(l1 > 0) || !(l2 > 0))
+                continue;
+            /* the bisector points inside: the sum of the unit vectors along both edges */
+            bx = (pv.x - v.x) / l1 + (nx.x - v.x) / l2;
+            by = (pv.y - v.y) / l1 + (nx.y - v.y) / l2;
+            bl = qc_hypot(bx, by);
+            if (!(bl > 1e-12))
+                continue;
+            far = CORNER_SLACK * fmax(margin, 1e-3) / qc_sin(0.5 * th);
+            c = QC__V2(v.x + far * bx / bl, v.y + far * by / bl);
+            if (!qc__rindex_admits(ix, c, margin))
+                continue;
+            for (k = w = 0; k < out->n; k++) /* drop the points crowding it */
+                if (qc_hypot(out->v[k].x - c.x, out->v[k].y - c.y) >= CORNER_GAP * d)
+                    out->v[w++] = out->v[k];
+            out->n = w;
+            QC__TRY(qc_points_push(ctx, out, c));
+        }
+        rs = end;
+    }
+    return QC_OK;
+}
+
+int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double margin,
+                      qc_points *out)
+{
+    qc__gap_grid g;
+    qc__rindex ix;
+    near_grid ng;
+    unsigned char *mask = NULL;
+    ridge *rg = NULL;
+    size_t cells, k, nr = 0, i, j, rs = 0;
+    qc_bbox box = qc_region_bbox(region);
+    int rc, have_ix = 0;
+
+    memset(&ng, 0, sizeof ng);
+    memset(&ix, 0, sizeof ix);
+    qc__gap_grid_size(&g, box, d / CELLS_PER_D);
+    cells = g.nx * g.ny;
+    g.f = qc__alloc_array(ctx, cells, sizeof *g.f);
+    mask = qc__alloc(ctx, cells);
+    ng.cell = d;
+    ng.x0 = box.min.x;
+    ng.y0 = box.min.y;
+    ng.gx = (size_t)((box.max.x - box.min.x) / d) + 1;
+    ng.gy = (size_t)((box.max.y - box.min.y) / d) + 1;
+    ng.head = qc__alloc_array(ctx, ng.gx * ng.gy, sizeof *ng.head);
+    if (g.f == NULL || mask == NULL || ng.head == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx, g.ny,
+                           mask);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < cells; k++)
+        g.f[k] = (float)QC__GAP_FAR;
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], p = end - 1;
+        for (i = rs; i < end; p = i++)
+            qc__gap_seed_segment(&g, region->v[p], region->v[i]);
+        rs = end;
+    }
+    rc = qc__gap_transform(ctx, &g);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < cells; k++)
+        nr += mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx);
+    rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
+    if (rg == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    nr = 0;
+    for (k = 0; k < cells; k++)
+        if (mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx)) {
+            rg[nr].f = g.f[k];
+            rg[nr].at = (uint32_t)k;
+            nr++;
+        }
+    qsort(rg, nr, sizeof *rg, cmp_ridge); /* deepest in a corner first */
+    if ((rc = qc__rindex_build(ctx, region, &ix)) == QC_OK)
+        have_ix = 1;
+    if (rc == QC_OK)
+        rc = corner_seeds(ctx, region, &ix, d, margin, out);
+    for (k = 0; k < ng.gx * ng.gy; k++)
+        ng.head[k] = SIZE_MAX;
+    for (i = 0; i < out->n && rc == QC_OK; i++)
+        rc = grid_add(ctx, &ng, out, i);
+    for (k = 0; k < nr && rc == QC_OK; k++) {
+        qc_vec2 p;
+        i = rg[k].at % g.nx;
+        j = rg[k].at / g.nx;
+        p.x = g.x0 + ((double)i + 0.5) * g.h;
+        p.y = g.y0 + ((double)j + 0.5) * g.h;
+        if (grid_near(&ng, out, p, SEED_GAP * d) || !qc__rindex_admits(&ix, p, margin))
+            continue;
+        rc = qc_points_push(ctx, out, p);
+        if (rc == QC_OK)
+            rc = grid_add(ctx, &ng, out, out->n - 1);
+    }
+out:
+    if (have_ix)
+        qc__rindex_free(ctx, &ix);
+    qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
+    qc__free(ctx, ng.head, ng.gx * ng.gy * sizeof *ng.head);
+    qc__free(ctx, ng.next, ng.cap * sizeof *ng.next);
+    qc__free(ctx, g.f, cells * sizeof *g.f);
+    qc__free(ctx, mask, cells);
+    return rc;
+}

@@ -1,0 +1,258 @@
+/*
+ * Issue 16's goals on pieced shapes: every family at two spacings and two
+ * seeds on triangles, star points, diamonds, strips, a crescent, a ring, a
+ * block with holes, a C-shape and a heart. QC_COVERAGE_TABLE=1 prints the
+ * measures (docs/coverage.md has the table).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pieced.h"
+#include "quiltc.h"
+#include "retrace.h"
+#include "testalloc.h"
+#include "unity.h"
+
+#define IN 25.4
+#define TOL_OUT (0.02 * IN) /* measures-and-peers.md: region grown by 0.02 in */
+#define NBIN 4
+
+static const double bin_deg[NBIN] = {90, 45, 36, 31};
+static const double bin_lo[NBIN] = {80, 41, 34, 25}, bin_hi[NBIN] = {100, 50, 41, 34};
+static const double spacings_in[2] = {0.35, 0.6};
+static const uint64_t seeds[2] = {1, 2};
+
+typedef struct figs {
+    int runs, failed;
+    char why[QC_ERRMSG_MAX + 8];
+    double corner[NBIN]; /* worst corner reach / d per bin, -1 none */
+    double farthest;     /* / d */
+    double seam;
+    size_t outside;      /* segments outside, summed over runs */
+    int runs_outside;
+    double outside_mm;
+    size_t crossings;    /* worst run */
+    double retrace;
+    size_t passes;
+} figs;
+
+static figs table[QC_FAMILY_COUNT][16];
+static size_t nshapes;
+static const pieced_shape *shapes;
+static int measured;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+static void figs_init(figs *f)
+{
+    int b;
+    memset(f, 0, sizeof *f);
+    for (b = 0; b < NBIN; b++)
+        f->corner[b] = -1;
+}
+
+static void measure_one(qc_ctx *ctx, const qc_region *r, const qc_result *res, double d,
+                        figs *f)
+{
+    qc_points flat = {0};
+    qc_order ends = {0};
+    qc_fabric fab;
+    double *corner = malloc((r->nv ? r->nv : 1) * sizeof *corner), share = 0, worst = 0;
+    size_t i, out = 0, cross = 0, passes = 1, b = 0, q;
+    int k;
+
+    TEST_ASSERT_NOT_NULL(corner);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(ctx, &res->path, 0.01, &flat, &ends));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_fabric_measure(ctx, r, flat.v, flat.n, ends.i, ends.n,
+                                                   fmin(d / 10, 0.5), 0, corner, &fab));
+    for (i = 0; i < r->nv; i++) {
+        double a = qc_region_corner_angle(r, i);
+        for (k = 0; k < NBIN; k++)
+            if (a >= bin_lo[k] && a < bin_hi[k])
+                f->corner[k] = fmax(f->corner[k], corner[i] / d);
+    }
+    f->farthest = fmax(f->farthest, fab.farthest_mm / d);
+    f->seam = fmax(f->seam, fab.seam_bare);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_outside(ctx, r, flat.v, flat.n, ends.i, ends.n,
+                                                 TOL_OUT, 0.254, &out, &worst, NULL));
+    f->outside += out;
+    f->runs_outside += out > 0;
+    f->outside_mm = fmax(f->outside_mm, worst);
+    for (q = 0; q < ends.n; q++) { /* crossings within each sewn piece */
+        size_t c = 0;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(ctx, flat.v + b, ends.i[q] - b, 0, &c));
+        cross += c;
+        b = ends.i[q];
+    }
+    if (cross > f->crossings)
+        f->crossings = cross;
+    TEST_ASSERT_EQUAL_INT(0, retrace_measure(flat.v, flat.n, ends.i, ends.n, &share, &passes));
+    f->retrace = fmax(f->retrace, share);
+    if (passes > f->passes)
+        f->passes = passes;
+    free(corner);
+    qc_points_free(ctx, &flat);
+    qc_order_free(ctx, &ends);
+}
+
+static void run_all(void)
+{
+    qc_ctx ctx;
+    size_t k, s, e;
+    int fam;
+
+    if (measured)
+        return;
+    measured = 1;
+    shapes = pieced_shapes(&nshapes);
+    qc_ctx_init(&ctx, NULL, NULL);
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            qc_region r;
+            figs *f = &table[fam][k];
+
+            figs_init(f);
+            TEST_ASSERT_EQUAL_INT(QC_OK, pieced_build(&ctx, k, &r));
+            for (s = 0; s < 2; s++)
+                for (e = 0; e < 2; e++) {
+                    qc_params p;
+                    qc_result res;
+                    int rc;
+
+                    memset(&p, 0, sizeof p);
+                    p.skip_gap_stat = 1;
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "family", fam));
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "spacing",
+                                                               spacings_in[s] * IN));
+                    p.seed = seeds[e];
+                    f->runs++;
+                    rc = qc_generate(&ctx, &r, &p, NULL, NULL, &res);
+                    if (rc < 0) {
+                        f->failed++;
+                        snprintf(f->why, sizeof f->why, "%s", ctx.msg);
+                        continue;
+                    }
+                    measure_one(&ctx, &r, &res, spacings_in[s] * IN, f);
+                    qc_result_free(&ctx, &res);
+                }
+            qc_region_free(&ctx, &r);
+        }
+}
+
+static void print_table(void)
+{
+    size_t k;
+    int fam, b;
+
+    if (getenv("QC_COVERAGE_TABLE") == NULL)
+        return;
+    printf("\n| family | shape | fail | 90 | 45 | 36 | 31 | farthest/d | seam>1/4in | "
+           "outside segs (runs) | out mm | crossings | retrace | passes |\n");
+    printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            const figs *f = &table[fam][k];
+            printf("| %s | %s | %d/%d | ", qc_family_name(fam), shapes[k].name, f->failed,
+                   f->runs);
+            for (b = 0; b < NBIN; b++)
+                if (f->corner[b] >= 0)
+                    printf("%.2f | ", f->corner[b]);
+                else
+                    printf("- | ");
+            printf("%.2f | %.0f%% | %lu (%d) | %.2f | %lu | %.0f%% | %lu |%s%s\n", f->farthest,
+                   100 * f->seam, (unsigned long)f->outside, f->runs_outside, f->outside_mm,
+                   (unsigned long)f->crossings, 100 * f->retrace, (unsigned long)f->passes,
+                   f->failed ? " " : "", f->failed ? f->why : "");
+        }
+    printf("\n| family | 90 (floor 0.42) | 45 (0.78) | 36 (0.97) | 31 (1.12) |\n|---|---|---|---|---|\n");
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++) {
+        double w[NBIN] = {-1, -1, -1, -1};
+        for (k = 0; k < nshapes; k++)
+            for (b = 0; b < NBIN; b++)
+                w[b] = fmax(w[b], table[fam][k].corner[b]);
+        printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", qc_family_name(fam), w[0], w[1], w[2],
+               w[3]);
+    }
+    }
+
+static void corpus_should_generate_and_measure(void)
+{
+    run_all();
+    print_table();
+    TEST_ASSERT_TRUE(nshapes >= 13);
+}
+
+/* Goal: points or segments outside (sampled every 0.01 in against the
+ * region grown by 0.02 in): 0, every family, every shape, spacing and seed. */
+static void every_family_should_keep_every_stitch_inside(void)
+{
+    char msg[200];
+    size_t k;
+    int fam;
+
+    run_all();
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            snprintf(msg, sizeof msg, "%s on %s: %lu segments outside, up to %.2f mm",
+                     qc_family_name(fam), shapes[k].name, (unsigned long)table[fam][k].outside,
+                     table[fam][k].outside_mm);
+            TEST_ASSERT_EQUAL_size_t_MESSAGE(0, table[fam][k].outside, msg);
+        }
+}
+
+/* Goal: corner to nearest stitch, worst over shapes, spacings and seeds:
+ * 90 deg <= 0.9 d, 45 <= 1.3 d, 36 <= 1.5 d, 31 <= 1.6 d (exact distances
+ * from the corner vertex to the path flattened to 0.01 mm; no tolerance).
+ * Pebbling and packing (pebbles keep off the seams) and spiral do not meet
+ * it yet (docs/coverage.md). */
+static void families_should_reach_into_corners(void)
+{
+    static const double goal[NBIN] = {0.9, 1.3, 1.5, 1.6};
+    static const int meets[] = {QC_FAMILY_VINE, QC_FAMILY_BRANCHING, QC_FAMILY_WANDERER,
+                                QC_FAMILY_FILL, QC_FAMILY_STIPPLE, QC_FAMILY_ECHO};
+    char msg[200];
+    size_t k, m;
+    int fam, b;
+
+    run_all();
+    for (m = 0; m < sizeof meets / sizeof meets[0]; m++) {
+        fam = meets[m];
+        for (k = 0; k < nshapes; k++)
+            for (b = 0; b < NBIN; b++) {
+                snprintf(msg, sizeof msg, "%s on %s: %.0f deg corner %.2f d from a stitch",
+                         qc_family_name(fam), shapes[k].name, bin_deg[b], table[fam][k].corner[b]);
+                if (!(table[fam][k].corner[b] <= goal[b]))
+                    TEST_FAIL_MESSAGE(msg);
+            }
+    }
+}
+
+/* Every family makes a pattern on every shape at both spacings (the 0.75 in
+ * border at d = 0.6 in gets one row of points instead of "no point fits"). */
+static void every_family_should_fill_every_shape(void)
+{
+    char msg[QC_ERRMSG_MAX + 100];
+    size_t k;
+    int fam;
+
+    run_all();
+    for (fam = 1; fam < QC_FAMILY_COUNT; fam++)
+        for (k = 0; k < nshapes; k++) {
+            snprintf(msg, sizeof msg, "%s on %s: %s", qc_family_name(fam), shapes[k].name,
+                     table[fam][k].why);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(0, table[fam][k].failed, msg);
+        }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(corpus_should_generate_and_measure);
+    RUN_TEST(every_family_should_keep_every_stitch_inside);
+    RUN_TEST(families_should_reach_into_corners);
+    RUN_TEST(every_family_should_fill_every_shape);
+    return UNITY_END();
+}
