@@ -1,17 +1,28 @@
 /*
  * Runs concorde (Applegate, Bixby, Chvátal, Cook) on a TSPLIB file of the
  * points in micrometres and reads its tour back. Concorde is not in Debian;
- * without it on PATH we say how to get it.
+ * without it on PATH we say how to get it. It runs in a private temporary
+ * folder (it writes half a dozen files named after its input in the current
+ * one), in its own process group under a time limit (on a crash it sleeps an
+ * hour for a debugger; SIGTERM ends it at once), and without -x (which makes
+ * it exit 255 after a good solve). Its tour is used only when it exited 0
+ * and the tour is a permutation of the points.
  */
+#include <dirent.h>
 #include <errno.h>
-#include <math.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "concorde.h"
+
+#define LIMIT_MS 600000.0 /* without --tsp-time: ten minutes */
+#define GRACE_MS 1000.0   /* after SIGTERM, before SIGKILL */
 
 static int on_path(const char *prog)
 {
@@ -51,86 +62,274 @@ static int write_tsplib(const char *path, const qc_points *pts)
     return fclose(f) == 0 ? 0 : -1;
 }
 
-static int run_concorde(const char *dir, const char *tsp, const char *sol)
+static double now_ms(void)
 {
-    pid_t pid = fork();
-    int status;
+    struct timespec ts;
 
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static void nap_ms(double ms)
+{
+    struct timespec ts;
+
+    ts.tv_sec = (time_t)(ms / 1e3);
+    ts.tv_nsec = (long)((ms - (double)ts.tv_sec * 1e3) * 1e6);
+    nanosleep(&ts, NULL);
+}
+
+/* Waits for pid until deadline (ms, now_ms clock): 1 when it exited (its
+ * status in *status), 0 at the deadline. */
+static int wait_until(pid_t pid, double deadline, int *status)
+{
+    double nap = 2;
+
+    for (;;) {
+        pid_t r = waitpid(pid, status, WNOHANG);
+
+        if (r == pid || (r < 0 && errno != EINTR))
+            return 1;
+        if (now_ms() >= deadline)
+            return 0;
+        nap_ms(nap);
+        nap = nap < 50 ? nap * 2 : 50;
+    }
+}
+
+/* concorde -s 1 -o out.sol in.tsp in dir, its output to dir/log: 0 when it
+ * exited 0 within limit_ms; else -1, with *timed_out set when it was killed. */
+static int run_concorde(const char *dir, double limit_ms, int *timed_out)
+{
+    pid_t pid;
+    int status = 0;
+
+    *timed_out = 0;
+    fflush(NULL);
+    pid = fork();
     if (pid < 0)
         return -1;
     if (pid == 0) {
-        if (chdir(dir) == 0 && freopen("/dev/null", "w", stdout) != NULL)
-            execlp("concorde", "concorde", "-x", "-o", sol, tsp, (char *)NULL);
+        int in, log;
+
+        setpgid(0, 0); /* its own group: the timeout ends whatever it started */
+        in = open("/dev/null", O_RDONLY);
+        if (chdir(dir) == 0 && in >= 0 && (log = open("log", O_WRONLY | O_CREAT | O_TRUNC, 0600)) >= 0 &&
+            dup2(in, 0) >= 0 && dup2(log, 1) >= 0 && dup2(log, 2) >= 0)
+            execlp("concorde", "concorde", "-s", "1", "-o", "out.sol", "in.tsp", (char *)NULL);
         _exit(127);
     }
-    if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    setpgid(pid, pid); /* also here: no race with the child's own call */
+    if (!wait_until(pid, now_ms() + limit_ms, &status)) {
+        *timed_out = 1;
+        kill(-pid, SIGTERM);
+        if (!wait_until(pid, now_ms() + GRACE_MS, &status)) {
+            kill(-pid, SIGKILL);
+            waitpid(pid, &status, 0);
+        }
+        kill(-pid, SIGKILL); /* anything of its group still there */
         return -1;
-    return 0;
+    }
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
-/* The solution file: the count, then the 0-based tour. */
+/* The solution file: the count, then a permutation of 0..n-1, nothing else. */
 static int read_tour(qc_ctx *ctx, const char *path, size_t n, qc_order *out)
 {
     FILE *f = fopen(path, "r");
+    unsigned char *seen = calloc(n ? n : 1, 1);
     unsigned long count, v;
     size_t i;
+    int rc = -1;
+    char c;
 
-    if (f == NULL || fscanf(f, "%lu", &count) != 1 || count != n) {
-        if (f != NULL)
-            fclose(f);
-        return -1;
+    if (f == NULL || seen == NULL || fscanf(f, "%lu", &count) != 1 || count != n)
+        goto out;
+    for (i = 0; i < n; i++) {
+        if (fscanf(f, "%lu", &v) != 1 || v >= n || seen[v] ||
+            qc_order_push(ctx, out, (uint32_t)v) < 0)
+            goto out;
+        seen[v] = 1;
     }
-    for (i = 0; i < n; i++)
-        if (fscanf(f, "%lu", &v) != 1 || v >= n || qc_order_push(ctx, out, (uint32_t)v) < 0) {
-            fclose(f);
-            return -1;
-        }
-    fclose(f);
+    rc = fscanf(f, " %c", &c) == EOF ? 0 : -1;
+out:
+    if (f != NULL)
+        fclose(f);
+    free(seen);
+    return rc;
+}
+
+/* Empties and removes the folder concorde ran in (only files are there). */
+static void remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *ent;
+    char path[4096 + 260];
+
+    while (d != NULL && (ent = readdir(d)) != NULL) {
+        if (strcmp(ent->d_name, ".") == 0 || strcmp(ent->d_name, "..") == 0)
+            continue;
+        if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, ent->d_name) < sizeof path)
+            remove(path);
+    }
+    if (d != NULL)
+        closedir(d);
+    rmdir(dir);
+}
+
+/* Concorde's optimal tour of pts in *tour, started at root; limit_ms of
+ * its time (0: LIMIT_MS). CLI_* status, after one line on failure. */
+static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, double limit_ms,
+                         qc_order *tour)
+{
+    const char *tmp = getenv("TMPDIR");
+    char dir[4000], tsp[4096], sol[4096];
+    qc_order raw = {0};
+    size_t i, at = 0, n = pts->n;
+    int timed_out = 0, rc = CLI_RUNTIME;
+
+    tour->n = 0;
+    if (n <= 3) { /* every order is optimal; concorde refuses fewer than 3 */
+        for (i = 0; i < n; i++)
+            if (qc_order_push(ctx, tour, (uint32_t)((root + i) % n)) < 0)
+                return cli_fail(ctx, "--tsp concorde", ctx->status);
+        return CLI_OK;
+    }
+    if (tmp == NULL || *tmp == '\0' || strlen(tmp) > 3900)
+        tmp = "/tmp";
+    snprintf(dir, sizeof dir, "%s/quiltc-concorde-XXXXXX", tmp);
+    if (mkdtemp(dir) == NULL) {
+        cli_error("--tsp concorde: cannot make a temporary folder in %s: %s", tmp,
+                  strerror(errno));
+        return CLI_RUNTIME;
+    }
+    snprintf(tsp, sizeof tsp, "%s/in.tsp", dir);
+    snprintf(sol, sizeof sol, "%s/out.sol", dir);
+    if (limit_ms <= 0)
+        limit_ms = LIMIT_MS;
+    if (write_tsplib(tsp, pts) != 0) {
+        cli_error("--tsp concorde: cannot write %s: %s", tsp, strerror(errno));
+    } else if (run_concorde(dir, limit_ms, &timed_out) != 0) {
+        if (timed_out)
+            cli_error("--tsp concorde: no tour from concorde within %g s on %lu points "
+                      "(stopped; --tsp-time sets its limit)",
+                      limit_ms / 1e3, (unsigned long)n);
+        else
+            cli_error("--tsp concorde: concorde failed on %lu points", (unsigned long)n);
+    } else if (read_tour(ctx, sol, n, &raw) != 0) {
+        cli_error("--tsp concorde: concorde's tour is not a permutation of the %lu points",
+                  (unsigned long)n);
+    } else {
+        for (i = 0; i < n; i++) /* start at the root, as the built-in tour does */
+            if (raw.i[i] == root)
+                at = i;
+        rc = CLI_OK;
+        for (i = 0; i < n && rc == CLI_OK; i++)
+            if (qc_order_push(ctx, tour, raw.i[(at + i) % n]) < 0)
+                rc = cli_fail(ctx, "--tsp concorde", ctx->status);
+    }
+    qc_order_free(ctx, &raw);
+    remove_dir(dir);
+    return rc;
+}
+
+static int have_concorde(void)
+{
+    if (on_path("concorde"))
+        return 1;
+    cli_error("--tsp concorde: no 'concorde' program on PATH (build it from "
+              "https://www.math.uwaterloo.ca/tsp/concorde.html, or use --tsp oropt)");
     return 0;
 }
 
 int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region *region,
                           const qc_points *given, qc_result *res)
 {
-    char dir[] = "/tmp/quiltc-concorde-XXXXXX", tsp[64], sol[64];
     qc_params p = *params;
     qc_order tour = {0};
-    size_t i, at = 0;
-    int rc = CLI_RUNTIME;
+    int rc;
 
-    if (!on_path("concorde")) {
-        cli_error("--tsp concorde: no 'concorde' program on PATH (build it from "
-                  "https://www.math.uwaterloo.ca/tsp/concorde.html, or use --tsp oropt)");
+    if (!have_concorde())
         return CLI_RUNTIME;
-    }
     qc_params_set(ctx, &p, "skeleton", QC_SKELETON_MST); /* for the points and root */
     if (qc_generate(ctx, region, &p, given, NULL, res) < 0)
         return cli_fail(ctx, "skeleton", ctx->status);
-    if (mkdtemp(dir) == NULL) {
-        cli_error("cannot make a temporary directory: %s", strerror(errno));
-        return CLI_RUNTIME;
+    rc = concorde_tour(ctx, &res->points, res->points.n ? res->order.i[0] : 0,
+                       res->params.tsp_time_ms, &tour);
+    if (rc == CLI_OK) {
+        qc_order_free(ctx, &res->order);
+        res->order = tour;
+        qc_edges_free(ctx, &res->edges);
+        return CLI_OK;
     }
-    snprintf(tsp, sizeof tsp, "%s/in.tsp", dir);
-    snprintf(sol, sizeof sol, "%s/out.sol", dir);
-    if (write_tsplib(tsp, &res->points) != 0 || run_concorde(dir, "in.tsp", "out.sol") != 0 ||
-        read_tour(ctx, sol, res->points.n, &tour) != 0) {
-        cli_error("--tsp concorde: concorde failed on %lu points",
-                  (unsigned long)res->points.n);
-        goto out;
-    }
-    for (i = 0; i < tour.n; i++) /* start at the root, as the built-in tour does */
-        if (tour.i[i] == res->order.i[0])
-            at = i;
-    res->order.n = 0;
-    qc_edges_free(ctx, &res->edges);
-    for (i = 0; i < tour.n; i++)
-        if (qc_order_push(ctx, &res->order, tour.i[(at + i) % tour.n]) < 0)
-            goto out;
-    rc = CLI_OK;
-out:
     qc_order_free(ctx, &tour);
-    remove(tsp);
-    remove(sol);
-    rmdir(dir);
     return rc;
+}
+
+static qc_family_fn tour_family(int family)
+{
+    switch (family) {
+    case QC_FAMILY_VINE: return qc_deco_vine;
+    case QC_FAMILY_BRANCHING: return qc_deco_branching;
+    case QC_FAMILY_WANDERER: return qc_deco_wanderer;
+    case QC_FAMILY_PEBBLING: return qc_deco_pebbling;
+    case QC_FAMILY_PACKING: return qc_deco_packing;
+    case QC_FAMILY_FILL: return qc_deco_fill;
+    case QC_FAMILY_STIPPLE: return qc_deco_stipple;
+    default: return NULL; /* echo and spiral have no points */
+    }
+}
+
+int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region *region,
+                          const qc_points *given, const qc_motif_set *motifs, qc_result *res)
+{
+    qc_params p = *params, r;
+    qc_skeleton sk;
+    qc_order tour = {0};
+    qc_family_fn fn;
+    int rc;
+
+    if (qc_params_resolve(ctx, params, &r) < 0)
+        return cli_fail(ctx, "generate", ctx->status);
+    fn = tour_family(r.family);
+    if (fn == NULL) {
+        cli_error("--tsp concorde: the %s family has no points to tour", qc_family_name(r.family));
+        return CLI_USAGE;
+    }
+    if (r.skeleton != QC_SKELETON_TSP) {
+        cli_error("--tsp concorde: the %s family walks a tree, not a tour (add --skeleton tsp)",
+                  qc_family_name(r.family));
+        return CLI_USAGE;
+    }
+    if (!have_concorde())
+        return CLI_RUNTIME;
+    /* the built-in tour is replaced: its cheapest, then the family again */
+    qc_params_set(ctx, &p, "tsp", QC_TSP_GREEDY);
+    qc_params_set(ctx, &p, "tsp-time", 0);
+    if (qc_generate(ctx, region, &p, given, motifs, res) < 0)
+        return cli_fail(ctx, "generate", ctx->status);
+    rc = concorde_tour(ctx, &res->points, res->order.i[0], r.tsp_time_ms, &tour);
+    if (rc != CLI_OK) {
+        qc_order_free(ctx, &tour);
+        return rc;
+    }
+    qc_order_free(ctx, &res->order);
+    res->order = tour;
+    res->params = r;
+    memset(&sk, 0, sizeof sk);
+    sk.p = res->points.v;
+    sk.n = res->points.n;
+    sk.order = res->order.i;
+    sk.norder = res->order.n;
+    sk.root = res->order.i[0];
+    qc_path_free(ctx, &res->path);
+    memset(&res->stats, 0, sizeof res->stats);
+    if (fn(ctx, region, &res->params, &sk, motifs, &res->path, &res->stats) < 0)
+        return cli_fail(ctx, "generate", ctx->status);
+    res->stats.points = res->points.n;
+    res->stats.edges = res->edges.n;
+    res->stats.order = res->order.n;
+    qc_curve_measure(&res->path, 0.05, &res->stats.length_mm, &res->stats.bbox); /* as qc_generate */
+    res->stats.pieces = qc_path_pieces(&res->path);
+    return CLI_OK;
 }
