@@ -32,6 +32,7 @@ static void usage(FILE *f, const char *family)
           "  --feed MM_PER_MIN        G-code feed rate (default 1500)\n"
           "  --stats                  one JSON object of figures on stderr\n"
           "  --upload DEVICE          send the first output to a machine (VID:PID or BUS-PORT)\n"
+          "  --tsp concorde           tour skeletons: the tour of a concorde program on PATH\n"
           "  -q, --quiet              no progress output\n",
           f);
     cli_pattern_help(f, fam > 0 ? 1u << fam : 0xFFFFFFFFu);

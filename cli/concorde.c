@@ -24,21 +24,27 @@
 #define LIMIT_MS 600000.0 /* without --tsp-time: ten minutes */
 #define GRACE_MS 1000.0   /* after SIGTERM, before SIGKILL */
 
-static int on_path(const char *prog)
+/* The program's path found along PATH into buf, made absolute (concorde
+ * runs in another folder): 1, or 0 when none is there. */
+static int on_path(const char *prog, char *buf, size_t size)
 {
     const char *path = getenv("PATH");
-    char buf[4096];
 
     while (path != NULL && *path != '\0') {
         const char *end = strchr(path, ':');
-        size_t n = end ? (size_t)(end - path) : strlen(path);
+        size_t n = end ? (size_t)(end - path) : strlen(path), at = 0;
         struct stat st;
 
-        if (n + strlen(prog) + 2 < sizeof buf) {
-            memcpy(buf, path, n);
-            buf[n] = '/';
-            strcpy(buf + n + 1, prog);
-            if (stat(buf, &st) == 0 && (st.st_mode & S_IXUSR))
+        if (path[0] != '/' && (getcwd(buf, size) == NULL || (at = strlen(buf) + 1) >= size))
+            return 0;
+        if (at > 0)
+            buf[at - 1] = '/';
+        if (at + n + strlen(prog) + 2 < size) {
+            memcpy(buf + at, n > 0 ? path : ".", n > 0 ? n : 1);
+            at += n > 0 ? n : 1;
+            buf[at] = '/';
+            strcpy(buf + at + 1, prog);
+            if (stat(buf, &st) == 0 && S_ISREG(st.st_mode) && (st.st_mode & S_IXUSR))
                 return 1;
         }
         path = end ? end + 1 : NULL;
@@ -99,7 +105,7 @@ static int wait_until(pid_t pid, double deadline, int *status)
 
 /* concorde -s 1 -o out.sol in.tsp in dir, its output to dir/log: 0 when it
  * exited 0 within limit_ms; else -1, with *timed_out set when it was killed. */
-static int run_concorde(const char *dir, double limit_ms, int *timed_out)
+static int run_concorde(const char *prog, const char *dir, double limit_ms, int *timed_out)
 {
     pid_t pid;
     int status = 0;
@@ -116,7 +122,7 @@ static int run_concorde(const char *dir, double limit_ms, int *timed_out)
         in = open("/dev/null", O_RDONLY);
         if (chdir(dir) == 0 && in >= 0 && (log = open("log", O_WRONLY | O_CREAT | O_TRUNC, 0600)) >= 0 &&
             dup2(in, 0) >= 0 && dup2(log, 1) >= 0 && dup2(log, 2) >= 0)
-            execlp("concorde", "concorde", "-s", "1", "-o", "out.sol", "in.tsp", (char *)NULL);
+            execl(prog, "concorde", "-s", "1", "-o", "out.sol", "in.tsp", (char *)NULL);
         _exit(127);
     }
     setpgid(pid, pid); /* also here: no race with the child's own call */
@@ -183,7 +189,7 @@ static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, doubl
                          qc_order *tour)
 {
     const char *tmp = getenv("TMPDIR");
-    char dir[4000], tsp[4096], sol[4096];
+    char dir[4000], tsp[4096], sol[4096], prog[4096];
     qc_order raw = {0};
     size_t i, at = 0, n = pts->n;
     int timed_out = 0, rc = CLI_RUNTIME;
@@ -209,7 +215,8 @@ static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, doubl
         limit_ms = LIMIT_MS;
     if (write_tsplib(tsp, pts) != 0) {
         cli_error("--tsp concorde: cannot write %s: %s", tsp, strerror(errno));
-    } else if (run_concorde(dir, limit_ms, &timed_out) != 0) {
+    } else if (!on_path("concorde", prog, sizeof prog) ||
+               run_concorde(prog, dir, limit_ms, &timed_out) != 0) {
         if (timed_out)
             cli_error("--tsp concorde: no tour from concorde within %g s on %lu points "
                       "(stopped; --tsp-time sets its limit)",
@@ -235,7 +242,9 @@ static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, doubl
 
 static int have_concorde(void)
 {
-    if (on_path("concorde"))
+    char prog[4096];
+
+    if (on_path("concorde", prog, sizeof prog))
         return 1;
     cli_error("--tsp concorde: no 'concorde' program on PATH (build it from "
               "https://www.math.uwaterloo.ca/tsp/concorde.html, or use --tsp oropt)");

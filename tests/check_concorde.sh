@@ -32,10 +32,11 @@ no_leak() {
 SKEL="skeleton --region square:100 --units mm --points square --spacing 10 --path tsp --tsp concorde"
 
 # The stand-in writes its files where it runs, as concorde does, and the
-# identity tour: accepted, and its files are gone.
+# identity tour: accepted, and its files are gone (PATH relative, as a
+# user may have it: concorde runs elsewhere).
 fake_tour_used() {
     fake f 'echo x > in.sol; echo x > Oin.sav; { echo "$N"; seq 0 $((N - 1)); } > "$SOL"; exit 0'
-    mkdir -p tmp && TMPDIR=$WORK/tmp PATH=$WORK/f:$PATH "$QC" $SKEL -o s.json &&
+    mkdir -p tmp && TMPDIR=$WORK/tmp PATH=f:$PATH "$QC" $SKEL -o s.json &&
         python3 -c '
 import json
 s = json.load(open("s.json"))
