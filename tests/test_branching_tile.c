@@ -9,7 +9,7 @@
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
-#include "../src/deco/branching_tile.h"
+#include "../src/deco/family_branching_tile.h"
 
 static testalloc ta;
 static qc_ctx ctx;

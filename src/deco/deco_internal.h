@@ -8,7 +8,7 @@
 
 #include "internal.h"
 
-/* ---- motif geometry (motif_geom.c) ---- */
+/* ---- motif geometry (shared_motif_geom.c) ---- */
 
 /* Convex hull of pts[0..n) (Andrew's monotone chain), CCW, no collinear
  * points, written to out (room for 2n); scratch holds 2n. Returns the count. */
@@ -48,7 +48,7 @@ static inline qc_vec2 qc__xf_apply(const qc__xf *f, qc_vec2 p)
 QC__HIDDEN int qc__path_append_xf(qc_ctx *ctx, qc_path *out, const qc_path *path,
                                   const qc__xf *f);
 
-/* ---- collision grid (collide.c) ---- */
+/* ---- collision grid (shared_collide.c) ---- */
 
 /* Convex polygons (2 vertices: a segment) binned in a uniform grid. */
 typedef struct qc__cgrid_item {
@@ -126,7 +126,7 @@ QC__HIDDEN int qc__branching_run(qc_ctx *ctx, const qc_region *region,
                                  const qc_motif_set *motifs, qc_path *out,
                                  qc_stats *stats, qc__placement *pl);
 
-/* ---- fixed-width fill outlines (fill_tree.c) ---- */
+/* ---- fixed-width fill outlines (shared_fill_tree.c) ---- */
 
 /* A tree as half-edges sorted counter-clockwise round each node. */
 typedef struct qc__ftree {
@@ -164,6 +164,21 @@ QC__HIDDEN int qc__ftree_loop(qc_ctx *ctx, const qc__ftree *t, uint32_t root,
 QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint32_t b,
                               const qc__fstyle *st, qc_points *out);
 
+/* ---- the fill and stipple runner (shared_fill_outline.c) ---- */
+
+/* What tells fill and stipple apart. */
+typedef struct qc__outline_style {
+    const char *name;  /* the family, for messages */
+    double arc_step;   /* largest tip-arc angle, radians */
+    int smooth;        /* 1: through a Catmull-Rom spline; 0: straight lines */
+} qc__outline_style;
+
+/* The tree outlined at params->width (tiled when params->tile asks), the
+ * path appended to out; stats->largest_gap_mm filled unless skipped. */
+QC__HIDDEN int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
+                                const qc_skeleton *skel, const qc__outline_style *style,
+                                qc_path *out, qc_stats *stats);
+
 /* ---- tiles (tile.c) ---- */
 
 /* Port stubs: the nearest this many points are tried. */
@@ -175,7 +190,7 @@ QC__HIDDEN int qc__ftree_open(qc_ctx *ctx, const qc__ftree *t, uint32_t a, uint3
 QC__HIDDEN uint32_t qc__tile_port_node(const qc_vec2 *p, size_t n, const qc_edge *e, size_t ne,
                                        qc_vec2 a);
 
-/* ---- segments in a uniform grid (seg_grid.c) ---- */
+/* ---- segments in a uniform grid (shared_seg_grid.c) ---- */
 
 /* Segment k runs from p[k] to p[next(ud, k)]. */
 typedef uint32_t (*qc__seg_next)(const void *ud, uint32_t k);
@@ -198,7 +213,8 @@ QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p
 QC__HIDDEN void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4]);
 QC__HIDDEN void qc__seg_grid_free(qc_ctx *ctx, qc__seg_grid *g);
 
-/* ---- distance grids and offset rings (sdf.c, sdf_rings.c, ring_repair.c) ---- */
+/* ---- distance grids and offset rings (shared_sdf.c, shared_sdf_rings.c,
+ *      shared_ring_repair.c) ---- */
 
 /* Distance to a region's boundary sampled on a grid: node (i, j) at
  * (x0 + i h, y0 + j h), v > 0 inside, < 0 outside; seg: each node's
@@ -251,13 +267,13 @@ typedef struct qc__rings {
 QC__HIDDEN int qc__sdf_rings(qc_ctx *ctx, const qc__sdf *s, double l0, double step,
                              size_t max_levels, qc__rings *out);
 QC__HIDDEN void qc__rings_free(qc_ctx *ctx, qc__rings *r);
-/* ring_repair.c, on the rings from index first on (h: the grid step):
+/* shared_ring_repair.c, on the rings from index first on (h: the grid step):
  * drops small islands that cross a larger ring of their level or
  * themselves; undoes crossings within a level by rejoining segments. */
 QC__HIDDEN void qc__rings_prune_islands(qc__rings *r, size_t first, double h);
 QC__HIDDEN int qc__rings_untangle(qc_ctx *ctx, qc__rings *r, size_t first, double h);
 
-/* ---- rings joined into one path (echo_join.c) ---- */
+/* ---- rings joined into one path (family_echo_join.c) ---- */
 
 typedef struct qc__join_opts {
     double gap;      /* width of a ladder: two parallel steps gap mm apart */

@@ -7,7 +7,7 @@
 
 #include "deco_internal.h"
 
-/* ---- the region's boundary edges, binned (pebble_bound.c) ---- */
+/* ---- the region's boundary edges, binned (shared_pebble_bound.c) ---- */
 
 typedef struct qc__pbound {
     const qc_region *region;
@@ -45,7 +45,7 @@ QC__HIDDEN int qc__pbound_cross_list(qc_ctx *ctx, qc__pbound *b, qc_vec2 p, qc_v
 /* Ring holding vertex v, and that ring's first and one-past-last vertex. */
 QC__HIDDEN size_t qc__pbound_ring(const qc_region *r, uint32_t v, uint32_t *lo, uint32_t *hi);
 
-/* ---- the packing (pebble_pack.c) ---- */
+/* ---- the packing (shared_pebble_pack.c) ---- */
 
 #define QC__PEB_NONE 0xFFFFFFFFu
 #define QC__PEB_BRIDGE 1u   /* joined to its parent by a straight stitch, not a tangency */
@@ -96,7 +96,7 @@ QC__HIDDEN int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t
 QC__HIDDEN int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound *b,
                                  qc_stats *st);
 
-/* ---- trimming overgrown paths (pebble_trim.c) ---- */
+/* ---- trimming overgrown paths (shared_pebble_trim.c) ---- */
 
 /*
  * Appends the closed path in, cut to region moved inset mm inwards (the

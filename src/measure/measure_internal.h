@@ -1,6 +1,6 @@
 /*
  * Internals shared by the measures (src/measure/) and the offsetting of
- * the echo and spiral families (src/deco/sdf.c): rasterising a region.
+ * the echo and spiral families (src/deco/shared_sdf.c): rasterising a region.
  */
 #ifndef QC_MEASURE_INTERNAL_H
 #define QC_MEASURE_INTERNAL_H

@@ -1,11 +1,11 @@
 /*
- * Iso-contours of the distance field (sdf.c) by marching squares, all
+ * Iso-contours of the distance field (shared_sdf.c) by marching squares, all
  * levels in one pass. Contour vertices are moved onto the exact level
  * (Newton along the grid edge) and chords that stray from it are split, so
  * every vertex lies at its level to about 1e-9 mm and every chord within
  * 0.2% of the level spacing. Offsetting this way handles concave outlines,
  * holes and rings that split or vanish without special cases; where a
- * level is thinner than the grid, ring_repair.c mends what marching
+ * level is thinner than the grid, shared_ring_repair.c mends what marching
  * squares cannot tell apart.
  */
 #include <math.h>

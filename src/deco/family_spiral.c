@@ -2,7 +2,7 @@
  * Spiral (beyond the paper): one spiral from a centre (the point farthest
  * from the boundary, or start-x/start-y), clipped to the region minus its
  * margin, the pieces joined by running along the margin's offset ring
- * (sdf.c) from where the spiral leaves to where it comes back, so the
+ * (shared_sdf.c) from where the spiral leaves to where it comes back, so the
  * result is one continuous path inside the region. The spiral is clipped
  * at its exact crossings with the ring's polyline (whose vertices lie on
  * the margin and chords within 0.2% of d of it), and every crossing

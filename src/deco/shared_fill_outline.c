@@ -1,8 +1,9 @@
 /*
- * Fixed-width fill and stippling (paper §7.1, Fig. 26): the spanning tree
- * outlined at width w as one closed, non-crossing loop (fill_tree.c);
- * stippling is the same outline at w = d/3 through a centripetal
- * Catmull-Rom spline, which reads as the classic meander. With a tile mode
+ * The outline runner shared by Fixed-width fill (family_fill.c) and
+ * Stippling (family_stipple.c), paper §7.1, Fig. 26: the spanning tree
+ * outlined at width w as one closed, non-crossing loop (shared_fill_tree.c),
+ * drawn straight (fill) or through a centripetal Catmull-Rom spline
+ * (stipple). With a tile mode
  * the region is a tile: the path runs from its left port to its mirrored
  * right port (the ports joined to the tree as extra leaves, the port-to-port
  * branch crossed once) and the tile is laid out repeat_cols x repeat_rows.
@@ -65,10 +66,11 @@ out:
     return rc;
 }
 
-static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
-                    const qc_skeleton *skel, qc_path *out, qc_stats *stats, int stipple)
+int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
+                     const qc_skeleton *skel, const qc__outline_style *style, qc_path *out,
+                     qc_stats *stats)
 {
-    const char *name = stipple ? "stipple" : "fill";
+    const char *name = style->name;
     qc__fstyle st;
     qc__ftree t;
     qc_points pts = {0};
@@ -92,7 +94,7 @@ static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
     memset(&st, 0, sizeof st);
     st.half = 0.5 * w;
     st.tip = prm->tip == QC_TIP_CIRCLE ? fmin(1.5 * w, 0.4 * d) : 0.0;
-    st.arc_step = stipple ? QC_PI / 4.0 : QC_PI / 16.0;
+    st.arc_step = style->arc_step;
     if (tiled) {
         rc = tile_outline(ctx, region, prm, skel, &st, &pts, &entry, &exit);
     } else {
@@ -102,7 +104,7 @@ static int fill_run(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
     }
     if (rc < 0)
         goto out;
-    if (stipple) {
+    if (style->smooth) {
         rc = qc_curve_catmull_rom(ctx, pts.v, pts.n, !tiled, &one);
     } else {
         rc = qc_path_move_to(ctx, &one, pts.v[0]);
@@ -144,20 +146,4 @@ out:
     qc_path_free(ctx, &one);
     qc_path_free(ctx, &rep);
     return rc;
-}
-
-int qc_deco_fill(qc_ctx *ctx, const qc_region *region, const qc_params *params,
-                 const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
-                 qc_stats *stats)
-{
-    (void)motifs;
-    return fill_run(ctx, region, params, skel, out, stats, 0);
-}
-
-int qc_deco_stipple(qc_ctx *ctx, const qc_region *region, const qc_params *params,
-                    const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
-                    qc_stats *stats)
-{
-    (void)motifs;
-    return fill_run(ctx, region, params, skel, out, stats, 1);
 }

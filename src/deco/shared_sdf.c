@@ -3,7 +3,7 @@
  * distances to the nearest boundary edge on a grid, found near the
  * boundary and carried inward by two raster sweeps, each node keeping its
  * nearest edge; then exact distance queries anywhere from those edges.
- * The iso-contours are traced in sdf_rings.c.
+ * The iso-contours are traced in shared_sdf_rings.c.
  */
 #include <math.h>
 #include <stddef.h>

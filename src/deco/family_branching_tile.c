@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "branching_tile.h"
+#include "family_branching_tile.h"
 
 void qc__btile_free(qc_ctx *ctx, qc__btile *t)
 {

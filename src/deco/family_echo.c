@@ -1,9 +1,9 @@
 /*
  * Echo (beyond the paper): the region's outline echoed inward (and round
  * each hole outward) every d, starting at the margin: the level sets
- * margin + k d of the distance to the boundary (sdf.c, sdf_rings.c), so
+ * margin + k d of the distance to the boundary (shared_sdf.c, shared_sdf_rings.c), so
  * concave outlines, holes and rings that split need no special case. The rings are
- * joined into one continuous path (echo_join.c): back-and-forth rings
+ * joined into one continuous path (family_echo_join.c): back-and-forth rings
  * joined by ladders of short steps (a closed loop), or a spiral of single
  * steps (an open path from the outside in).
  */

@@ -1,7 +1,7 @@
 /*
  * Repairs of traced contour rings where a level set is thinner than the
  * distance field's grid: islands that cross the body they were cut from,
- * and crossings undone by rejoining the two segments (sdf_rings.c calls
+ * and crossings undone by rejoining the two segments (shared_sdf_rings.c calls
  * both).
  */
 #include <math.h>

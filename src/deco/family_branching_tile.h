@@ -1,5 +1,5 @@
 /*
- * Branching tiles (paper §7.1, Fig. 27), used by branching.c: the skeleton
+ * Branching tiles (paper §7.1, Fig. 27), used by family_branching.c: the skeleton
  * with the tile's two ports added as leaves and walked from the entry port
  * to the exit port, the neighbouring copies for wrapped collision tests,
  * and the layout of the finished tile.

@@ -6,14 +6,14 @@
  * side, else skip). Each motif is sewn as a detour from its attachment
  * point and back, so the result is one piece. With a tile mode the region
  * is a tile: the vine runs from its entry port to its exit port, collision
- * tests wrap across its edges (branching_tile.c), and the tile is laid out
+ * tests wrap across its edges (family_branching_tile.c), and the tile is laid out
  * repeat_cols x repeat_rows.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "branching_tile.h"
+#include "family_branching_tile.h"
 
 enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 

@@ -1,5 +1,5 @@
 /*
- * Pebbles after packing (pebble_pack.c): each pebble's children in
+ * Pebbles after packing (shared_pebble_pack.c): each pebble's children in
  * counter-clockwise order round it, for the rendering walk, and the
  * figures --stats reports (radii, coverage, pebbles touching fewer than
  * three others).

@@ -1,5 +1,5 @@
 /*
- * The region's edges in the collision grid (collide.c), queried the way
+ * The region's edges in the collision grid (shared_collide.c), queried the way
  * pebbles need: the distance to the boundary, the first radius at which a
  * circle growing along a ray meets it (closed form per edge), and the
  * crossings of a segment, decided by exact orientation tests.

@@ -9,7 +9,7 @@
  * touching pebbles stay apart once stitches are rounded to machine units)
  * with cubic arcs that stay inside the circle. With edge overgrow the path
  * is then trimmed to the region, inset by the same amount, and joined along
- * its boundary (pebble_trim.c).
+ * its boundary (shared_pebble_trim.c).
  */
 #include <math.h>
 #include <string.h>

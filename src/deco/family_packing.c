@@ -1,5 +1,5 @@
 /*
- * Shape Packing (paper §5.3.2): pebbling first (pebble_pack.c), then every
+ * Shape Packing (paper §5.3.2): pebbling first (shared_pebble_pack.c), then every
  * pebble replaced by a motif whose minimum bounding circle is the pebble
  * (the motif's unit frame scaled by the radius), turned so the motif's
  * start faces the pebble it hangs from (paper Fig. 12). The motifs stay one
