@@ -85,16 +85,20 @@ static void nap_ms(double ms)
     nanosleep(&ts, NULL);
 }
 
-/* Waits for pid until deadline (ms, now_ms clock): 1 when it exited (its
- * status in *status), 0 at the deadline. */
-static int wait_until(pid_t pid, double deadline, int *status)
+/* Waits until pid exits or the deadline (ms, now_ms clock) passes: 1 when
+ * it exited, 0 at the deadline. The exited child is not reaped, so its
+ * process group stays its own until the caller has signalled it. */
+static int wait_until(pid_t pid, double deadline)
 {
     double nap = 2;
 
     for (;;) {
-        pid_t r = waitpid(pid, status, WNOHANG);
+        siginfo_t si;
 
-        if (r == pid || (r < 0 && errno != EINTR))
+        memset(&si, 0, sizeof si);
+        if (waitid(P_PID, (id_t)pid, &si, WEXITED | WNOHANG | WNOWAIT) < 0 && errno != EINTR)
+            return 1;
+        if (si.si_pid == pid)
             return 1;
         if (now_ms() >= deadline)
             return 0;
@@ -120,23 +124,23 @@ static int run_concorde(const char *prog, const char *dir, double limit_ms, int 
 
         setpgid(0, 0); /* its own group: the timeout ends whatever it started */
         in = open("/dev/null", O_RDONLY);
-        if (chdir(dir) == 0 && in >= 0 && (log = open("log", O_WRONLY | O_CREAT | O_TRUNC, 0600)) >= 0 &&
-            dup2(in, 0) >= 0 && dup2(log, 1) >= 0 && dup2(log, 2) >= 0)
+        if (chdir(dir) == 0 && in >= 0 &&
+            (log = open("log", O_WRONLY | O_CREAT | O_TRUNC, 0600)) >= 0 && dup2(in, 0) >= 0 &&
+            dup2(log, 1) >= 0 && dup2(log, 2) >= 0)
             execl(prog, "concorde", "-s", "1", "-o", "out.sol", "in.tsp", (char *)NULL);
         _exit(127);
     }
     setpgid(pid, pid); /* also here: no race with the child's own call */
-    if (!wait_until(pid, now_ms() + limit_ms, &status)) {
+    if (!wait_until(pid, now_ms() + limit_ms)) {
         *timed_out = 1;
         kill(-pid, SIGTERM);
-        if (!wait_until(pid, now_ms() + GRACE_MS, &status)) {
-            kill(-pid, SIGKILL);
-            waitpid(pid, &status, 0);
-        }
-        kill(-pid, SIGKILL); /* anything of its group still there */
-        return -1;
+        wait_until(pid, now_ms() + GRACE_MS);
     }
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
+    if (*timed_out)
+        kill(-pid, SIGKILL); /* the group and all it started; pid is not reaped yet */
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    return !*timed_out && WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
 /* The solution file: the count, then a permutation of 0..n-1, nothing else. */
