@@ -186,7 +186,7 @@ static void sort_edges_should_survive_out_of_memory(void)
     int done = 0;
 
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_delaunay(&ctx, g.v, g.n, &mesh));
-    for (k = 1; !done && k < 50; k++) {
+    for (k = 1; !done && k < 400; k++) {
         qc_edge *e = malloc(mesh.edges.n * sizeof *e);
         int rc;
 

@@ -168,86 +168,136 @@ static int sort_by_index(qc_ctx *ctx, qc_edge *e, size_t m, uint64_t *scratch)
     return QC_OK;
 }
 
-/* Sorts e[i..r), whose keys agree in the window, by the whole key: ties
- * of the window that are not exact ties (rare). */
-static int sort_window_tie(qc_ctx *ctx, const keyed *k, const uint32_t *at, qc_edge *e,
-                           size_t i, size_t r)
+/* Sorts m keyed edges (keys k, 4 words each, e beside) by comparisons of
+ * the whole key: keys spread over more than 128 bits (rare: coordinates
+ * near 0 beside a large block). */
+static int sort_wide(qc_ctx *ctx, const uint64_t *k, qc_edge *e, size_t m)
 {
-    keyed *t = qc__alloc_array(ctx, r - i, sizeof *t);
-    size_t j;
+    keyed *t = qc__alloc_array(ctx, m, sizeof *t);
+    size_t i;
 
     if (t == NULL)
         return QC_ENOMEM;
-    for (j = i; j < r; j++)
-        t[j - i] = k[at[j]];
-    qsort(t, r - i, sizeof *t, keyed_cmp); /* keys with indices are distinct */
+    for (i = 0; i < m; i++) {
+        memcpy(t[i].k, k + 4 * i, sizeof t[i].k);
+        t[i].e = e[i];
+    }
+    qsort(t, m, sizeof *t, keyed_cmp); /* keys with indices are distinct: deterministic */
+    for (i = 0; i < m; i++)
+        e[i] = t[i].e;
+    qc__free(ctx, t, m * sizeof *t);
+    return QC_OK;
+}
+
+/* An edge with the low 64 bits of its key above the least. */
+typedef struct low_edge {
+    uint64_t low;
+    qc_edge e;
+} low_edge;
+
+static int low_edge_cmp(const void *x, const void *y)
+{
+    const low_edge *a = x, *b = y;
+
+    if (a->low != b->low)
+        return a->low < b->low ? -1 : 1;
+    return index_before(a->e, b->e) ? -1 : index_before(b->e, a->e);
+}
+
+/* Sorts e[i..r), equal in the window, by (low bits, index): with the window
+ * they make the whole key when s <= 64. Exact ties go by index alone. */
+static int sort_window_run(qc_ctx *ctx, qc_edge *e, const uint64_t *low, const uint32_t *at,
+                           size_t i, size_t r, uint64_t *scratch)
+{
+    low_edge *t;
+    size_t j;
+
+    for (j = i + 1; j < r && low[at[j]] == low[at[i]]; j++)
+        ;
+    if (j == r)
+        return sort_by_index(ctx, e + i, r - i, scratch);
+    t = qc__alloc_array(ctx, r - i, sizeof *t);
+    if (t == NULL)
+        return QC_ENOMEM;
+    for (j = i; j < r; j++) {
+        t[j - i].low = low[at[j]];
+        t[j - i].e = e[j];
+    }
+    qsort(t, r - i, sizeof *t, low_edge_cmp);
     for (j = i; j < r; j++)
         e[j] = t[j - i].e;
     qc__free(ctx, t, (r - i) * sizeof *t);
     return QC_OK;
 }
 
-/* Whether the keys of at[i..r), equal in the window of bits [s, s + 64)
- * above the least key, are equal: by their low 64 bits when those and the
- * window cover them (s <= 64), else whole. */
-static int exact_tie(const keyed *k, const uint64_t *low, const uint32_t *at, size_t i,
-                     size_t r, unsigned s)
+/* Sorts e[0..m) by its exact keys k (4 words each; k is freed here): a
+ * radix sort on the 64 bits of (key - least) from bit s up, the window (a
+ * lattice's lengths lie within a few ulps: it holds their whole spread, or
+ * most of it), then runs that tie there. The keys are narrowed to the
+ * window in place, so a group costs at most 44 bytes an edge. */
+static int sort_keyed(qc_ctx *ctx, uint64_t *k, qc_edge *e, size_t m)
 {
-    size_t j;
-
-    for (j = i + 1; j < r; j++)
-        if (s > 64 ? key_cmp(k[at[j]].k, k[at[i]].k) != 0 : low[at[j]] != low[at[i]])
-            return 0;
-    return 1;
-}
-
-/* Sorts keyed edges into e: a radix sort on the 64 bits of (key - least)
- * that lead (a lattice's lengths lie within a few ulps: the window holds
- * their whole spread, or most of it), then runs that tie there by index. */
-static int sort_keyed(qc_ctx *ctx, const keyed *k, qc_edge *e, size_t m)
-{
-    uint64_t *rel = qc__alloc_array(ctx, m, sizeof *rel), d[4];
-    uint64_t *low = qc__alloc_array(ctx, m, sizeof *low);
-    uint32_t *at = qc__alloc_array(ctx, m, sizeof *at);
+    uint64_t least[4], d[4], *low = NULL, *rel;
+    uint32_t *at = NULL;
+    qc_edge *tmp = NULL;
     size_t i, r, lo = 0, hi = 0;
     unsigned s;
     int rc = QC_OK;
 
-    if (rel == NULL || low == NULL || at == NULL) {
+    for (i = 1; i < m; i++) {
+        if (key_cmp(k + 4 * i, k + 4 * lo) < 0)
+            lo = i;
+        if (key_cmp(k + 4 * i, k + 4 * hi) > 0)
+            hi = i;
+    }
+    memcpy(least, k + 4 * lo, sizeof least);
+    key_sub(k + 4 * hi, least, d);
+    s = key_bitlen(d) > 64 ? key_bitlen(d) - 64 : 0;
+    if (s > 64) {
+        rc = sort_wide(ctx, k, e, m);
+        qc__free(ctx, k, 4 * m * sizeof *k);
+        return rc;
+    }
+    at = qc__alloc_array(ctx, m, sizeof *at);
+    low = s > 0 ? qc__alloc_array(ctx, m, sizeof *low) : NULL;
+    if (at == NULL || (s > 0 && low == NULL)) {
+        qc__free(ctx, k, 4 * m * sizeof *k);
         rc = QC_ENOMEM;
         goto out;
     }
-    for (i = 1; i < m; i++) {
-        if (key_cmp(k[i].k, k[lo].k) < 0)
-            lo = i;
-        if (key_cmp(k[i].k, k[hi].k) > 0)
-            hi = i;
-    }
-    key_sub(k[hi].k, k[lo].k, d);
-    s = key_bitlen(d) > 64 ? key_bitlen(d) - 64 : 0;
-    for (i = 0; i < m; i++) {
-        key_sub(k[i].k, k[lo].k, d);
-        rel[i] = key_window(d, s);
-        low[i] = d[3];
+    for (i = 0; i < m; i++) { /* k[i] is written once k[4i..4i+4) is read */
+        key_sub(k + 4 * i, least, d);
+        if (low != NULL)
+            low[i] = d[3];
+        k[i] = key_window(d, s);
         at[i] = (uint32_t)i;
     }
-    if ((rc = qc__radix_sort(ctx, rel, at, m, 0)) < 0)
+    rel = qc__realloc(ctx, k, 4 * m * sizeof *k, m * sizeof *k);
+    if (rel == NULL) {
+        qc__free(ctx, k, 4 * m * sizeof *k);
+        rc = QC_ENOMEM;
         goto out;
-    for (i = 0; i < m; i++) /* e in key order; low[] then holds e's old order */
-        e[i] = k[at[i]].e;
+    }
+    if ((rc = qc__radix_sort(ctx, rel, at, m, 0)) == QC_OK &&
+        (tmp = qc__alloc_array(ctx, m, sizeof *tmp)) == NULL)
+        rc = QC_ENOMEM;
+    if (rc == QC_OK) { /* e in window order; low[] stays in e's old order */
+        for (i = 0; i < m; i++)
+            tmp[i] = e[at[i]];
+        memcpy(e, tmp, m * sizeof *e);
+        qc__free(ctx, tmp, m * sizeof *tmp);
+    }
     for (i = 0; i < m && rc == QC_OK; i = r) {
         for (r = i + 1; r < m && rel[r] == rel[i]; r++)
             ;
         if (r - i == 1)
             continue;
-        if (s == 0 || exact_tie(k, low, at, i, r, s))
-            rc = sort_by_index(ctx, e + i, r - i, rel + i); /* rel[i..r): scratch */
-        else
-            rc = sort_window_tie(ctx, k, at, e, i, r);
+        rc = s == 0 ? sort_by_index(ctx, e + i, r - i, rel + i) /* rel[i..r): scratch */
+                    : sort_window_run(ctx, e, low, at, i, r, rel + i);
     }
-out:
     qc__free(ctx, rel, m * sizeof *rel);
-    qc__free(ctx, low, m * sizeof *low);
+out:
+    qc__free(ctx, low, low != NULL ? m * sizeof *low : 0);
     qc__free(ctx, at, m * sizeof *at);
     return rc;
 }
@@ -261,15 +311,13 @@ typedef struct scales {
     int all, known;
 } scales;
 
-static int keys_at(const qc_vec2 *p, const qc_edge *e, size_t m, int scale, keyed *k)
+static int keys_at(const qc_vec2 *p, const qc_edge *e, size_t m, int scale, uint64_t *k)
 {
     size_t i;
 
-    for (i = 0; i < m; i++) {
-        if (!qc__len2_key(p[e[i].a], p[e[i].b], scale, k[i].k))
+    for (i = 0; i < m; i++)
+        if (!qc__len2_key(p[e[i].a], p[e[i].b], scale, k + 4 * i))
             return 0;
-        k[i].e = e[i];
-    }
     return 1;
 }
 
@@ -277,10 +325,11 @@ static int keys_at(const qc_vec2 *p, const qc_edge *e, size_t m, int scale, keye
  * tell apart: a few by exact comparisons, more by exact keys (at the
  * points' scale, else at the group's own); keys too wide for 256 bits
  * (coordinates some 2^70 apart in magnitude) by comparisons. */
-static int sort_group(qc_ctx *ctx, scales *sc, qc_edge *e, size_t m, keyed **buf, size_t *cap)
+static int sort_group(qc_ctx *ctx, scales *sc, qc_edge *e, size_t m)
 {
     const qc_vec2 *p = sc->p;
-    int scale = INT_MAX;
+    int scale = INT_MAX, ok;
+    uint64_t *k;
     size_t i;
 
     if (m <= SMALL) {
@@ -293,13 +342,18 @@ static int sort_group(qc_ctx *ctx, scales *sc, qc_edge *e, size_t m, keyed **buf
             qc__len2_key_scale(p[i], p[i], &sc->all);
         sc->known = 1;
     }
-    QC__TRY(QC__RESERVE(ctx, *buf, *cap, m));
-    if (keys_at(p, e, m, sc->all, *buf))
-        return sort_keyed(ctx, *buf, e, m);
-    for (i = 0; i < m; i++)
-        qc__len2_key_scale(p[e[i].a], p[e[i].b], &scale);
-    if (scale > sc->all && keys_at(p, e, m, scale, *buf))
-        return sort_keyed(ctx, *buf, e, m);
+    k = qc__alloc_array(ctx, m, 4 * sizeof *k);
+    if (k == NULL)
+        return QC_ENOMEM;
+    ok = keys_at(p, e, m, sc->all, k);
+    if (!ok) {
+        for (i = 0; i < m; i++)
+            qc__len2_key_scale(p[e[i].a], p[e[i].b], &scale);
+        ok = scale > sc->all && keys_at(p, e, m, scale, k);
+    }
+    if (ok)
+        return sort_keyed(ctx, k, e, m);
+    qc__free(ctx, k, 4 * m * sizeof *k);
     sort_compared(p, e, m);
     return QC_OK;
 }
@@ -316,8 +370,7 @@ int qc__sort_edges(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edge *e, size_t m
 {
     scales sc;
     uint64_t *key = qc__alloc_array(ctx, m, sizeof *key);
-    keyed *buf = NULL;
-    size_t i, r, g, cap = 0;
+    size_t i, r, g;
     double gmax = 0;
     int rc = QC_OK;
 
@@ -356,14 +409,13 @@ int qc__sort_edges(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edge *e, size_t m
         }
         if (i > g && apart(gmax, rmin)) {
             if (i - g > 1)
-                rc = sort_group(ctx, &sc, e + g, i - g, &buf, &cap);
+                rc = sort_group(ctx, &sc, e + g, i - g);
             g = i;
         }
         gmax = rmax;
     }
     if (rc == QC_OK && m - g > 1)
-        rc = sort_group(ctx, &sc, e + g, m - g, &buf, &cap);
-    qc__free(ctx, buf, cap * sizeof *buf);
+        rc = sort_group(ctx, &sc, e + g, m - g);
     if (rc < 0)
         return qc__fail(ctx, rc, "mst: out of memory sorting %lu edges", (unsigned long)m);
     return QC_OK;
