@@ -176,6 +176,32 @@ static void sort_edges_should_break_crafted_ties_exactly(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* Integer lengths (coordinates in [2^52, 2^53): the keys are the squared
+ * lengths themselves) from (2^51 + i)^2, one chained group spread past
+ * 2^64, with lengths one unit longer beside some: ties of the radix window
+ * that only the low bits order. */
+static void sort_edges_should_order_window_ties_by_low_bits(void)
+{
+    enum { N = 8192 };
+    qc_vec2 *p = malloc((2 * N + 1) * sizeof *p);
+    qc_edge *e = malloc(2 * N * sizeof *e);
+    size_t n = 1, m = 0, i, ties;
+
+    p[0] = v2(0x1p52, 0x1p52);
+    for (i = 0; i < N; i++) {
+        if (i % 7 == 0) { /* the longer one first: index order is not length order */
+            p[n] = v2(0x1p52 + 0x1p51 + (double)i, 0x1p52 + 1);
+            e[m].a = 0, e[m++].b = (uint32_t)n++;
+        }
+        p[n] = v2(0x1p52 + 0x1p51 + (double)i, 0x1p52);
+        e[m].a = 0, e[m++].b = (uint32_t)n++;
+    }
+    sort_check(p, n, e, m, &ties);
+    free(p);
+    free(e);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 /* Allocation failures anywhere in the keyed sort are reported, not
  * hidden, and leak nothing. */
 static void sort_edges_should_survive_out_of_memory(void)
@@ -211,6 +237,7 @@ int main(void)
     RUN_TEST(sort_edges_should_order_lattices_exactly);
     RUN_TEST(sort_edges_should_order_tiny_coordinates_exactly);
     RUN_TEST(sort_edges_should_break_crafted_ties_exactly);
+    RUN_TEST(sort_edges_should_order_window_ties_by_low_bits);
     RUN_TEST(sort_edges_should_survive_out_of_memory);
     return UNITY_END();
 }
