@@ -24,6 +24,16 @@
 #define LIMIT_MS 600000.0 /* without --tsp-time: ten minutes */
 #define GRACE_MS 1000.0   /* after SIGTERM, before SIGKILL */
 
+/* A signal that asked quiltc to stop while concorde ran: concorde, in a
+ * group of its own, does not get the terminal's Ctrl-C, so we stop it,
+ * remove its folder, then die of the signal. */
+static volatile sig_atomic_t stop_signal;
+
+static void on_stop(int sig)
+{
+    stop_signal = sig;
+}
+
 /* The program's path found along PATH into buf, made absolute (concorde
  * runs in another folder): 1, or 0 when none is there. */
 static int on_path(const char *prog, char *buf, size_t size)
@@ -100,7 +110,7 @@ static int wait_until(pid_t pid, double deadline)
             return 1;
         if (si.si_pid == pid)
             return 1;
-        if (now_ms() >= deadline)
+        if (now_ms() >= deadline || stop_signal != 0)
             return 0;
         nap_ms(nap);
         nap = nap < 50 ? nap * 2 : 50;
@@ -141,6 +151,26 @@ static int run_concorde(const char *prog, const char *dir, double limit_ms, int 
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         ;
     return !*timed_out && WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
+}
+
+/* run_concorde with SIGINT, SIGTERM and SIGHUP caught meanwhile. */
+static int run_guarded(const char *prog, const char *dir, double limit_ms, int *timed_out)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction sa, old[3];
+    int i, rc;
+
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    stop_signal = 0;
+    for (i = 0; i < 3; i++)
+        if (sigaction(sigs[i], &sa, &old[i]) == 0 && old[i].sa_handler == SIG_IGN)
+            sigaction(sigs[i], &old[i], NULL); /* ignored stays ignored */
+    rc = run_concorde(prog, dir, limit_ms, timed_out);
+    for (i = 0; i < 3; i++)
+        sigaction(sigs[i], &old[i], NULL);
+    return rc;
 }
 
 /* The solution file: the count, then a permutation of 0..n-1, nothing else. */
@@ -220,12 +250,12 @@ static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, doubl
     if (write_tsplib(tsp, pts) != 0) {
         cli_error("--tsp concorde: cannot write %s: %s", tsp, strerror(errno));
     } else if (!on_path("concorde", prog, sizeof prog) ||
-               run_concorde(prog, dir, limit_ms, &timed_out) != 0) {
-        if (timed_out)
+               run_guarded(prog, dir, limit_ms, &timed_out) != 0) {
+        if (stop_signal == 0 && timed_out) /* (stopped by a signal: dying of it below) */
             cli_error("--tsp concorde: no tour from concorde within %g s on %lu points "
                       "(stopped; --tsp-time sets its limit)",
                       limit_ms / 1e3, (unsigned long)n);
-        else
+        else if (stop_signal == 0)
             cli_error("--tsp concorde: concorde failed on %lu points", (unsigned long)n);
     } else if (read_tour(ctx, sol, n, &raw) != 0) {
         cli_error("--tsp concorde: concorde's tour is not a permutation of the %lu points",
@@ -241,6 +271,8 @@ static int concorde_tour(qc_ctx *ctx, const qc_points *pts, uint32_t root, doubl
     }
     qc_order_free(ctx, &raw);
     remove_dir(dir);
+    if (stop_signal != 0) /* nothing was written: outputs come after */
+        raise(stop_signal);
     return rc;
 }
 

@@ -84,6 +84,19 @@ timeout_kills() {
 export WORK
 check timeout_stops_concorde_and_its_children timeout_kills
 
+# quiltc stopped by SIGTERM while concorde runs: concorde (a group of its
+# own, out of reach of the terminal's signals) is stopped too, its folder
+# removed, and quiltc dies of the signal.
+stopped_by_signal() {
+    fake f 'echo $$ > "$WORK_OUT/spid"; sleep 60 & echo $! > "$WORK_OUT/schild"; wait'
+    mkdir -p tmp && rm -f spid &&
+        { WORK_OUT=$WORK TMPDIR=$WORK/tmp PATH=$WORK/f:$PATH "$QC" $SKEL -o sg.json & } &&
+        qpid=$! && i=0 && while [ ! -s spid ] && [ $i -lt 100 ]; do sleep 0.1; i=$((i + 1)); done &&
+        kill -TERM $qpid && { wait $qpid; st=$?; [ $st -eq 143 ] || { echo "status $st"; false; }; } &&
+        gone "$(cat spid)" && gone "$(cat schild)" && [ ! -e sg.json ] && no_leak
+}
+check stopped_quiltc_stops_concorde stopped_by_signal
+
 family_without_tour() {
     fake f 'exit 1'
     PATH=$WORK/f:$PATH expect_fail 2 "the branching family walks a tree, not a tour" \
