@@ -1,7 +1,8 @@
 # quiltc: the core library (src/), the CLI (cli/), tests, benchmarks, wasm.
 # GNU make. Overridable: CC, CFLAGS, LDFLAGS, PREFIX, DESTDIR, EMCC, USB,
-# UNITY_DIR (a real Unity's src/), SAN=1 (ASan+UBSan build in build-san/),
-# WERROR=1.
+# UNITY_DIR (a real Unity's src/; tests build in build-unity/), SAN=1
+# (ASan+UBSan build in build-san/), WERROR=1. Objects carry -MMD -MP
+# dependency files: touching a header rebuilds only what includes it.
 
 CC      ?= cc
 AR      ?= ar
@@ -15,9 +16,30 @@ ifeq ($(SAN),1)
 BUILD   ?= build-san
 SANFLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 else
+ifdef UNITY_DIR
+BUILD   ?= build-unity
+else
 BUILD   ?= build
+endif
 SANFLAGS =
 endif
+
+# The version, once, from the header: the soname follows it (semver: the
+# major number, or 0.MINOR before 1.0, as qc_ctx_init's handshake does).
+QC_VERSION_GET = $(shell sed -n 's/^\#define QC_VERSION_$(1) *\([0-9][0-9]*\).*/\1/p' include/quiltc/core.h)
+QC_MAJOR := $(call QC_VERSION_GET,MAJOR)
+QC_MINOR := $(call QC_VERSION_GET,MINOR)
+QC_PATCH := $(call QC_VERSION_GET,PATCH)
+ifeq ($(QC_MAJOR)$(QC_MINOR)$(QC_PATCH),)
+$(error cannot read QC_VERSION_* from include/quiltc/core.h)
+endif
+ifeq ($(QC_MAJOR),0)
+SO_ABI := 0.$(QC_MINOR)
+else
+SO_ABI := $(QC_MAJOR)
+endif
+SONAME := libquiltc.so.$(SO_ABI)
+SO_FILE := libquiltc.so.$(QC_MAJOR).$(QC_MINOR).$(QC_PATCH)
 
 WARN = -std=c99 -pedantic -Wall -Wextra -Wvla -Wshadow -Wstrict-prototypes \
        -Wmissing-prototypes -Wwrite-strings -Wdouble-promotion
@@ -27,12 +49,12 @@ endif
 
 # -ffp-contract=off: no fused multiply-add, so native and WASM agree bit for bit.
 BASE_CFLAGS = $(WARN) $(CFLAGS) $(SANFLAGS) -ffp-contract=off -Iinclude
+DEPFLAGS    = -MMD -MP
 LIB_CFLAGS  = $(BASE_CFLAGS) -fPIC -Isrc/core
 LIBM        = -lm
 
 LIB_SRC := $(sort $(wildcard src/*/*.c))
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
-HEADERS := include/quiltc.h $(sort $(wildcard include/quiltc/*.h))
 
 # The CLI: libusb and cJSON live only here.
 CLI_SRC := $(sort $(wildcard cli/*.c))
@@ -53,6 +75,7 @@ CLI_CFLAGS = $(BASE_CFLAGS) -D_POSIX_C_SOURCE=200809L $(USB_CFLAGS) $(JSON_CFLAG
 CLI_LIBS   = $(USB_LIBS) $(JSON_LIBS) $(LIBM)
 
 # Tests: a real Unity when UNITY_DIR names its src/, else our compatible harness.
+# unity.c and tests/support/ are compiled once into objects every test links.
 ifdef UNITY_DIR
 UNITY_SRC    = $(UNITY_DIR)/unity.c
 UNITY_CFLAGS = -I$(UNITY_DIR) -DUNITY_INCLUDE_DOUBLE -DUNITY_SUPPORT_64
@@ -60,11 +83,15 @@ else
 UNITY_SRC    = tests/unity/unity.c
 UNITY_CFLAGS = -Itests/unity
 endif
+UNITY_OBJ    := $(BUILD)/obj/unity/unity.o
 TEST_SRC     := $(sort $(wildcard tests/test_*.c))
 TEST_BIN     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TEST_SUPPORT := $(sort $(wildcard tests/support/*.c))
+TEST_SUPPORT_OBJ := $(TEST_SUPPORT:%.c=$(BUILD)/obj/%.o)
 TEST_CFLAGS   = $(BASE_CFLAGS) -Wno-missing-prototypes -D_POSIX_C_SOURCE=200809L \
                 $(UNITY_CFLAGS) -Itests/support -Isrc/core
+# A double handed to an integer assert is cut to an integer (Unity casts): warn.
+TEST_SRC_CFLAGS = $(TEST_CFLAGS) -Wfloat-conversion
 
 BENCH_SRC := $(sort $(wildcard bench/*.c))
 
@@ -73,13 +100,31 @@ all: $(BUILD)/libquiltc.a $(BUILD)/libquiltc.so $(BUILD)/quiltc
 
 lib: $(BUILD)/libquiltc.a
 
-$(BUILD)/obj/src/%.o: src/%.c $(HEADERS) $(wildcard src/*/*.h)
-	@mkdir -p $(dir $@)
-	$(CC) $(LIB_CFLAGS) -c $< -o $@
+# Each object also depends on its .d file, so an object without one (an old
+# build directory) is rebuilt once to get it; the .d files list the headers.
+# They are named as targets (no recipe), so make neither fails on a missing
+# one nor treats it as an intermediate file.
+DEP_FILES = $(patsubst %.o,%.d,$(LIB_OBJ) $(CLI_OBJ) $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) \
+                               $(TEST_SRC:%.c=$(BUILD)/obj/%.o))
 
-$(BUILD)/obj/cli/%.o: cli/%.c $(HEADERS) $(wildcard cli/*.h)
+$(BUILD)/obj/src/%.o: src/%.c $(BUILD)/obj/src/%.d
 	@mkdir -p $(dir $@)
-	$(CC) $(CLI_CFLAGS) -c $< -o $@
+	$(CC) $(LIB_CFLAGS) $(DEPFLAGS) -c $< -o $@
+
+$(BUILD)/obj/cli/%.o: cli/%.c $(BUILD)/obj/cli/%.d
+	@mkdir -p $(dir $@)
+	$(CC) $(CLI_CFLAGS) $(DEPFLAGS) -c $< -o $@
+
+$(BUILD)/obj/tests/%.o: tests/%.c $(BUILD)/obj/tests/%.d
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_SRC_CFLAGS) -Itests/fuzz $(JSON_CFLAGS) $(DEPFLAGS) -c $< -o $@
+
+# test objects are kept (not deleted as intermediate files) for the next run
+.SECONDARY: $(TEST_SRC:%.c=$(BUILD)/obj/%.o)
+
+$(UNITY_OBJ): $(UNITY_SRC) $(UNITY_OBJ:.o=.d)
+	@mkdir -p $(dir $@)
+	$(CC) $(TEST_CFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(BUILD)/libquiltc.a: $(LIB_OBJ)
 	@mkdir -p $(dir $@)
@@ -87,14 +132,14 @@ $(BUILD)/libquiltc.a: $(LIB_OBJ)
 	$(AR) rcs $@ $(LIB_OBJ)
 
 $(BUILD)/libquiltc.so: $(LIB_OBJ)
-	$(CC) -shared $(SANFLAGS) -Wl,-soname,libquiltc.so.0 -o $@ $(LIB_OBJ) $(LIBM)
+	$(CC) -shared $(SANFLAGS) $(LDFLAGS) -Wl,-soname,$(SONAME) -o $@ $(LIB_OBJ) $(LIBM)
 
 $(BUILD)/quiltc: $(CLI_OBJ) $(BUILD)/libquiltc.a
 	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $(CLI_OBJ) $(BUILD)/libquiltc.a $(CLI_LIBS)
 
-$(BUILD)/tests/%: tests/%.c $(UNITY_SRC) $(TEST_SUPPORT) $(BUILD)/libquiltc.a $(wildcard tests/support/*.h)
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
-	$(CC) $(TEST_CFLAGS) -o $@ $< $(UNITY_SRC) $(TEST_SUPPORT) $(BUILD)/libquiltc.a $(LIBM)
+	$(CC) $(SANFLAGS) $(LDFLAGS) -o $@ $< $(UNITY_OBJ) $(TEST_SUPPORT_OBJ) $(BUILD)/libquiltc.a $(LIBM)
 
 # Every test binary and tests/check_*.sh script runs; the last line is "N passed, M failed".
 test check: all $(TEST_BIN)
@@ -106,7 +151,7 @@ lint: $(BUILD)/libquiltc.a
 
 bench: $(BUILD)/libquiltc.a
 	@mkdir -p $(BUILD)/bench
-	$(CC) $(BASE_CFLAGS) -O2 -D_POSIX_C_SOURCE=200809L -Isrc/core -o $(BUILD)/bench/quiltc-bench $(BENCH_SRC) $(BUILD)/libquiltc.a $(LIBM)
+	$(CC) $(BASE_CFLAGS) -O2 -D_POSIX_C_SOURCE=200809L -Isrc/core $(LDFLAGS) -o $(BUILD)/bench/quiltc-bench $(BENCH_SRC) $(BUILD)/libquiltc.a $(LIBM)
 	$(BUILD)/bench/quiltc-bench $(BENCH_ONLY)
 
 quiltc.pc: quiltc.pc.in Makefile
@@ -116,8 +161,9 @@ install: all quiltc.pc
 	install -d $(DESTDIR)$(PREFIX)/lib/pkgconfig $(DESTDIR)$(PREFIX)/include/quiltc \
 	           $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 644 $(BUILD)/libquiltc.a $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(BUILD)/libquiltc.so $(DESTDIR)$(PREFIX)/lib/libquiltc.so.0
-	ln -sf libquiltc.so.0 $(DESTDIR)$(PREFIX)/lib/libquiltc.so
+	install -m 755 $(BUILD)/libquiltc.so $(DESTDIR)$(PREFIX)/lib/$(SO_FILE)
+	ln -sf $(SO_FILE) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libquiltc.so
 	install -m 644 include/quiltc.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 $(wildcard include/quiltc/*.h) $(DESTDIR)$(PREFIX)/include/quiltc/
 	install -m 755 $(BUILD)/quiltc $(DESTDIR)$(PREFIX)/bin/
@@ -130,7 +176,16 @@ uninstall:
 	      $(DESTDIR)$(PREFIX)/share/man/man1/quiltc.1
 	rm -rf $(DESTDIR)$(PREFIX)/include/quiltc $(DESTDIR)$(PREFIX)/include/quiltc.h
 
+# Every build directory: build, build-san, build-unity, build-clang,
+# build-arm, build-arm-lib, build-fuzz, and any other BUILD=build-*.
 clean:
-	rm -rf build build-san build-fuzz build-arm quiltc.pc
+	rm -rf build build-* $(BUILD) quiltc.pc
+
+# make soname: the soname the library is linked with (tests/check_install.sh).
+.PHONY: soname
+soname:
+	@echo $(SONAME)
 
 -include $(wildcard mk/*.mk)
+$(DEP_FILES):
+-include $(wildcard $(DEP_FILES))

@@ -15,7 +15,12 @@ enum { CLI_OK = 0, CLI_RUNTIME = 1, CLI_USAGE = 2 };
 #define CLI_PRINTF(f, a)
 #endif
 
-/* Prints "quiltc: <message>" as one line on stderr. */
+/* Writes text with control characters (C0, DEL, UTF-8 C1) and invalid
+ * UTF-8 escaped (\n, \x1B, \u009B): text from files never drives the
+ * terminal. */
+void cli_put_escaped(FILE *f, const char *text);
+/* Prints "quiltc: <message>" as one line on stderr, control characters
+ * escaped. */
 void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
 /* Prints the context's error ("quiltc: what: detail") and returns CLI_RUNTIME,
  * or CLI_USAGE for parameter range/choice errors. */

@@ -30,13 +30,15 @@ static void finding(tally *t, const char *fmt, double a, double b)
 
 static void print_dialect(void *ud, size_t line, const char *kind, const char *text)
 {
-    printf("line %lu: %s: %s\n", (unsigned long)line, kind, text);
+    printf("line %lu: %s: ", (unsigned long)line, kind);
+    cli_put_escaped(stdout, text); /* it may quote the file */
+    putchar('\n');
     ((tally *)ud)->findings++;
 }
 
 static void usage(FILE *f)
 {
-    fputs("usage: quiltc check FILE.pat [options]\n"
+    fputs("usage: quiltc check FILE [options]   (FILE: .pat, .qli, .dxf, .plt, .qcc, .iqp, .bqm, .gcode, .svg)\n"
           "Reports every dialect fault and geometric problem; exit 0 when sewable.\n"
           "  --max-jumps N       needle-up moves allowed after the start (default 0)\n"
           "  --min-segment LEN   shorter stitches are faults (default 0.1mm)\n"
@@ -106,7 +108,7 @@ static int parse(int argc, char **argv, check_opts *o)
         parse_len("max-segment", max_s, cli_units_mm(o->units), &o->max_seg) != CLI_OK)
         return CLI_USAGE;
     if (optind != argc - 1) {
-        cli_error("check: expected one FILE.pat (see 'quiltc check --help')");
+        cli_error("check: expected one FILE (see 'quiltc check --help')");
         return CLI_USAGE;
     }
     o->file = argv[optind];
@@ -188,6 +190,29 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
     return CLI_OK;
 }
 
+/* A .pat gets the dialect linter (every fault, then the points it could
+ * read); any other format quiltc writes is read strictly (its first fault
+ * is the one finding); an unknown extension is refused. */
+static int read_pattern(qc_ctx *ctx, const check_opts *o, const char *buf, size_t len,
+                        tally *t, qc_plan *plan, size_t *dialect)
+{
+    int fmt = qc_format_from_name(o->file);
+
+    if (fmt == QC_FORMAT_PAT)
+        return qc_io_check_pat(ctx, buf, len, print_dialect, t, plan, dialect) < 0
+                   ? cli_fail(ctx, o->file, ctx->status)
+                   : CLI_OK;
+    if (qc_io_read(ctx, fmt, buf, len, plan) < 0) {
+        if (ctx->status == QC_EFORMAT || ctx->status == QC_ERANGE || ctx->status == QC_EEMPTY) {
+            printf("%s\n", qc_errmsg(ctx));
+            t->findings++;
+            return CLI_OK;
+        }
+        return cli_fail(ctx, o->file, ctx->status);
+    }
+    return CLI_OK;
+}
+
 int cmd_check(int argc, char **argv)
 {
     check_opts o;
@@ -204,10 +229,14 @@ int cmd_check(int argc, char **argv)
         return rc < 0 ? CLI_OK : rc;
     if (cli_read_file(o.file, (size_t)256 << 20, &buf, &len) != 0)
         return CLI_RUNTIME;
+    if (qc_format_from_name(o.file) < 0) {
+        free(buf);
+        cli_error("check: '%s': cannot read this format (pat, qli, dxf, plt, qcc, iqp, bqm, "
+                  "gcode, svg)", o.file);
+        return CLI_USAGE;
+    }
     qc_ctx_init(&ctx, NULL, NULL);
-    rc = qc_io_check_pat(&ctx, buf, len, print_dialect, &t, &plan, &dialect) < 0
-             ? cli_fail(&ctx, o.file, ctx.status)
-             : CLI_OK;
+    rc = read_pattern(&ctx, &o, buf, len, &t, &plan, &dialect);
     free(buf);
     if (rc == CLI_OK && plan.n > 0) {
         measure(&o, &plan, &t);
@@ -222,7 +251,8 @@ int cmd_check(int argc, char **argv)
         return rc;
     if (dialect > t.findings)
         t.findings = dialect;
-    printf("%s: %lu finding%s: %s\n", o.file, (unsigned long)t.findings,
+    cli_put_escaped(stdout, o.file);
+    printf(": %lu finding%s: %s\n", (unsigned long)t.findings,
            t.findings == 1 ? "" : "s", t.findings ? "not sewable" : "sewable");
     return t.findings == 0 ? CLI_OK : CLI_RUNTIME;
 }

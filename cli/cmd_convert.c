@@ -1,4 +1,4 @@
-/* quiltc convert IN OUT: a pattern file (.pat, .svg) into any format quiltc writes. */
+/* quiltc convert IN OUT: a pattern in any format quiltc writes into any other. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -6,30 +6,21 @@
 
 #define MAX_INPUT ((size_t)256 << 20)
 
-/* Reads IN into a plan: PAT directly, SVG through the stitch planner. */
+/* Reads IN into a plan, in whichever machine format its extension names. */
 int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan)
 {
     char *buf;
     size_t len;
     int fmt = qc_format_from_name(path), rc;
 
-    if (fmt != QC_FORMAT_PAT && fmt != QC_FORMAT_SVG) {
-        cli_error("'%s': can only read .pat and .svg patterns", path);
+    if (fmt < 0) {
+        cli_error("'%s': unknown pattern format (pat, qli, dxf, plt, qcc, iqp, bqm, gcode, svg)",
+                  path);
         return CLI_USAGE;
     }
     if (cli_read_file(path, MAX_INPUT, &buf, &len) != 0)
         return CLI_RUNTIME;
-    if (fmt == QC_FORMAT_PAT) {
-        rc = qc_io_read_pat(ctx, buf, len, plan);
-    } else {
-        qc_svg_opts opts;
-        qc_path path_in = {0};
-        memset(&opts, 0, sizeof opts);
-        rc = qc_io_read_svg_path(ctx, buf, len, &opts, &path_in);
-        if (rc == QC_OK)
-            rc = qc_stitch_plan(ctx, &path_in, NULL, NULL, plan);
-        qc_path_free(ctx, &path_in);
-    }
+    rc = qc_io_read(ctx, fmt, buf, len, plan);
     free(buf);
     if (rc < 0) {
         cli_error("%s: %s", path, qc_errmsg(ctx));
@@ -46,9 +37,9 @@ int cmd_convert(int argc, char **argv)
     int fmt, rc;
 
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
-        puts("usage: quiltc convert IN.pat|IN.svg OUT.ext\n"
-             "Writes the pattern of IN in OUT's format (pat, qli, dxf, plt, qcc, iqp, bqm, "
-             "gcode, svg).\n"
+        puts("usage: quiltc convert IN.ext OUT.ext\n"
+             "Writes the pattern of IN in OUT's format; both are any of pat, qli, dxf,\n"
+             "plt (hpgl), qcc, iqp, bqm, gcode (nc), svg. Travel stays travel (QCC has none).\n"
              "From an SVG every shape is sewn except dashed lines (jumps) and the\n"
              "element with id=\"region\" (the outline quiltc draws in its previews).");
         return CLI_OK;

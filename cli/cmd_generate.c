@@ -35,6 +35,14 @@ static void usage(FILE *f, const char *family)
           "  --tsp concorde           tour skeletons: the tour of a concorde program on PATH\n"
           "  -q, --quiet              no progress output\n",
           f);
+    if (fam <= 0) {
+        const qc_family_desc *d;
+        size_t i;
+
+        fputs("Families (--family NAME; --family NAME --help lists its parameters):\n", f);
+        for (i = 0; (d = qc_family_info(i)) != NULL; i++)
+            fprintf(f, "  %-24s %s\n", d->name, d->summary);
+    }
     cli_pattern_help(f, fam > 0 ? 1u << fam : 0xFFFFFFFFu);
     fputs("Lengths are in --units unless suffixed (12mm, 0.5in). Example:\n"
           "  quiltc generate --region heart:10 --family branching --spacing 0.6 -o heart.pat\n",

@@ -23,10 +23,8 @@ static int make_block(qc_ctx *ctx, block *b)
     qc_result res = {0};
     double mm, c, s;
     size_t i;
-    int rc = cli_pattern_finish(ctx, &b->pat);
+    int rc = cli_pattern_load(ctx, &b->pat, &region, &given); /* params: cli_job_budget */
 
-    if (rc == CLI_OK)
-        rc = cli_pattern_load(ctx, &b->pat, &region, &given);
     if (rc == CLI_OK && b->pat.motifs != NULL)
         rc = cli_load_motifs(ctx, b->pat.motifs, &motifs);
     if (rc == CLI_OK && qc_generate(ctx, &region, &b->pat.params, &given,
@@ -115,6 +113,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
     size_t i;
     int rc = order == NULL ? CLI_RUNTIME : CLI_OK;
 
+    if (rc == CLI_OK)
+        rc = cli_job_budget(ctx, j);
     for (i = 0; i < j->n && rc == CLI_OK; i++) {
         order[i] = &j->blocks[i];
         rc = make_block(ctx, &j->blocks[i]);
@@ -165,13 +165,17 @@ int cmd_job(int argc, char **argv)
     cli_job_names names = {NULL, 0, 0};
     job j;
     qc_ctx ctx;
-    int rc = CLI_OK, a;
+    int rc = CLI_OK, a, allow_outside = 0;
 
     for (a = 1; a < argc && rc == CLI_OK; a++) {
         if (strcmp(argv[a], "--help") == 0) {
-            puts("usage: quiltc job QUILT.json [-o FILE]...\n"
-                 "Generates every block of a quilt and joins them into one file (see README).");
+            puts("usage: quiltc job QUILT.json [-o FILE]... [--allow-outside]\n"
+                 "Generates every block of a quilt and joins them into one file (see README).\n"
+                 "The job's files (regions, motifs, points, outputs) must stay inside its\n"
+                 "folder; --allow-outside lets them be anywhere. -o is never limited.");
             return CLI_OK;
+        } else if (strcmp(argv[a], "--allow-outside") == 0) {
+            allow_outside = 1;
         } else if (strcmp(argv[a], "-o") == 0 && a + 1 < argc) {
             if (nout == MAX_JOB_OUTPUTS) {
                 cli_error("job: at most %d outputs", MAX_JOB_OUTPUTS);
@@ -194,16 +198,12 @@ int cmd_job(int argc, char **argv)
     if (cli_read_file(file, MAX_JOB_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
     memset(&j, 0, sizeof j);
-    root = cJSON_ParseWithLength(buf, len);
-    if (root == NULL) {
-        const char *at = cJSON_GetErrorPtr();
-        cli_error("job: %s: malformed JSON at byte %ld", file,
-                  at != NULL ? (long)(at - buf) : -1L);
-        rc = CLI_USAGE;
-    } else
-        rc = cli_job_parse(&j, root);
+    root = cli_json_parse(buf, len, file);
+    rc = root == NULL ? CLI_USAGE : cli_job_parse(&j, root);
+    if (rc == CLI_OK && nout > 0)
+        j.nout = 0; /* -o replaces the job's outputs: they are not checked */
     if (rc == CLI_OK)
-        rc = cli_job_resolve_names(&j, file, &names);
+        rc = cli_job_resolve_names(&j, file, allow_outside, &names);
     if (rc == CLI_OK && nout == 0) {
         for (i = 0; i < j.nout; i++)
             outputs[nout++] = j.outputs[i];

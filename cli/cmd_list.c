@@ -32,8 +32,10 @@ int cmd_list(int argc, char **argv)
         return CLI_USAGE;
     }
     if (strcmp(what, "families") == 0) {
-        for (i = 1; i < QC_FAMILY_COUNT; i++)
-            printf("%s\n", qc_family_name((int)i));
+        const qc_family_desc *f;
+
+        for (i = 0; (f = qc_family_info(i)) != NULL; i++)
+            printf("%s\n", f->name);
     } else if (strcmp(what, "params") == 0) {
         list_params();
     } else if (strcmp(what, "motifs") == 0) {

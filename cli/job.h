@@ -15,6 +15,7 @@
 #define MAX_JOB_BYTES ((size_t)1 << 20)
 #define VALUE_LEN 48
 #define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
+#define JOB_MAX_TSP_MS 600000.0 /* the blocks' tsp-time together: one block's maximum */
 
 typedef struct block {
     cli_pattern_opts pat;
@@ -35,12 +36,22 @@ typedef struct job {
     size_t n;
 } job;
 
+/* Parses a job file's text strictly: no key twice in one object, nothing
+ * after the value, nesting within cJSON's limit. NULL after one line. */
+cJSON *cli_json_parse(const char *buf, size_t len, const char *file);
+
 /* Reads the parsed document root into *j (zeroed by the caller): every key
  * known, every value of the right type and range, each block's parameters
  * as cli_pattern_opts (converted later by cli_pattern_finish). CLI_OK, or
  * CLI_USAGE after one line naming the key ("job: blocks[2].at: ...").
  * Strings point into root; free j->blocks with free(). */
 int cli_job_parse(job *j, const cJSON *root);
+
+/* Converts every block's parameters (cli_pattern_finish) and checks the
+ * job's total budget before any work: the blocks' estimated points within
+ * QC_MAX_POINTS, their tsp-time within JOB_MAX_TSP_MS. CLI_OK, or an error
+ * after one line naming the block where the budget ran out. */
+int cli_job_budget(qc_ctx *ctx, job *j);
 
 /* Strings made for a job's resolved file names. */
 typedef struct cli_job_names {
@@ -50,8 +61,14 @@ typedef struct cli_job_names {
 
 /* Rewrites the job's file names relative to the directory of file (the job
  * file's path); the new strings go to *names (free with
- * cli_job_names_free). CLI_OK, or an error after one line. */
-int cli_job_resolve_names(job *j, const char *file, cli_job_names *names);
+ * cli_job_names_free). Unless allow_outside, every file name must stay
+ * inside that folder (cli_path_inside). CLI_OK, or an error after one line. */
+int cli_job_resolve_names(job *j, const char *file, int allow_outside, cli_job_names *names);
 void cli_job_names_free(cli_job_names *names);
+
+/* CLI_OK when name (as the job wrote it; path, the name resolved beside the
+ * job) is relative, has no "..", and resolves inside root (the job's
+ * folder, resolved); else CLI_USAGE after one line starting with what. */
+int cli_path_inside(const char *root, const char *name, const char *path, const char *what);
 
 #endif

@@ -11,8 +11,8 @@ static const struct command {
 } commands[] = {
     {"generate", cmd_generate, "make a pattern for a block and write machine files"},
     {"skeleton", cmd_skeleton, "write the points and their tree or tour (JSON or SVG)"},
-    {"convert", cmd_convert, "convert a pattern file (.pat, .svg) to another format"},
-    {"check", cmd_check, "lint a .pat file and check a pattern's geometry"},
+    {"convert", cmd_convert, "convert a pattern between machine formats (any quiltc writes)"},
+    {"check", cmd_check, "lint a pattern file (any format) and check its geometry"},
     {"job", cmd_job, "generate a whole quilt of blocks from a JSON job file"},
     {"motifs", cmd_motifs, "list the motif library, or draw one motif as SVG"},
     {"list", cmd_list, "list families, parameters, motifs or formats"},

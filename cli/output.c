@@ -2,9 +2,13 @@
  * Outputs written whole or not at all: each under a temporary name beside
  * its file, renamed into place when every output of the command is done,
  * else removed; devices and FIFOs written in place, "-" as stdout.
+ * Temporary files are made exclusively under an unpredictable name
+ * (mkstemp: a planted link is never followed), take the permission bits of
+ * the file they replace, and are removed on SIGINT, SIGTERM and SIGHUP.
  */
-#define _XOPEN_SOURCE 700 /* realpath */
+#define _XOPEN_SOURCE 700 /* realpath, mkstemp, sigaction */
 #include <errno.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -12,12 +16,73 @@
 
 #include "cli.h"
 
+/* The temporary files a signal removes: set and cleared with the signals
+ * blocked, read by the handler, which only unlinks and re-raises. */
+static char *volatile pending[CLI_MAX_OUTPUTS];
+
+static void on_signal(int sig)
+{
+    size_t i;
+
+    for (i = 0; i < CLI_MAX_OUTPUTS; i++)
+        if (pending[i] != NULL)
+            unlink(pending[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void block_signals(sigset_t *old)
+{
+    sigset_t set;
+
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);
+    sigprocmask(SIG_BLOCK, &set, old);
+}
+
+static void catch_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    static int done;
+    struct sigaction sa, was;
+    size_t i;
+
+    if (done++)
+        return;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (i = 0; i < sizeof sigs / sizeof sigs[0]; i++)
+        if (sigaction(sigs[i], NULL, &was) == 0 && was.sa_handler != SIG_IGN)
+            sigaction(sigs[i], &sa, NULL); /* nohup's ignored SIGHUP stays ignored */
+}
+
+/* Puts tmp on (or, when NULL, takes old off) the list a signal removes. */
+static void track(char *tmp, const char *old)
+{
+    size_t i;
+
+    for (i = 0; i < CLI_MAX_OUTPUTS; i++)
+        if (tmp != NULL ? pending[i] == NULL : pending[i] == old) {
+            pending[i] = tmp;
+            return;
+        }
+}
+
 static void output_abort(cli_output *out)
 {
+    sigset_t old;
+
     if (out->f != NULL && out->f != stdout)
         fclose(out->f);
-    if (out->tmp != NULL)
+    block_signals(&old);
+    if (out->tmp != NULL) {
         remove(out->tmp);
+        track(NULL, out->tmp);
+    }
+    sigprocmask(SIG_SETMASK, &old, NULL);
     free(out->path);
     free(out->tmp);
     memset(out, 0, sizeof *out);
@@ -46,9 +111,49 @@ static char *publish_path(const char *path)
     return p;
 }
 
-/* Temporary names differ per output, so two names for one file
- * ("x.pat", "./x.pat") never share a temporary. */
-static unsigned temp_seq;
+/* The mode a new file gets: 0666 less the umask, as fopen would make it. */
+static mode_t new_file_mode(void)
+{
+    mode_t m = umask(022);
+
+    umask(m);
+    return 0666 & ~m;
+}
+
+/* Opens out->tmp, "PATH.tmp.XXXXXX" made by mkstemp (O_CREAT | O_EXCL, so
+ * never through a link), with the mode of the file it replaces. */
+static FILE *open_temp(cli_output *out)
+{
+    struct stat st;
+    sigset_t old;
+    mode_t mode = stat(out->path, &st) == 0 ? st.st_mode & 07777 : new_file_mode();
+    FILE *f = NULL;
+    int fd;
+
+    out->tmp = malloc(strlen(out->path) + 16);
+    if (out->tmp == NULL) {
+        errno = ENOMEM;
+        return NULL;
+    }
+    sprintf(out->tmp, "%s.tmp.XXXXXX", out->path);
+    catch_signals();
+    block_signals(&old);
+    fd = mkstemp(out->tmp);
+    if (fd >= 0)
+        track(out->tmp, NULL);
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    if (fd < 0) {
+        free(out->tmp);
+        out->tmp = NULL;
+        return NULL;
+    }
+    if (fchmod(fd, mode) != 0 || (f = fdopen(fd, "wb")) == NULL) {
+        int e = errno;
+        close(fd);
+        errno = e;
+    }
+    return f;
+}
 
 static int output_open(cli_output *out, const char *path)
 {
@@ -66,16 +171,8 @@ static int output_open(cli_output *out, const char *path)
      * /dev/null or a pipe would replace it. */
     if (stat(out->path, &st) == 0 && !S_ISREG(st.st_mode)) {
         out->f = fopen(out->path, "wb");
-    } else {
-        out->tmp = malloc(strlen(out->path) + 32);
-        if (out->tmp == NULL) {
-            cli_error("out of memory");
-            output_abort(out);
-            return -1;
-        }
-        sprintf(out->tmp, "%s.tmp.%ld.%u", out->path, (long)getpid(), ++temp_seq);
-        out->f = fopen(out->tmp, "wb");
-    }
+    } else
+        out->f = open_temp(out);
     if (out->f == NULL) {
         cli_error("cannot write '%s': %s", path, strerror(errno));
         output_abort(out);
@@ -119,8 +216,14 @@ static int output_close(cli_output *out)
 /* Renames a closed output into place. */
 static int output_publish(cli_output *out)
 {
-    int err = out->tmp != NULL && rename(out->tmp, out->path) != 0;
+    sigset_t old;
+    int err;
 
+    block_signals(&old);
+    err = out->tmp != NULL && rename(out->tmp, out->path) != 0;
+    if (!err && out->tmp != NULL)
+        track(NULL, out->tmp);
+    sigprocmask(SIG_SETMASK, &old, NULL);
     if (err) {
         cli_error("cannot write '%s': %s", out->path, strerror(errno));
         output_abort(out);

@@ -160,8 +160,7 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
             cli_error("%s: '%s' is not a whole number from 0 to 2^64-1", name, s);
             return CLI_USAGE;
         }
-        qc_params_set(ctx, &o->params, "seed", 0.0); /* marks it given */
-        o->params.seed = (uint64_t)seed;
+        qc_params_set_seed(&o->params, (uint64_t)seed);
         return CLI_OK;
     case QC_PARAM_LENGTH:
         rc = parse_length(s, o->mm_per_unit, &v);
@@ -223,7 +222,7 @@ void cli_pattern_help(FILE *f, unsigned families)
           f);
     for (i = 0; i < nrows; i++) {
         char name[64];
-        if ((t[i].families & families) == 0)
+        if ((qc_param_families(&t[i]) & families) == 0)
             continue;
         snprintf(name, sizeof name, "--%s %s", t[i].name,
                  t[i].type == QC_PARAM_ENUM ? "CHOICE" : t[i].type == QC_PARAM_LENGTH ? "LEN" : "N");

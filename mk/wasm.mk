@@ -1,6 +1,6 @@
 # make wasm: the unchanged core + wasm/quiltc_wasm.c as build/web/quiltc.mjs + .wasm, with the page.
 # Debian's emscripten needs the system Node modules (acorn) on NODE_PATH.
-# make serve: serves build/web on http://localhost:8000/ (SERVE_PORT=...; any static server works).
+# make serve: serves build/web on http://127.0.0.1:8000/ only (SERVE_PORT=...; any static server works).
 # $(BUILD)/tests/qcw_native: the same bindings built natively (tests/wasm/identity.mjs).
 WASM_DIR    = $(BUILD)/web
 WASM_OBJDIR = $(BUILD)/wasm-obj
@@ -16,9 +16,9 @@ WASM_PAGE   = $(patsubst wasm/web/%,$(WASM_DIR)/%,$(wildcard wasm/web/*))
 .PHONY: wasm serve
 wasm: $(WASM_DIR)/quiltc.mjs $(WASM_PAGE)
 
-$(WASM_OBJDIR)/%.o: %.c $(HEADERS) $(wildcard src/*/*.h) wasm/quiltc_wasm.h
+$(WASM_OBJDIR)/%.o: %.c $(WASM_OBJDIR)/%.d
 	@mkdir -p $(dir $@)
-	$(WASM_EMCC) $(WASM_CFLAGS) -c $< -o $@
+	$(WASM_EMCC) $(WASM_CFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(WASM_DIR)/quiltc.mjs: $(WASM_OBJ) wasm/exports.txt
 	@mkdir -p $(WASM_DIR)
@@ -30,9 +30,11 @@ $(WASM_DIR)/%: wasm/web/%
 
 $(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c wasm/quiltc_wasm.c wasm/quiltc_wasm.h $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
+	$(CC) $(BASE_CFLAGS) $(LDFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
 
 SERVE_PORT ?= 8000
 serve: wasm
-	@echo "quiltc page: http://localhost:$(SERVE_PORT)/ (Ctrl-C stops)"
-	cd $(WASM_DIR) && python3 -m http.server $(SERVE_PORT)
+	@echo "quiltc page: http://127.0.0.1:$(SERVE_PORT)/ (this machine only; Ctrl-C stops)"
+	cd $(WASM_DIR) && python3 -m http.server --bind 127.0.0.1 $(SERVE_PORT)
+
+DEP_FILES += $(WASM_OBJ:.o=.d)

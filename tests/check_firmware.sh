@@ -11,13 +11,13 @@ ROOT=$(pwd)
 ARM_FLAGS="-mthumb -mfloat-abi=hard -ffunction-sections -fdata-sections -ffp-contract=off"
 M4="-Os -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 $ARM_FLAGS"
 A7="-Os -march=armv7-a+fp $ARM_FLAGS" # a CPU qemu-arm runs; newlib semihosting by SVC
-FAMILIES="vine branching wanderer pebbling packing fill stipple echo spiral"
 
 if [ "${BUILD:-build}" != build ] || ! command -v arm-none-eabi-gcc >/dev/null 2>&1; then
     printf '\n-----------------------\n1 Tests 0 Failures 1 Ignored\nOK\n'
     echo "arm-none-eabi-gcc missing or a sanitizer build: skipped"
     exit 0
 fi
+FAMILIES=$(./build/quiltc list families) # the library's list (qc_family_info)
 
 # fw_lib CFLAGS LIBDIR: the core for CFLAGS into LIBDIR (once).
 fw_lib() {

@@ -10,16 +10,29 @@ if [ "${BUILD:-build}" != build ]; then # the plain build covers it; sanitized o
 fi
 STAGE="$WORK/stage"
 PREFIX=/opt/quiltc
+SONAME=$(make -s --no-print-directory -C "$ROOT" soname) # libquiltc.so.0.MINOR before 1.0, then .MAJOR
 
 install_tree() {
     make -s -C "$ROOT" install DESTDIR="$STAGE" PREFIX=$PREFIX >/dev/null &&
-        for f in bin/quiltc lib/libquiltc.a lib/libquiltc.so.0 lib/libquiltc.so \
+        for f in bin/quiltc lib/libquiltc.a "lib/$SONAME" lib/libquiltc.so \
                  include/quiltc.h include/quiltc/pattern.h lib/pkgconfig/quiltc.pc \
                  share/man/man1/quiltc.1; do
             [ -e "$STAGE$PREFIX/$f" ] || { echo "missing $f"; return 1; }
         done
 }
 check install_honours_destdir_and_prefix install_tree
+
+# The soname comes from QC_VERSION_* in core.h, and the installed names match it.
+soname_from_version() {
+    major=$(sed -n 's/^#define QC_VERSION_MAJOR \([0-9]*\)/\1/p' "$ROOT/include/quiltc/core.h")
+    minor=$(sed -n 's/^#define QC_VERSION_MINOR \([0-9]*\)/\1/p' "$ROOT/include/quiltc/core.h")
+    if [ "$major" = 0 ]; then want=libquiltc.so.0.$minor; else want=libquiltc.so.$major; fi
+    [ "$SONAME" = "$want" ] || { echo "soname $SONAME, wanted $want"; return 1; }
+    got=$(objdump -p "$ROOT/build/libquiltc.so" | awk '$1 == "SONAME" {print $2}')
+    [ "$got" = "$want" ] || { echo "libquiltc.so has SONAME '$got', wanted $want"; return 1; }
+    [ "$(readlink "$STAGE$PREFIX/lib/libquiltc.so")" = "$want" ]
+}
+check soname_follows_the_version soname_from_version
 
 cat > "$WORK/use.c" <<'C'
 #include <quiltc.h>

@@ -128,7 +128,7 @@ static void math_should_match_libm_closely(void)
         worst = fmax(worst, fabs(qc_atan2(x, 1.7) - atan2(x, 1.7)));
         worst = fmax(worst, fabs(qc_atan2(-1.3, x) - atan2(-1.3, x)));
     }
-    TEST_ASSERT_LESS_THAN(4e-15, worst);
+    TEST_ASSERT_LESS_THAN_DOUBLE(4e-15, worst);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, qc_atan2(0.0, 0.0));
     TEST_ASSERT_DOUBLE_WITHIN(1e-15, QC_PI, qc_atan2(0.0, -1.0));
     TEST_ASSERT_DOUBLE_WITHIN(1e-15, -QC_PI / 2, qc_atan2(-5.0, 0.0));

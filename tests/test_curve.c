@@ -94,7 +94,7 @@ static void catmull_rom_should_pass_through_every_point(void)
         TEST_ASSERT_EQUAL_DOUBLE(pts[i].x, e.x);
         TEST_ASSERT_EQUAL_DOUBLE(pts[i].y, e.y);
     }
-    TEST_ASSERT_GREATER_THAN(1e-3, min_speed_ratio(&p));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1e-3, min_speed_ratio(&p));
     qc_path_free(&ctx, &p);
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
@@ -109,7 +109,7 @@ static void catmull_rom_should_close_and_skip_coincident_points(void)
     TEST_ASSERT_EQUAL_size_t(5, p.ncmd);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, qc_path_last(&p).x);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, qc_path_last(&p).y);
-    TEST_ASSERT_GREATER_THAN(1e-3, min_speed_ratio(&p));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1e-3, min_speed_ratio(&p));
     qc_path_free(&ctx, &p);
 }
 
@@ -125,14 +125,14 @@ static void catmull_rom_should_have_no_cusp_on_adversarial_inputs(void)
     int trial, i;
 
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_catmull_rom(&ctx, a, 12, 0, &p));
-    TEST_ASSERT_GREATER_THAN(1e-6, min_speed_ratio(&p));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1e-6, min_speed_ratio(&p));
     qc_path_free(&ctx, &p);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_catmull_rom(&ctx, a, 12, 1, &p));
-    TEST_ASSERT_GREATER_THAN(1e-6, min_speed_ratio(&p));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1e-6, min_speed_ratio(&p));
     qc_path_free(&ctx, &p);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_catmull_rom(&ctx, b, 2, 1, &p));
     TEST_ASSERT_EQUAL_size_t(3, p.ncmd);
-    TEST_ASSERT_GREATER_THAN(1e-6, min_speed_ratio(&p));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1e-6, min_speed_ratio(&p));
     qc_path_free(&ctx, &p);
     qc_rng_seed(&rng, 7);
     for (trial = 0; trial < 50; trial++) {
@@ -142,7 +142,7 @@ static void catmull_rom_should_have_no_cusp_on_adversarial_inputs(void)
             r[i].y = (double)qc_rng_below(&rng, 3);
         }
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_catmull_rom(&ctx, r, 40, trial & 1, &p));
-        TEST_ASSERT_GREATER_THAN(1e-6, min_speed_ratio(&p));
+        TEST_ASSERT_GREATER_THAN_DOUBLE(1e-6, min_speed_ratio(&p));
         qc_path_free(&ctx, &p);
     }
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
@@ -232,7 +232,7 @@ static void flatten_should_respect_tolerance(void)
                     worst = d;
             }
         }
-        TEST_ASSERT_LESS_OR_EQUAL(tols[t], worst);
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(tols[t], worst);
         qc_points_free(&ctx, &out);
         qc_order_free(&ctx, &ends);
     }

@@ -125,9 +125,9 @@ static void echo_should_be_one_path_inside_at_the_margin(void)
             assert_one_polyline(&out);
             for (i = 0; i < out.npt; i++) {
                 TEST_ASSERT_TRUE_MESSAGE(qc_region_contains(&r, out.pt[i]), region_names[kind]);
-                TEST_ASSERT_GREATER_OR_EQUAL_MESSAGE(3.0 - 1e-6,
-                                                     qc_region_boundary_distance(&r, out.pt[i]),
-                                                     region_names[kind]);
+                TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE_MESSAGE(3.0 - 1e-6,
+                                                            qc_region_boundary_distance(&r, out.pt[i]),
+                                                            region_names[kind]);
             }
             qc_path_free(&ctx, &out);
             qc_region_free(&ctx, &r);
@@ -194,7 +194,7 @@ static void echo_path_vertices_should_lie_on_levels(void)
             for (i = 0; i < out.npt; i++) {
                 int k;
                 double e = level_error(qc_region_boundary_distance(&r, out.pt[i]), 2, 8, &k);
-                TEST_ASSERT_LESS_THAN_MESSAGE(1e-6, e, region_names[kind]);
+                TEST_ASSERT_LESS_THAN_DOUBLE_MESSAGE(1e-6, e, region_names[kind]);
                 TEST_ASSERT_GREATER_OR_EQUAL(0, k);
             }
             qc_path_free(&ctx, &out);
@@ -247,12 +247,12 @@ static void echo_gap_should_stay_under_d(void)
             make_region(kind, &r);
             TEST_ASSERT_EQUAL_INT(QC_OK, run_echo(&r, &p, &out, &st));
             g = qc_largest_gap(&ctx, &r, out.pt, out.npt, d / 24, NULL);
-            TEST_ASSERT_GREATER_THAN(0.0, g);
-            TEST_ASSERT_LESS_THAN_MESSAGE((1.0 + 0.25 / sqrt(2.0)) * d, g, region_names[kind]);
+            TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, g);
+            TEST_ASSERT_LESS_THAN_DOUBLE_MESSAGE((1.0 + 0.25 / sqrt(2.0)) * d, g, region_names[kind]);
             if (kind == R_HOLE || kind == R_HOLES || kind == R_CIRCLE)
-                TEST_ASSERT_LESS_THAN_MESSAGE(d, g, region_names[kind]);
+                TEST_ASSERT_LESS_THAN_DOUBLE_MESSAGE(d, g, region_names[kind]);
             /* the stat: another lower bound, within 2.2 d/6 */
-            TEST_ASSERT_GREATER_THAN(0.0, st.largest_gap_mm);
+            TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, st.largest_gap_mm);
             TEST_ASSERT_DOUBLE_WITHIN(2.2 * d / 6 + 2.2 * d / 24, g, st.largest_gap_mm);
             qc_path_free(&ctx, &out);
             qc_region_free(&ctx, &r);
@@ -368,9 +368,9 @@ static void echo_should_run_through_generate(void)
     TEST_ASSERT_EQUAL_UINT(1, res.stats.pieces);
     TEST_ASSERT_EQUAL_UINT(0, res.points.n);
     TEST_ASSERT_DOUBLE_WITHIN(1e-9, 3.0, res.params.margin); /* default 0.3 d */
-    TEST_ASSERT_GREATER_THAN(0.0, res.stats.largest_gap_mm);
-    TEST_ASSERT_LESS_THAN(10.0, res.stats.largest_gap_mm);
-    TEST_ASSERT_GREATER_THAN(1000.0, res.stats.length_mm);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, res.stats.largest_gap_mm);
+    TEST_ASSERT_LESS_THAN_DOUBLE(10.0, res.stats.largest_gap_mm);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(1000.0, res.stats.length_mm);
     qc_result_free(&ctx, &res);
     qc_region_free(&ctx, &r);
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);

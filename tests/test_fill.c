@@ -165,7 +165,7 @@ static void check_fill(int region, int points, double d)
         TEST_ASSERT_TRUE(qc_region_contains(&r, out.pt[i]));
     }
     TEST_ASSERT_EQUAL_UINT(0, crossings(&out, 1));
-    TEST_ASSERT_GREATER_THAN(0.0, st.largest_gap_mm);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, st.largest_gap_mm);
     qc_path_free(&ctx, &out);
     free_skeleton(&t);
     qc_region_free(&ctx, &r);
@@ -198,7 +198,7 @@ static void fill_should_put_circles_at_the_tips(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_fill(&ctx, &r, &plain, &sk, NULL, &ref, NULL));
     for (i = 0; i < out.npt; i++) {
         double dist = tree_distance(&t, out.pt[i]);
-        TEST_ASSERT_GREATER_OR_EQUAL(par.width / 2 - 1e-6, dist);
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(par.width / 2 - 1e-6, dist);
         far += dist > par.width; /* on a tip circle of radius 1.5 w */
     }
     for (i = 0; i < t.pts.n; i++) {
@@ -208,7 +208,7 @@ static void fill_should_put_circles_at_the_tips(void)
         leaves += deg == 1;
     }
     TEST_ASSERT_GREATER_THAN(leaves * 8, far);
-    TEST_ASSERT_GREATER_THAN(qc_curve_length(&ref, 0), qc_curve_length(&out, 0));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(qc_curve_length(&ref, 0), qc_curve_length(&out, 0));
     TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&out));
     TEST_ASSERT_EQUAL_UINT(0, crossings(&out, 1));
     qc_path_free(&ctx, &out);
@@ -236,8 +236,8 @@ static void check_stipple(int region, int points, double d, uint64_t seed)
     TEST_ASSERT_EQUAL_INT(QC_PATH_CUBIC, out.cmd[1]);
     TEST_ASSERT_EQUAL_UINT(0, crossings(&out, 1));
     /* the meander leaves no hole wider than the point spacing */
-    TEST_ASSERT_GREATER_THAN(0.0, st.largest_gap_mm);
-    TEST_ASSERT_LESS_OR_EQUAL(d, st.largest_gap_mm);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, st.largest_gap_mm);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(d, st.largest_gap_mm);
     qc_path_free(&ctx, &out);
     free_skeleton(&t);
     qc_region_free(&ctx, &r);

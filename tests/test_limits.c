@@ -4,6 +4,7 @@
  * (the counting allocator's peak stays small), so memory stays linear in
  * what is accepted.
  */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -176,6 +177,44 @@ static void test_svg_should_refuse_more_than_16_MiB_before_reading(void)
     assert_clean();
 }
 
+/* 10,001 tiny islands: refused by the SVG reader before normalizing (and
+ * by qc_sample for a region built by hand), where they cost seconds. */
+static void test_regions_should_refuse_more_rings_than_the_limit(void)
+{
+    size_t n = QC_MAX_REGION_RINGS + 1, i, at;
+    char *svg = malloc(n * 40 + 200);
+    qc_region r = {0};
+    qc_points pts = {0};
+    qc_sample_params sp;
+
+    TEST_ASSERT_NOT_NULL(svg);
+    at = (size_t)sprintf(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\"><path d=\"");
+    for (i = 0; i < n; i++)
+        at += (size_t)sprintf(svg + at, "M%lu %luh0.5v0.5h-0.5z", (unsigned long)(i % 101),
+                              (unsigned long)(i / 101));
+    at += (size_t)sprintf(svg + at, "\"/></svg>");
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_io_read_svg_region(&ctx, svg, at, NULL, &r));
+    assert_msg_has("more than 10000 outlines and holes");
+    qc_region_free(&ctx, &r);
+    for (i = 0; i < n; i++) {
+        qc_vec2 sq[4];
+        sq[0].x = sq[3].x = (double)(i % 101);
+        sq[1].x = sq[2].x = sq[0].x + 0.5;
+        sq[0].y = sq[1].y = (double)(i / 101);
+        sq[2].y = sq[3].y = sq[0].y + 0.5;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, sq, 4));
+    }
+    memset(&sp, 0, sizeof sp);
+    sp.kind = QC_SAMPLE_POISSON;
+    sp.spacing = 0.5;
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_sample(&ctx, &r, &sp, &pts));
+    assert_msg_has("10001 outlines and holes, over the limit of 10000");
+    qc_region_free(&ctx, &r);
+    qc_points_free(&ctx, &pts);
+    free(svg);
+    assert_clean();
+}
+
 /* The largest-gap raster is capped at 2^22 cells (9 bytes each), however
  * fine the resolution asked for. */
 static void test_largest_gap_should_cap_its_raster(void)
@@ -310,6 +349,7 @@ int main(void)
     RUN_TEST(test_sample_should_refuse_a_sliver_whose_box_is_huge);
     RUN_TEST(test_generate_should_refuse_too_many_given_points);
     RUN_TEST(test_svg_should_refuse_more_than_16_MiB_before_reading);
+    RUN_TEST(test_regions_should_refuse_more_rings_than_the_limit);
     RUN_TEST(test_largest_gap_should_cap_its_raster);
     RUN_TEST(test_complete_mst_should_refuse_above_twenty_thousand_points);
     RUN_TEST(test_stitch_plan_should_refuse_too_many_splits_before_growing);

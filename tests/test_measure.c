@@ -43,8 +43,8 @@ static void largest_gap_should_find_the_inscribed_circle(void)
 
     square(&r, 100, 0);
     g = qc_largest_gap(&ctx, &r, NULL, 0, 1.0, &c);
-    TEST_ASSERT_LESS_OR_EQUAL(50.0, g);
-    TEST_ASSERT_GREATER_OR_EQUAL(50.0 - 2.2, g);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(50.0, g);
+    TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(50.0 - 2.2, g);
     TEST_ASSERT_DOUBLE_WITHIN(2.0, 50.0, c.x);
     TEST_ASSERT_DOUBLE_WITHIN(2.0, 50.0, c.y);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, g, qc_region_boundary_distance(&r, c));
@@ -63,8 +63,8 @@ static void largest_gap_should_shrink_with_the_path(void)
     cross[0] = v2(0, 50); cross[1] = v2(100, 50); cross[2] = v2(50, 50);
     cross[3] = v2(50, 0); cross[4] = v2(50, 100);
     g = qc_largest_gap(&ctx, &r, cross, 5, 0.5, &c);
-    TEST_ASSERT_LESS_OR_EQUAL(25.0, g);
-    TEST_ASSERT_GREATER_OR_EQUAL(25.0 - 1.1, g);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(25.0, g);
+    TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(25.0 - 1.1, g);
     /* a single point in the middle: the corners win, radius 100 / (2 + sqrt 2) */
     g = qc_largest_gap(&ctx, &r, cross + 2, 1, 0.5, NULL);
     TEST_ASSERT_DOUBLE_WITHIN(1.1, 100.0 / (2.0 + sqrt(2.0)), g);
@@ -82,8 +82,8 @@ static void largest_gap_should_respect_holes(void)
     square(&r, 100, 1);
     g = qc_largest_gap(&ctx, &r, NULL, 0, 0.5, &c);
     TEST_ASSERT_TRUE(qc_region_contains(&r, c));
-    TEST_ASSERT_LESS_THAN(40.0, g);
-    TEST_ASSERT_GREATER_THAN(20.0, g);
+    TEST_ASSERT_LESS_THAN_DOUBLE(40.0, g);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(20.0, g);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, g, qc_region_boundary_distance(&r, c));
     qc_region_free(&ctx, &r);
 }
@@ -101,7 +101,7 @@ static void largest_gap_should_measure_path_pieces_apart(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, v2(98, 98)));
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(99, 99)));
     g = qc_path_largest_gap(&ctx, &r, &p, 1.0, NULL);
-    TEST_ASSERT_GREATER_THAN(47.0, g);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(47.0, g);
     qc_path_free(&ctx, &p);
     qc_region_free(&ctx, &r);
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
@@ -139,7 +139,7 @@ static void largest_gap_should_survive_allocation_failures(void)
         ta.fail_at = 0;
         TEST_ASSERT_EQUAL_UINT(base, ta.live_blocks);
     }
-    TEST_ASSERT_GREATER_THAN(0.0, g);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, g);
     TEST_ASSERT_GREATER_THAN(2, k);
     qc_region_free(&ctx, &r);
 }
@@ -195,6 +195,31 @@ static void self_crossings_should_count_proper_crossings(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Hostile check inputs: stitches repeated on one spot are free (zero-length
+ * segments are skipped); segments all through one spot are refused before
+ * the quadratic pair loop. */
+static void self_crossings_should_refuse_piles_and_skip_repeats(void)
+{
+    size_t n = 8000, i, count = 7;
+    qc_vec2 *p = malloc(100000 * sizeof *p);
+
+    TEST_ASSERT_NOT_NULL(p);
+    for (i = 0; i < 100000; i++)
+        p[i] = v2(5, 5);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, p, 100000, 0, &count));
+    TEST_ASSERT_EQUAL_UINT(0, count);
+    for (i = 0; i < n; i++) { /* chords through the centre of a circle */
+        double t = (double)i * QC_PI * (1 + 0.37 / (double)n);
+        p[i] = v2(5 + 4 * qc_cos(t), 5 + 4 * qc_sin(t));
+    }
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_path_self_crossings(&ctx, p, n, 0, &count));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "over the limit of 20000000"));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, p, 200, 0, &count));
+    TEST_ASSERT_EQUAL_UINT(brute_crossings(p, 200, 0), count);
+    free(p);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -205,5 +230,6 @@ int main(void)
     RUN_TEST(largest_gap_should_reject_bad_input);
     RUN_TEST(largest_gap_should_survive_allocation_failures);
     RUN_TEST(self_crossings_should_count_proper_crossings);
+    RUN_TEST(self_crossings_should_refuse_piles_and_skip_repeats);
     return UNITY_END();
 }

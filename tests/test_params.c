@@ -132,6 +132,75 @@ static void set_should_refuse_enum_values_no_int_holds(void)
     TEST_ASSERT_EQUAL_UINT64(0, p.given);
 }
 
+/* Ids are unique, below 64 and findable; the bit a setter marks is the
+ * row's id, not its place in the table. */
+static void given_should_follow_the_parameter_id_not_the_row(void)
+{
+    size_t n, i, j;
+    const qc_param_info *t = qc_param_table(&n);
+
+    TEST_ASSERT_EQUAL_size_t(QC_PARAM_ID_COUNT, n);
+    TEST_ASSERT_TRUE(QC_PARAM_ID_COUNT <= 64);
+    for (i = 0; i < n; i++) {
+        qc_params p;
+        double v = t[i].type == QC_PARAM_ENUM ? 1.0 : t[i].min;
+
+        TEST_ASSERT_TRUE(qc_param_by_id((int)t[i].id) == &t[i]);
+        for (j = i + 1; j < n; j++)
+            TEST_ASSERT_TRUE(t[i].id != t[j].id);
+        memset(&p, 0, sizeof p);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, t[i].name, v));
+        TEST_ASSERT_EQUAL_UINT64(QC_PARAM_BIT(t[i].id), p.given);
+        TEST_ASSERT_TRUE(qc_params_given(&p, (int)t[i].id));
+    }
+    TEST_ASSERT_NULL(qc_param_by_id(QC_PARAM_ID_COUNT));
+    TEST_ASSERT_NULL(qc_param_by_id(-1));
+    TEST_ASSERT_FALSE(qc_params_given(&(qc_params){0}, 64));
+    /* the ids are ABI: a program built against an older header marks the
+     * same bits (these were the table's row numbers when ids arrived) */
+    TEST_ASSERT_EQUAL_INT(0, QC_PARAM_ID_FAMILY);
+    TEST_ASSERT_EQUAL_INT(10, QC_PARAM_ID_SEED);
+    TEST_ASSERT_EQUAL_INT(11, QC_PARAM_ID_SPACING);
+    TEST_ASSERT_EQUAL_INT(23, QC_PARAM_ID_START_Y);
+    TEST_ASSERT_TRUE(qc_param_find("start-y")->id == QC_PARAM_ID_START_Y);
+    TEST_ASSERT_TRUE(qc_param_find("width")->id == QC_PARAM_ID_WIDTH);
+}
+
+/* qc_params_set_seed keeps all 64 bits (a double keeps 53) and marks the seed
+ * given, so an explicit 0 stays 0; two seeds a double cannot tell apart give
+ * two different patterns. */
+static void set_seed_should_keep_all_64_bits(void)
+{
+    const uint64_t big = 18446744073709551557u, next = big - 1;
+    qc_params p, r;
+    qc_region block;
+    qc_result a, b;
+
+    TEST_ASSERT_TRUE((double)big == (double)next);
+    memset(&p, 0, sizeof p);
+    qc_params_set_seed(&p, big);
+    TEST_ASSERT_EQUAL_UINT64(QC_PARAM_BIT(QC_PARAM_ID_SEED), p.given);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_TRUE(r.seed == big);
+    memset(&p, 0, sizeof p);
+    qc_params_set_seed(&p, 0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_TRUE(r.seed == 0);
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:60x60", 1.0, &block));
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "spacing", 6.0));
+    qc_params_set_seed(&p, big);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &block, &p, NULL, NULL, &a));
+    qc_params_set_seed(&p, next);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &block, &p, NULL, NULL, &b));
+    TEST_ASSERT_TRUE(a.points.n != b.points.n ||
+                     memcmp(a.points.v, b.points.v, a.points.n * sizeof *a.points.v) != 0);
+    qc_result_free(&ctx, &a);
+    qc_result_free(&ctx, &b);
+    qc_region_free(&ctx, &block);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -142,5 +211,7 @@ int main(void)
     RUN_TEST(resolve_should_refuse_out_of_range_values_by_name);
     RUN_TEST(names_should_map_both_ways);
     RUN_TEST(set_should_refuse_enum_values_no_int_holds);
+    RUN_TEST(given_should_follow_the_parameter_id_not_the_row);
+    RUN_TEST(set_seed_should_keep_all_64_bits);
     return UNITY_END();
 }

@@ -166,9 +166,9 @@ static void spiral_should_be_one_path_inside_at_the_margin(void)
             assert_one_polyline(&out);
             for (i = 0; i < out.npt; i++) { /* the margin ring's chords: within 0.2% d */
                 TEST_ASSERT_TRUE_MESSAGE(qc_region_contains(&r, out.pt[i]), region_names[kind]);
-                TEST_ASSERT_GREATER_OR_EQUAL_MESSAGE(3.0 - 0.0025 * d,
-                                                     qc_region_boundary_distance(&r, out.pt[i]),
-                                                     region_names[kind]);
+                TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE_MESSAGE(3.0 - 0.0025 * d,
+                                                            qc_region_boundary_distance(&r, out.pt[i]),
+                                                            region_names[kind]);
             }
             qc_path_free(&ctx, &out);
             qc_region_free(&ctx, &r);
@@ -213,10 +213,10 @@ static void spiral_should_start_at_the_farthest_point(void)
 
         make_region(kind, 200, &r);
         R = qc_largest_gap(&ctx, &r, NULL, 0, 0.25, &c); /* the inscribed circle */
-        TEST_ASSERT_GREATER_THAN(0.0, R);
+        TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, R);
         TEST_ASSERT_EQUAL_INT(QC_OK, run_spiral(&r, &p, &out, NULL));
-        TEST_ASSERT_GREATER_OR_EQUAL_MESSAGE(R - 10.0 / 3, qc_region_boundary_distance(&r, out.pt[0]),
-                                             region_names[kind]);
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE_MESSAGE(R - 10.0 / 3, qc_region_boundary_distance(&r, out.pt[0]),
+                                                    region_names[kind]);
         qc_path_free(&ctx, &out);
         qc_region_free(&ctx, &r);
     }
@@ -263,9 +263,9 @@ static void fermat_turns_should_add_equal_areas(void)
         TEST_ASSERT_DOUBLE_WITHIN(0.02 * 100, 100 * a / (2 * QC_PI), rad[0] * rad[0]);
         for (k = 1; k < n; k++) {
             TEST_ASSERT_DOUBLE_WITHIN(0.02 * 100, 100.0, rad[k] * rad[k] - rad[k - 1] * rad[k - 1]);
-            TEST_ASSERT_LESS_THAN(10.0, rad[k] - rad[k - 1]);
+            TEST_ASSERT_LESS_THAN_DOUBLE(10.0, rad[k] - rad[k - 1]);
             if (k > 1)
-                TEST_ASSERT_LESS_THAN(rad[k - 1] - rad[k - 2], rad[k] - rad[k - 1]);
+                TEST_ASSERT_LESS_THAN_DOUBLE(rad[k - 1] - rad[k - 2], rad[k] - rad[k - 1]);
         }
     }
     qc_path_free(&ctx, &out);
@@ -303,10 +303,10 @@ static void spiral_should_start_anywhere(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, run_spiral(&r, &p, &out, NULL));
     assert_one_polyline(&out);
     TEST_ASSERT_DOUBLE_WITHIN(0.025, 3.0, qc_region_boundary_distance(&r, out.pt[0]));
-    TEST_ASSERT_LESS_THAN(10.0, out.pt[0].x); /* entered on the left */
+    TEST_ASSERT_LESS_THAN_DOUBLE(10.0, out.pt[0].x); /* entered on the left */
     for (i = 0; i < out.npt; i++)
-        TEST_ASSERT_GREATER_OR_EQUAL(3.0 - 0.025, qc_region_boundary_distance(&r, out.pt[i]));
-    TEST_ASSERT_LESS_THAN(10.0, qc_largest_gap(&ctx, &r, out.pt, out.npt, 10.0 / 24, NULL));
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(3.0 - 0.025, qc_region_boundary_distance(&r, out.pt[i]));
+    TEST_ASSERT_LESS_THAN_DOUBLE(10.0, qc_largest_gap(&ctx, &r, out.pt, out.npt, 10.0 / 24, NULL));
     qc_path_free(&ctx, &out);
     qc_region_free(&ctx, &r);
 }
@@ -327,9 +327,9 @@ static void spiral_gap_should_stay_under_d(void)
             make_region(kind, sk == QC_SPIRAL_FERMAT ? 120 : 200, &r);
             TEST_ASSERT_EQUAL_INT(QC_OK, run_spiral(&r, &p, &out, &st));
             g = qc_largest_gap(&ctx, &r, out.pt, out.npt, d / 24, NULL);
-            TEST_ASSERT_GREATER_THAN(0.0, g);
-            TEST_ASSERT_LESS_THAN_MESSAGE(d, g, region_names[kind]);
-            TEST_ASSERT_GREATER_THAN(0.0, st.largest_gap_mm);
+            TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, g);
+            TEST_ASSERT_LESS_THAN_DOUBLE_MESSAGE(d, g, region_names[kind]);
+            TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, st.largest_gap_mm);
             TEST_ASSERT_DOUBLE_WITHIN(2.2 * d / 6 + 2.2 * d / 24, g, st.largest_gap_mm);
             qc_path_free(&ctx, &out);
             qc_region_free(&ctx, &r);
@@ -370,8 +370,8 @@ static void spiral_should_run_through_generate(void)
     TEST_ASSERT_EQUAL_INT(QC_SPIRAL_ARCHIMEDEAN, res.params.spiral);
     TEST_ASSERT_EQUAL_UINT(1, res.stats.pieces);
     TEST_ASSERT_EQUAL_UINT(0, res.points.n);
-    TEST_ASSERT_GREATER_THAN(0.0, res.stats.largest_gap_mm);
-    TEST_ASSERT_LESS_THAN(10.0, res.stats.largest_gap_mm);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, res.stats.largest_gap_mm);
+    TEST_ASSERT_LESS_THAN_DOUBLE(10.0, res.stats.largest_gap_mm);
     qc_result_free(&ctx, &res);
     qc_region_free(&ctx, &r);
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);

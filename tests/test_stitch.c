@@ -47,8 +47,8 @@ static void plan_should_merge_short_and_split_long_segments(void)
     TEST_ASSERT_EQUAL_DOUBLE(10.0, plan.p[plan.n - 1].y);
     for (i = 1; i < plan.n; i++) {
         TEST_ASSERT_EQUAL_INT(0, plan.flags[i]);
-        TEST_ASSERT_LESS_OR_EQUAL(3.0 + 1e-12, seg(&plan, i));
-        TEST_ASSERT_GREATER_OR_EQUAL(1.0 - 1e-12, seg(&plan, i));
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(3.0 + 1e-12, seg(&plan, i));
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(1.0 - 1e-12, seg(&plan, i));
     }
     /* 0, 1, 2, then 2.5 replaces 2 ... or stays: then 4 parts of 2.5 mm */
     TEST_ASSERT_EQUAL_size_t(3 + 4, plan.n);
@@ -123,7 +123,7 @@ static void plan_should_flatten_curves_within_tolerance(void)
     for (i = 1; i < plan.n; i++) {
         /* every point on the curve's arch: between the chord and the top */
         TEST_ASSERT_TRUE(plan.p[i].y >= -1e-9 && plan.p[i].y <= 37.5 + 1e-9);
-        TEST_ASSERT_GREATER_OR_EQUAL(0.508 - 1e-9, seg(&plan, i));
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(0.508 - 1e-9, seg(&plan, i));
     }
     qc_plan_free(&ctx, &plan);
     qc_path_free(&ctx, &path);

@@ -220,13 +220,13 @@ static void check_neighbours(int family, int mode, int tip)
     flatten(&p, &b);
     for (i = 0; i < b.n; i++) /* the right-hand neighbour */
         b.v[i].x += 90;
-    TEST_ASSERT_GREATER_THAN(0.5, copy_clearance(&a, &b, outp, 3.0));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.5, copy_clearance(&a, &b, outp, 3.0));
     if (mode == QC_TILE_ALL_OVER) {
         for (i = 0; i < b.n; i++) { /* the neighbour below */
             b.v[i].x -= 90;
             b.v[i].y -= 60;
         }
-        TEST_ASSERT_GREATER_THAN(0.5, copy_clearance(&a, &b, v2(-1e9, -1e9), 0.0));
+        TEST_ASSERT_GREATER_THAN_DOUBLE(0.5, copy_clearance(&a, &b, v2(-1e9, -1e9), 0.0));
     }
     qc_points_free(&ctx, &a);
     qc_points_free(&ctx, &b);

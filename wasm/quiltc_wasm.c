@@ -204,7 +204,8 @@ const char *qcw_params_json(qcw_job *job)
         add_str(&out, t[i].choices != NULL ? t[i].choices : "");
         add(&out, ",\"min\":%.17g,\"max\":%.17g,\"def\":%.17g,\"def_per_spacing\":%.17g,"
                   "\"families\":%lu}",
-            t[i].min, t[i].max, t[i].def, t[i].def_per_spacing, (unsigned long)t[i].families);
+            t[i].min, t[i].max, t[i].def, t[i].def_per_spacing,
+            (unsigned long)qc_param_families(&t[i]));
     }
     add(&out, "]");
     return finish_json(job, &out);
@@ -224,27 +225,67 @@ static void add_choice(text *t, const char *choices, int k)
     add(t, "\"%.*s\"", (int)(strchr(s, '|') != NULL ? (size_t)(strchr(s, '|') - s) : strlen(s)), s);
 }
 
-const char *qcw_resolved_json(qcw_job *job)
+/* Every row of resolved r as "name":value (enums by choice name, the seed
+ * as a decimal string), in a JSON object. */
+static void add_resolved(text *out, const qc_params *r)
 {
     size_t n, i;
     const qc_param_info *t = qc_param_table(&n);
+
+    add(out, "{");
+    for (i = 0; i < n; i++) {
+        add(out, "%s\"%s\":", i ? "," : "", t[i].name);
+        if (t[i].type == QC_PARAM_ENUM)
+            add_choice(out, t[i].choices, (int)qc_params_get(r, &t[i]));
+        else if (t[i].type == QC_PARAM_SEED)
+            add(out, "\"%llu\"", (unsigned long long)r->seed);
+        else
+            add(out, "%.17g", qc_params_get(r, &t[i]));
+    }
+    add(out, "}");
+}
+
+const char *qcw_resolved_json(qcw_job *job)
+{
     qc_params r;
     text out = {0};
 
     qc_clear_error(&job->ctx);
     if (qc_params_resolve(&job->ctx, &job->params, &r) < 0)
         return NULL;
-    add(&out, "{");
-    for (i = 0; i < n; i++) {
-        add(&out, "%s\"%s\":", i ? "," : "", t[i].name);
-        if (t[i].type == QC_PARAM_ENUM)
-            add_choice(&out, t[i].choices, (int)qc_params_get(&r, &t[i]));
-        else if (t[i].type == QC_PARAM_SEED)
-            add(&out, "\"%llu\"", (unsigned long long)r.seed);
-        else
-            add(&out, "%.17g", qc_params_get(&r, &t[i]));
+    add_resolved(&out, &r);
+    return finish_json(job, &out);
+}
+
+const char *qcw_families_json(qcw_job *job)
+{
+    const qc_family_desc *f;
+    size_t i;
+    text out = {0};
+
+    add(&out, "[");
+    for (i = 0; (f = qc_family_info(i)) != NULL; i++) {
+        qc_params p, r;
+
+        memset(&p, 0, sizeof p);
+        p.family = (int)f->id;
+        if (qc_params_resolve(&job->ctx, &p, &r) < 0) {
+            free(out.s);
+            return NULL;
+        }
+        add(&out, "%s{\"name\":", i ? "," : "");
+        add_str(&out, f->name);
+        add(&out, ",\"summary\":");
+        add_str(&out, f->summary);
+        add(&out, ",\"id\":%d,\"points\":%s,\"tree\":%s,\"motifs\":%s", (int)f->id,
+            f->needs & QC_FAMILY_NEEDS_POINTS ? "true" : "false",
+            f->needs & QC_FAMILY_NEEDS_TREE ? "true" : "false",
+            f->needs & QC_FAMILY_NEEDS_MOTIFS ? "true" : "false");
+        add(&out, ",\"defaults\":");
+        add_resolved(&out, &r);
+        add(&out, "}");
     }
-    add(&out, "}");
+    add(&out, "]");
     return finish_json(job, &out);
 }
 
@@ -334,14 +375,11 @@ int qcw_param(qcw_job *job, const char *name, double value)
 
 int qcw_seed(qcw_job *job, double hi, double lo)
 {
-    int rc;
-
     qc_clear_error(&job->ctx);
     if (!(hi >= 0.0 && hi <= 4294967295.0 && lo >= 0.0 && lo <= 4294967295.0))
         return fail(job, QC_ERANGE, "seed halves out of range%s", "");
-    rc = qc_params_set(&job->ctx, &job->params, "seed", 0.0); /* marks it given */
-    job->params.seed = ((uint64_t)hi << 32) | (uint64_t)lo;
-    return rc;
+    qc_params_set_seed(&job->params, ((uint64_t)hi << 32) | (uint64_t)lo);
+    return QC_OK;
 }
 
 int qcw_motifs(qcw_job *job, const char *names)

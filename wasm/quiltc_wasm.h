@@ -26,6 +26,11 @@ const char *qcw_version(void);
  * motif names as a JSON array of strings. */
 const char *qcw_params_json(qcw_job *job);
 const char *qcw_motifs_json(qcw_job *job);
+/* The library's families in id order (qc_family_info) as a JSON array of
+ * {name, summary, id, points, tree, motifs, defaults}: the QC_FAMILY_NEEDS_*
+ * flags as booleans, defaults as qcw_resolved_json gives them for a job
+ * with only that family set. */
+const char *qcw_families_json(qcw_job *job);
 /* Every parameter as qc_params_resolve fills it from the job's parameters
  * (lengths in mm, enums by choice name, the seed as a decimal string), as a
  * JSON object by row name; NULL (and qcw_error) if they do not resolve. */

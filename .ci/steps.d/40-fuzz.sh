@@ -15,7 +15,7 @@ make -j2 fuzz-build >/dev/null
 # not at random here); FUZZ_SECONDS caps each target on a slow machine,
 # which then runs a prefix of the same inputs.
 status=0
-for spec in pat:1500000 job:500000 svg_region:300000 motif:200000 points:150000 generate:30000; do
+for spec in pat:1500000 job:500000 svg_region:300000 motif:200000 points:150000 generate:30000 read:250000; do
     t=${spec%%:*} n=${spec#*:}
     FUZZ_FLAGS="-seed=1 -runs=${FUZZ_RUNS:-$n}" make fuzz FUZZ_TARGETS="$t" \
         FUZZ_SECONDS="${FUZZ_SECONDS:-120}" || status=1

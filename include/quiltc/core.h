@@ -27,6 +27,8 @@ extern "C" {
 
 /* The library's version string, e.g. "0.1.0". */
 const char *qc_version(void);
+/* The library's QC_VERSION_NUMBER, e.g. 100 for 0.1.0 (the header's may differ). */
+int qc_version_number(void);
 
 /* One list generates the enum, qc_strerror() and qc_err_name(). */
 #define QC_ERRNO_MAP(X)                                                   \
@@ -41,13 +43,14 @@ const char *qc_version(void);
     X(EIO, -8, "write failed")                                            \
     X(EUNSUPPORTED, -9, "not supported")                                  \
     X(EINTERSECT, -10, "self-intersecting outline")                       \
-    X(EEMPTY, -11, "nothing to work with")
+    X(EEMPTY, -11, "nothing to work with")                                \
+    X(EVERSION, -12, "header and library versions differ")
 
 enum {
 #define QC__ERR_ENUM(name, value, text) QC_##name = value,
     QC_ERRNO_MAP(QC__ERR_ENUM)
 #undef QC__ERR_ENUM
-    QC__ERR_LAST = -12
+    QC__ERR_LAST = -13
 };
 
 /* Static text for a status code ("out of memory"); unknown codes get "unknown error". */
@@ -83,12 +86,23 @@ typedef struct qc_ctx {
 } qc_ctx;
 
 /*
- * Prepares ctx. alloc == NULL selects the libc malloc wrapper
+ * Prepares ctx; returns QC_OK. alloc == NULL selects the libc malloc wrapper
  * (qc_default_alloc, in its own object file). A core built with
  * -DQC_NO_DEFAULT_ALLOC (make firmware) leaves it out: there a NULL hook
  * fails every allocation and nothing references malloc.
+ *
+ * A macro, as zlib's inflateInit: it hands the library this header's
+ * QC_VERSION_NUMBER and sizeof(qc_ctx). A library of another ABI (another
+ * major version, or another minor before 1.0: the soname's rule) or another
+ * qc_ctx size refuses with QC_EVERSION. Then, if the caller's qc_ctx is at
+ * least as large as the library's, ctx holds the status and a message naming
+ * both versions and its allocator fails every call, so later calls fail
+ * cleanly; a smaller qc_ctx is not written at all.
  */
-void qc_ctx_init(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud);
+#define qc_ctx_init(ctx, alloc, alloc_ud) \
+    qc_ctx_init_((ctx), (alloc), (alloc_ud), QC_VERSION_NUMBER, sizeof(qc_ctx))
+int qc_ctx_init_(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud, int header_version,
+                 size_t ctx_size);
 /* The libc-backed allocator used when qc_ctx_init gets NULL. */
 void *qc_default_alloc(void *ud, void *ptr, size_t old_size, size_t new_size);
 /* The detail message of the last error, or "" when none. Never NULL. */

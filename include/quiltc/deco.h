@@ -28,9 +28,14 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
 int qc_deco_pebbling(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                      const qc_skeleton *skel, const qc_motif_set *motifs,
                      qc_path *out, qc_stats *stats);
+/* Packing draws a copy of a motif per pebble: the copies may hold at most
+ * QC_MAX_PACKED_POINTS motif points, counted once the motifs are chosen,
+ * before any is drawn (QC_ELIMIT: a 60,000-vertex motif would take
+ * gigabytes). */
 int qc_deco_packing(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                     const qc_skeleton *skel, const qc_motif_set *motifs,
                     qc_path *out, qc_stats *stats);
+#define QC_MAX_PACKED_POINTS 4000000u
 /* Fixed-width fill and stippling (§7.1). */
 int qc_deco_fill(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                  const qc_skeleton *skel, const qc_motif_set *motifs,

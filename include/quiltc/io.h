@@ -63,6 +63,22 @@ int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
  * point), QC_EINVAL, QC_ENOMEM; *out is then empty. */
 int qc_io_read_pat(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out);
 
+/*
+ * Reads a pattern in any format quiltc writes into *out (zeroed first), in
+ * mm, y up, each piece's first point flagged QC_ST_JUMP (travel kept as
+ * travel where the format has it; QCC has none). PAT is the strict reader
+ * above; SVG goes through qc_io_read_svg_path and qc_stitch_plan with
+ * default parameters. QLI: VP, CR arcs, NO NEEDLE OFF/ON. DXF: POLYLINE,
+ * LWPOLYLINE (bulges), LINE, ARC, CIRCLE, ELLIPSE, SPLINE, $INSUNITS.
+ * HP-GL: PU, PD, PA, PR, IN. QCC. IQP. BQM and G-code: G0..G3 (I, J or R),
+ * G20/G21, G90/G91; G-code's pen up (Z > 0, M5) is travel. Arcs are
+ * flattened within 0.05 mm. Errors: QC_EFORMAT naming the line (IQP: the
+ * byte), QC_ERANGE (a point beyond 1e6 mm), QC_EEMPTY (nothing sewn),
+ * QC_ELIMIT (more than QC_MAX_PLAN_POINTS), QC_EINVAL, QC_ENOMEM; *out is
+ * then empty.
+ */
+int qc_io_read(qc_ctx *ctx, int format, const char *buf, size_t len, qc_plan *out);
+
 /* One finding of a linter: line (1-based; 0 = whole file), a kind
  * ("dialect", "numbering", "decimals", "line-ending") and one line of text. */
 typedef void (*qc_finding_fn)(void *ud, size_t line, const char *kind, const char *text);

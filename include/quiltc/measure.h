@@ -46,8 +46,13 @@ double qc_path_largest_gap(qc_ctx *ctx, const qc_region *region, const qc_path *
  * exact orient2d predicate. Touching, overlapping and collinear segments do
  * not count; zero-length segments are skipped. Uniform grid, about linear
  * for paths whose segments are of similar length. *count receives the
- * number. Errors: QC_EINVAL (pts or count NULL), QC_ENOMEM.
+ * number. Segments piled in one spot (a hostile file: 40,000 stitches all
+ * through one point) would make it quadratic: when the pairs sharing grid
+ * cells exceed QC_MAX_CROSSING_PAIRS it fails with QC_ELIMIT, decided
+ * after binning, before any pair is tested. Errors: QC_EINVAL (pts or count
+ * NULL), QC_ENOMEM, QC_ELIMIT.
  */
+#define QC_MAX_CROSSING_PAIRS 20000000u /* about a second of exact tests */
 int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed,
                            size_t *count);
 

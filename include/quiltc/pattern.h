@@ -15,17 +15,30 @@
 extern "C" {
 #endif
 
+/*
+ * The families, one line each: X(ID, name). The enum, the names, the
+ * dispatch and the `family` parameter's choices all come from this list;
+ * each family describes itself (qc_family_desc) in its own file,
+ * src/deco/family_NAME.c. Append new families at the end: the ids are
+ * ABI. Adding one: docs/adding-a-family.md.
+ */
+#define QC_FAMILY_MAP(X)                                                    \
+    X(VINE, vine)           /* the smoothed tree walk alone (paper §4.3) */ \
+    X(BRANCHING, branching) /* §5.1 */                                      \
+    X(WANDERER, wanderer)   /* §5.2 */                                      \
+    X(PEBBLING, pebbling)   /* §5.3.1 */                                    \
+    X(PACKING, packing)     /* §5.3.2 */                                    \
+    X(FILL, fill)           /* §7.1 fixed-width fill */                     \
+    X(STIPPLE, stipple)     /* §7.1 stippling / meander */                  \
+    X(ECHO, echo)           /* beyond the paper */                          \
+    X(SPIRAL, spiral)       /* beyond the paper */                          \
+    /* a new family: one line above this one */
+
 typedef enum qc_family {
     QC_FAMILY_DEFAULT = 0,
-    QC_FAMILY_VINE,      /* the smoothed tree walk alone (paper §4.3) */
-    QC_FAMILY_BRANCHING, /* §5.1 */
-    QC_FAMILY_WANDERER,  /* §5.2 */
-    QC_FAMILY_PEBBLING,  /* §5.3.1 */
-    QC_FAMILY_PACKING,   /* §5.3.2 */
-    QC_FAMILY_FILL,      /* §7.1 fixed-width fill */
-    QC_FAMILY_STIPPLE,   /* §7.1 stippling / meander */
-    QC_FAMILY_ECHO,
-    QC_FAMILY_SPIRAL,
+#define QC__FAMILY_ENUM(id, name) QC_FAMILY_##id,
+    QC_FAMILY_MAP(QC__FAMILY_ENUM)
+#undef QC__FAMILY_ENUM
     QC_FAMILY_COUNT
 } qc_family;
 
@@ -49,13 +62,47 @@ typedef enum qc_spiral_kind { QC_SPIRAL_DEFAULT = 0, QC_SPIRAL_ARCHIMEDEAN, QC_S
 typedef enum qc_echo_join { QC_ECHO_DEFAULT = 0, QC_ECHO_SPIRAL, QC_ECHO_RINGS } qc_echo_join;
 
 /*
+ * The parameters' stable ids: bit (1 << id) in qc_params.given and in
+ * qc_family_desc.params, whatever the table's row order. Append only.
+ */
+typedef enum qc_param_id {
+    QC_PARAM_ID_FAMILY = 0,
+    QC_PARAM_ID_POINTS,
+    QC_PARAM_ID_SKELETON,
+    QC_PARAM_ID_MST,
+    QC_PARAM_ID_TSP,
+    QC_PARAM_ID_EDGE,
+    QC_PARAM_ID_TILE,
+    QC_PARAM_ID_TIP,
+    QC_PARAM_ID_SPIRAL,
+    QC_PARAM_ID_ECHO_JOIN,
+    QC_PARAM_ID_SEED,
+    QC_PARAM_ID_SPACING,
+    QC_PARAM_ID_MARGIN,
+    QC_PARAM_ID_SIZE,
+    QC_PARAM_ID_GAP,
+    QC_PARAM_ID_ANGLE,
+    QC_PARAM_ID_TANGENT,
+    QC_PARAM_ID_R_SEED,
+    QC_PARAM_ID_WIDTH,
+    QC_PARAM_ID_TSP_TIME,
+    QC_PARAM_ID_REPEAT_COLS,
+    QC_PARAM_ID_REPEAT_ROWS,
+    QC_PARAM_ID_START_X,
+    QC_PARAM_ID_START_Y,
+    QC_PARAM_ID_COUNT /* at most 64: one bit each in qc_params.given */
+} qc_param_id;
+
+#define QC_PARAM_BIT(id) ((uint64_t)1 << (id))
+
+/*
  * Every parameter of every family. A zero field means "default" unless its
  * bit is set in `given` (see qc_params_set), so a zeroed struct is valid.
  * Lengths are millimetres, angles degrees.
  */
 typedef struct qc_params {
     uint64_t seed;
-    uint64_t given;     /* bit k: field k of the table was set explicitly */
+    uint64_t given;     /* QC_PARAM_BIT(id): parameter id was set explicitly */
     int family;         /* qc_family */
     int points;         /* qc_points_kind */
     int skeleton;       /* qc_skeleton_kind */
@@ -96,7 +143,7 @@ typedef struct qc_param_info {
     double min, max;     /* valid range (enums: 1..count) */
     double def;          /* default; for lengths 0 with def_per_spacing set */
     double def_per_spacing; /* lengths: default = this * resolved spacing */
-    uint32_t families;   /* bit (1 << qc_family) for each family it applies to */
+    qc_param_id id;      /* stable: its bit in qc_params.given */
     size_t offset;       /* offsetof(qc_params, field) */
 } qc_param_info;
 
@@ -104,6 +151,11 @@ typedef struct qc_param_info {
 const qc_param_info *qc_param_table(size_t *count);
 /* The row named name, or NULL. */
 const qc_param_info *qc_param_find(const char *name);
+/* The row with that id, or NULL. */
+const qc_param_info *qc_param_by_id(int id);
+/* The families row applies to: bit (1 << qc_family) for each (from the
+ * families' descriptors: qc_family_desc.params and .needs). */
+uint32_t qc_param_families(const qc_param_info *row);
 /* Family name <-> id ("branching" <-> QC_FAMILY_BRANCHING); unknown: -1 / NULL. */
 int qc_family_from_name(const char *name);
 const char *qc_family_name(int family);
@@ -111,6 +163,11 @@ const char *qc_family_name(int family);
 int qc_param_choice(const qc_param_info *info, const char *choice);
 /* Sets a field by name and marks it given. QC_EINVAL for an unknown name. */
 int qc_params_set(qc_ctx *ctx, qc_params *p, const char *name, double value);
+/* Sets the seed and marks it given: every 64-bit value (a double, as
+ * qc_params_set takes, holds only 53 bits). */
+void qc_params_set_seed(qc_params *p, uint64_t seed);
+/* Whether parameter id was set explicitly (its bit in p->given). */
+int qc_params_given(const qc_params *p, int id);
 /* Reads a field by its table row. */
 double qc_params_get(const qc_params *p, const qc_param_info *info);
 
@@ -168,6 +225,36 @@ typedef int (*qc_family_fn)(qc_ctx *ctx, const qc_region *region,
                             const qc_params *params, const qc_skeleton *skel,
                             const qc_motif_set *motifs, qc_path *out,
                             qc_stats *stats);
+
+/* What a family needs from qc_generate (qc_family_desc.needs). */
+#define QC_FAMILY_NEEDS_POINTS 1u /* sampled or given points; else an empty skeleton */
+#define QC_FAMILY_NEEDS_TREE   2u /* refuses a tour: the skeleton must be the tree */
+#define QC_FAMILY_NEEDS_MOTIFS 4u /* draws motifs (the motifs argument, --motif) */
+
+/*
+ * A family as the library registers it: one per src/deco/family_NAME.c.
+ * Static, never freed.
+ */
+typedef struct qc_family_desc {
+    qc_family id;
+    const char *name;    /* "stipple": the CLI's and the page's name */
+    const char *summary; /* one line, for --help and the page */
+    unsigned needs;      /* QC_FAMILY_NEEDS_* */
+    /* QC_PARAM_BIT(id) for each parameter of its own it reads; the ones
+     * every family takes (family, seed, spacing, margin, start-x/-y) and,
+     * with QC_FAMILY_NEEDS_POINTS, the skeleton's (points, skeleton, mst,
+     * tsp, tsp-time) are implied. */
+    uint64_t params;
+    qc_family_fn run;
+    /* Its own default for parameter id, from the parameters resolved so far
+     * (family and spacing always are): 1 with *value set, or 0 for the
+     * table's default. NULL: the table's defaults throughout. */
+    int (*param_default)(const qc_params *p, int id, double *value);
+} qc_family_desc;
+
+/* The i-th family (0-based, in id order: qc_family_info(i)->id == i + 1),
+ * or NULL for i >= QC_FAMILY_COUNT - 1. Loop until NULL to list them. */
+const qc_family_desc *qc_family_info(size_t i);
 
 /*
  * Generates one pattern inside region (normalized). given: points for

@@ -25,6 +25,12 @@ void qc_region_free(qc_ctx *ctx, qc_region *r);
 /* Appends a ring of n >= 3 vertices as given (a closing duplicate of the first is dropped). */
 int qc_region_add_ring(qc_ctx *ctx, qc_region *r, const qc_vec2 *pts, size_t n);
 
+/* Rings (outlines and holes) a region read from SVG or sampled may have:
+ * normalizing and sampling grow faster than linearly in them (20,000 tiny
+ * islands took 2 s, 490,000 over 120 s), and a quilt block has a handful.
+ * qc_io_read_svg_region and qc_sample refuse more with QC_ELIMIT. */
+#define QC_MAX_REGION_RINGS 10000u
+
 /*
  * Validates and orients: QC_EEMPTY (no ring), QC_ERANGE (NaN/inf or a
  * coordinate beyond 1e6 mm), QC_EDEGENERATE (zero area), QC_EINTERSECT

@@ -32,8 +32,8 @@ typedef struct qc_sample_params {
 /*
  * Samples points inside region (normalized) into *out (appended; *out may be
  * zeroed). Errors: QC_EINVAL (unknown kind), QC_ERANGE (spacing <= 0, NaN,
- * or margin < 0), QC_ELIMIT (estimated count above max_points, refused
- * before any large allocation), QC_ENOMEM. An empty result is QC_OK with
+ * or margin < 0), QC_ELIMIT (estimated count above max_points, or more than
+ * QC_MAX_REGION_RINGS rings: refused before any large allocation), QC_ENOMEM. An empty result is QC_OK with
  * out->n == 0; callers decide whether that is an error.
  */
 int qc_sample(qc_ctx *ctx, const qc_region *region, const qc_sample_params *params,

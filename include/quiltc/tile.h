@@ -32,9 +32,14 @@ int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 
  * Each copy's first point is replaced by the previous copy's last point,
  * so the joins are exact and out is one piece. A MOVE starts out only when
  * out is empty (else the first point is joined by a LINE).
+ * The copies may hold at most QC_MAX_TILED_POINTS path points, checked
+ * before anything is appended (a 100 x 100 repeat of a dense tile would
+ * take gigabytes before the stitch plan's own limit).
  * Errors: QC_EINVAL (tile empty or not one piece, cols or rows 0, or
- * dx/dy not finite), QC_ENOMEM (out keeps what was appended; free it).
+ * dx/dy not finite), QC_ELIMIT (over the budget), QC_ENOMEM (out keeps
+ * what was appended; free it).
  */
+#define QC_MAX_TILED_POINTS 4000000u /* path points of all copies: 64 MB */
 int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
                    unsigned rows, qc_path *out);
 

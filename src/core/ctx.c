@@ -8,6 +8,11 @@ const char *qc_version(void)
     return QC_VERSION_STRING;
 }
 
+int qc_version_number(void)
+{
+    return QC_VERSION_NUMBER;
+}
+
 #ifdef QC_NO_DEFAULT_ALLOC
 /* Firmware without a libc heap: a NULL hook fails every allocation, and
  * nothing links against malloc. */
@@ -24,11 +29,47 @@ static void *no_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
 #define DEFAULT_ALLOC qc_default_alloc
 #endif
 
-void qc_ctx_init(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud)
+/* A refused context's allocator: every later call fails with QC_ENOMEM
+ * rather than touching a struct of another layout. */
+static void *refused_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
 {
+    (void)ud;
+    (void)ptr;
+    (void)old_size;
+    (void)new_size;
+    return NULL;
+}
+
+/* Same ABI: the major version, and before 1.0 the minor too (the soname's rule). */
+static int same_abi(int header_version)
+{
+    int major = header_version / 10000, minor = header_version / 100 % 100;
+
+    if (header_version < 0 || major != QC_VERSION_MAJOR)
+        return 0;
+    return QC_VERSION_MAJOR != 0 || minor == QC_VERSION_MINOR;
+}
+
+int qc_ctx_init_(qc_ctx *ctx, qc_alloc_fn alloc, void *alloc_ud, int header_version,
+                 size_t ctx_size)
+{
+    if (ctx == NULL)
+        return QC_EINVAL;
+    if (same_abi(header_version) && ctx_size == sizeof *ctx) {
+        memset(ctx, 0, sizeof *ctx);
+        ctx->alloc = alloc != NULL ? alloc : DEFAULT_ALLOC;
+        ctx->alloc_ud = alloc_ud;
+        return QC_OK;
+    }
+    if (ctx_size < sizeof *ctx)
+        return QC_EVERSION; /* the caller's struct is too small to write into */
     memset(ctx, 0, sizeof *ctx);
-    ctx->alloc = alloc != NULL ? alloc : DEFAULT_ALLOC;
-    ctx->alloc_ud = alloc_ud;
+    ctx->alloc = refused_alloc;
+    return qc__fail(ctx, QC_EVERSION,
+                    "quiltc header %d.%d.%d (qc_ctx %lu bytes) does not match the library "
+                    "%s (qc_ctx %lu bytes): rebuild against the installed headers",
+                    header_version / 10000, header_version / 100 % 100, header_version % 100,
+                    (unsigned long)ctx_size, QC_VERSION_STRING, (unsigned long)sizeof *ctx);
 }
 
 void *qc__realloc(qc_ctx *ctx, void *ptr, size_t old_size, size_t new_size)

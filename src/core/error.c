@@ -40,10 +40,15 @@ int qc__fail(qc_ctx *ctx, int status, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(ctx->msg, sizeof ctx->msg, fmt, ap);
     va_end(ap);
-    /* one line, whatever the quoted input held */
-    for (p = ctx->msg; *p != '\0'; p++)
-        if ((unsigned char)*p < 0x20 || *p == 0x7f)
+    /* one line, whatever the quoted input held; no C0, DEL or UTF-8 C1
+     * control (U+0080..U+009F, such as U+009B, CSI) reaches a terminal */
+    for (p = ctx->msg; *p != '\0'; p++) {
+        unsigned char c = (unsigned char)*p, d = (unsigned char)p[1];
+        if (c < 0x20 || c == 0x7f)
             *p = ' ';
+        else if (c == 0xC2 && d >= 0x80 && d <= 0x9F)
+            p[0] = p[1] = ' ';
+    }
     return status;
 }
 

@@ -49,8 +49,12 @@ QC__HIDDEN qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n);
  * max_cells cells (bucket grids: about a constant number of items each). */
 QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 
-/* Whether the qc_params field at offset was set explicitly (qc_params_set). */
-QC__HIDDEN int qc__params_given(const qc_params *p, size_t offset);
+/* The families' descriptors, one per src/deco/family_NAME.c (QC_FAMILY_MAP). */
+#define QC__FAMILY_DECL(id, name) QC__HIDDEN extern const qc_family_desc qc__family_##name;
+QC_FAMILY_MAP(QC__FAMILY_DECL)
+#undef QC__FAMILY_DECL
+/* The descriptor of family id (a qc_family), or NULL. */
+QC__HIDDEN const qc_family_desc *qc__family(int id);
 
 /* A point from its coordinates (a C99 compound literal). */
 #define QC__V2(x, y) ((qc_vec2){(x), (y)})

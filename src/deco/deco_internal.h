@@ -12,6 +12,9 @@
 
 /* Convex hull of pts[0..n) (Andrew's monotone chain), CCW, no collinear
  * points, written to out (room for 2n); scratch holds 2n. Returns the count. */
+/* QC_ELIMIT when cols x rows copies of a tile_points-point tile exceed
+ * QC_MAX_TILED_POINTS (tile.c), before any copy is made. */
+QC__HIDDEN int qc__tile_budget(qc_ctx *ctx, size_t tile_points, unsigned cols, unsigned rows);
 QC__HIDDEN size_t qc__convex_hull(const qc_vec2 *pts, size_t n, qc_vec2 *out,
                                   qc_vec2 *scratch);
 /* Moves every edge of the CCW convex polygon h[0..n) outward by d, so a hull
@@ -178,6 +181,12 @@ typedef struct qc__outline_style {
 QC__HIDDEN int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
                                 const qc_skeleton *skel, const qc__outline_style *style,
                                 qc_path *out, qc_stats *stats);
+
+/* The parameters fill and stipple read. */
+#define QC__FILL_PARAMS                                                              \
+    (QC_PARAM_BIT(QC_PARAM_ID_TILE) | QC_PARAM_BIT(QC_PARAM_ID_TIP) |               \
+     QC_PARAM_BIT(QC_PARAM_ID_WIDTH) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) |       \
+     QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS))
 
 /* ---- tiles (tile.c) ---- */
 

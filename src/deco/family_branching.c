@@ -562,3 +562,11 @@ out_free:
     qc__btile_free(ctx, &tile);
     return rc;
 }
+
+const qc_family_desc qc__family_branching = {
+    QC_FAMILY_BRANCHING, "branching", "motifs at the branch tips and along the vine (paper §5.1)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_PARAM_BIT(QC_PARAM_ID_SIZE) | QC_PARAM_BIT(QC_PARAM_ID_GAP) |
+        QC_PARAM_BIT(QC_PARAM_ID_ANGLE) | QC_PARAM_BIT(QC_PARAM_ID_TILE) |
+        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS),
+    qc_deco_branching, NULL};

@@ -155,8 +155,10 @@ int qc__btile_layout(qc_ctx *ctx, const qc__btile *t, const qc_params *prm, cons
     unsigned rows = prm->repeat_rows >= 1.0 ? (unsigned)prm->repeat_rows : 1u;
     size_t nc = out->ncmd, np = out->npt, k;
     double lift = (double)(rows - 1) * t->dy, copies = (double)cols * rows;
-    int rc = QC_OK;
+    int rc = qc__tile_budget(ctx, tile->npt, cols, rows);
 
+    if (rc < 0)
+        return rc;
     /* room for every copy at once: no regrowth of a large path */
     if (copies * (double)tile->npt + (double)np + rows < (double)SIZE_MAX / 32) {
         size_t k2 = (size_t)cols * rows;

@@ -26,8 +26,8 @@ static qc_vec2 start_point(const qc_region *region, const qc_params *params)
 {
     qc_vec2 s;
 
-    if (qc__params_given(params, offsetof(qc_params, start_x)) ||
-        qc__params_given(params, offsetof(qc_params, start_y))) {
+    if (qc_params_given(params, QC_PARAM_ID_START_X) ||
+        qc_params_given(params, QC_PARAM_ID_START_Y)) {
         s.x = params->start_x;
         s.y = params->start_y;
     } else {
@@ -125,3 +125,7 @@ out:
     qc_path_free(ctx, &one);
     return rc;
 }
+
+const qc_family_desc qc__family_echo = {
+    QC_FAMILY_ECHO, "echo", "the outline echoed inward every d, rings joined into one path", 0,
+    QC_PARAM_BIT(QC_PARAM_ID_ECHO_JOIN), qc_deco_echo, NULL};

@@ -14,3 +14,7 @@ int qc_deco_fill(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     (void)motifs;
     return qc__fill_outline(ctx, region, params, skel, &style, out, stats);
 }
+
+const qc_family_desc qc__family_fill = {
+    QC_FAMILY_FILL, "fill", "the tree outlined at width w as one loop (paper §7.1)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_TREE, QC__FILL_PARAMS, qc_deco_fill, NULL};

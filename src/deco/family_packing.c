@@ -132,6 +132,26 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
     return QC_OK;
 }
 
+/* The motif points all copies would hold, refused over the budget before
+ * any copy is drawn. */
+static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set)
+{
+    double total = 0;
+    size_t i, most = 0;
+
+    for (i = 0; i < pb->n; i++) {
+        size_t k = set->m[pb->motif[i]].path.npt;
+        total += (double)k;
+        most = k > most ? k : most;
+    }
+    if (total > (double)QC_MAX_PACKED_POINTS)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "packing: %lu motif copies (up to %lu points each) make %.0f points, "
+                        "over the limit of %u; use a simpler motif or raise the spacing",
+                        (unsigned long)pb->n, (unsigned long)most, total, QC_MAX_PACKED_POINTS);
+    return QC_OK;
+}
+
 /* x in the unit frame of f. */
 static qc_vec2 unmap(const qc__xf *f, qc_vec2 x)
 {
@@ -314,6 +334,8 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)
+        rc = copies_budget(ctx, &pb, motifs);
+    if (rc == QC_OK)
         rc = attachments(ctx, &pb, motifs, &atts, &first);
     if (rc == QC_OK && pb.k < 1) {
         rc = render(ctx, &pb, motifs, atts, first, &raw);
@@ -348,3 +370,9 @@ int qc_deco_packing(qc_ctx *ctx, const qc_region *region, const qc_params *param
 {
     return qc__packing_run(ctx, region, params, skel, motifs, out, stats, NULL);
 }
+
+const qc_family_desc qc__family_packing = {
+    QC_FAMILY_PACKING, "packing", "pebbles replaced by motifs, one path (paper §5.3.2)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED), qc_deco_packing,
+    qc__pebble_param_default};

@@ -194,3 +194,18 @@ int qc_deco_pebbling(qc_ctx *ctx, const qc_region *region, const qc_params *para
     (void)motifs;
     return qc__pebbling_run(ctx, region, params, skel, out, stats, NULL);
 }
+
+/* Snub-square points by default: their even spacing packs the pebbles tightest. */
+int qc__pebble_param_default(const qc_params *p, int id, double *value)
+{
+    (void)p;
+    if (id != QC_PARAM_ID_POINTS)
+        return 0;
+    *value = QC_POINTS_SNUB;
+    return 1;
+}
+
+const qc_family_desc qc__family_pebbling = {
+    QC_FAMILY_PEBBLING, "pebbling", "packed circles drawn as one path (paper §5.3.1)",
+    QC_FAMILY_NEEDS_POINTS, QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED),
+    qc_deco_pebbling, qc__pebble_param_default};

@@ -405,8 +405,8 @@ static qc_vec2 centre_of(const qc_params *params, const qc__sdf *s)
 {
     qc_vec2 c;
 
-    if (qc__params_given(params, offsetof(qc_params, start_x)) ||
-        qc__params_given(params, offsetof(qc_params, start_y))) {
+    if (qc_params_given(params, QC_PARAM_ID_START_X) ||
+        qc_params_given(params, QC_PARAM_ID_START_Y)) {
         c.x = params->start_x;
         c.y = params->start_y;
     } else {
@@ -527,3 +527,7 @@ out:
     qc_points_free(ctx, &line);
     return rc;
 }
+
+const qc_family_desc qc__family_spiral = {
+    QC_FAMILY_SPIRAL, "spiral", "one spiral from the centre, kept inside by the margin's ring", 0,
+    QC_PARAM_BIT(QC_PARAM_ID_SPIRAL), qc_deco_spiral, NULL};

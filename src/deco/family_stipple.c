@@ -15,3 +15,17 @@ int qc_deco_stipple(qc_ctx *ctx, const qc_region *region, const qc_params *param
     (void)motifs;
     return qc__fill_outline(ctx, region, params, skel, &style, out, stats);
 }
+
+/* A third of the spacing wide (fill's fifth, the table's default, reads as lines). */
+static int stipple_default(const qc_params *p, int id, double *value)
+{
+    if (id != QC_PARAM_ID_WIDTH)
+        return 0;
+    *value = p->spacing / 3.0;
+    return 1;
+}
+
+const qc_family_desc qc__family_stipple = {
+    QC_FAMILY_STIPPLE, "stipple", "the tree outlined through a spline: the meander (paper §7.1)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_TREE, QC__FILL_PARAMS, qc_deco_stipple,
+    stipple_default};

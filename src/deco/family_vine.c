@@ -28,3 +28,7 @@ int qc_deco_vine(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     qc_points_free(ctx, &pts);
     return rc;
 }
+
+const qc_family_desc qc__family_vine = {
+    QC_FAMILY_VINE, "vine", "the skeleton's walk smoothed into one vine (paper §4.3)",
+    QC_FAMILY_NEEDS_POINTS, 0, qc_deco_vine, NULL};

@@ -437,3 +437,19 @@ out_free:
     qc_motif_set_free(ctx, &def);
     return rc;
 }
+
+/* A tour by default: the primitives sit on consecutive tour points. */
+static int wanderer_default(const qc_params *p, int id, double *value)
+{
+    (void)p;
+    if (id != QC_PARAM_ID_SKELETON)
+        return 0;
+    *value = QC_SKELETON_TSP;
+    return 1;
+}
+
+const qc_family_desc qc__family_wanderer = {
+    QC_FAMILY_WANDERER, "wanderer", "two-legged motifs on a tour, joined by curves (paper §5.2)",
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_PARAM_BIT(QC_PARAM_ID_SIZE) | QC_PARAM_BIT(QC_PARAM_ID_TANGENT), qc_deco_wanderer,
+    wanderer_default};

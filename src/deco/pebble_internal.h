@@ -123,4 +123,7 @@ QC__HIDDEN int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_pa
                                const qc_skeleton *skel, const qc_motif_set *motifs,
                                qc_path *out, qc_stats *stats, qc__pebbles *keep);
 
+/* Pebbling's and packing's own defaults (family_pebbling.c): snub points. */
+QC__HIDDEN int qc__pebble_param_default(const qc_params *p, int id, double *value);
+
 #endif

@@ -78,6 +78,18 @@ static int append_copy(qc_ctx *ctx, const qc_path *tile, double tx, double ty, i
     return QC_OK;
 }
 
+int qc__tile_budget(qc_ctx *ctx, size_t tile_points, unsigned cols, unsigned rows)
+{
+    double total = (double)tile_points * (double)cols * (double)rows;
+
+    if (total > (double)QC_MAX_TILED_POINTS)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "tiles: %u x %u copies of a %lu-point tile make %.0f points, over the "
+                        "limit of %u; repeat fewer tiles or raise the spacing",
+                        cols, rows, (unsigned long)tile_points, total, QC_MAX_TILED_POINTS);
+    return QC_OK;
+}
+
 int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
                    unsigned rows, qc_path *out)
 {
@@ -90,6 +102,7 @@ int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsig
         return qc__fail(ctx, QC_EINVAL, "tile repeat: %ux%u tiles", cols, rows);
     if (!isfinite(dx) || !isfinite(dy))
         return qc__fail(ctx, QC_EINVAL, "tile repeat: step (%g, %g) mm is not finite", dx, dy);
+    QC__TRY(qc__tile_budget(ctx, tile->npt, cols, rows));
     for (r = 0; r < rows; r++) {
         int rev = (int)(r & 1u);
         double ty = -(double)r * dy;

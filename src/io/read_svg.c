@@ -292,6 +292,9 @@ static int region_shape(void *ud, const qc_path *shape, unsigned flags)
     QC__TRY(ring_done(s));
     if (s->rings.n == 0)
         return QC_OK;
+    if (s->out->nrings + s->rings.n > QC_MAX_REGION_RINGS)
+        return qc__fail(s->ctx, QC_ELIMIT, "svg: the region has more than %u outlines and holes",
+                        QC_MAX_REGION_RINGS);
     QC__TRY(QC__RESERVE(s->ctx, s->keep, s->keep_cap, s->rings.n));
     if ((flags & QC__SVG_EVENODD) || s->rings.n == 1)
         memset(s->keep, 1, s->rings.n);

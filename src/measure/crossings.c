@@ -42,12 +42,21 @@ static int cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
     return (o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0);
 }
 
+/* A zero-length segment crosses nothing properly: not binned, so stitches
+ * repeated on one spot cost nothing. */
+static int zero_length(const qc_vec2 *pts, size_t n, size_t s)
+{
+    qc_vec2 a = pts[s], b = pts[(s + 1) % n];
+
+    return a.x == b.x && a.y == b.y;
+}
+
 int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed,
                            size_t *count)
 {
     xgrid g;
     size_t nseg, s, i, total = 0, found = 0;
-    double len = 0.0, w, h;
+    double len = 0.0, w, h, pairs = 0.0;
     qc_bbox box;
     int rc = QC_OK;
 
@@ -77,13 +86,27 @@ int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed
     memset(g.start, 0, (g.nx * g.ny + 1) * sizeof *g.start);
     for (s = 0; s < nseg; s++) {
         size_t r[4], x, y;
+        if (zero_length(pts, n, s))
+            continue;
         cell_range(&g, pts[s], pts[(s + 1) % n], r);
         for (y = r[1]; y <= r[3]; y++)
             for (x = r[0]; x <= r[2]; x++)
                 g.start[y * g.nx + x + 1]++;
     }
-    for (i = 0; i < g.nx * g.ny; i++)
+    for (i = 0; i < g.nx * g.ny; i++) {
+        double k = (double)g.start[i + 1];
+        pairs += k * (k - 1) / 2;
         g.start[i + 1] += g.start[i];
+    }
+    if (pairs > (double)QC_MAX_CROSSING_PAIRS) {
+        rc = qc__fail(ctx, QC_ELIMIT,
+                      "self crossings: %.0f segment pairs share grid cells (stitches piled in one "
+                      "spot), over the limit of %u",
+                      pairs, QC_MAX_CROSSING_PAIRS);
+        total = 0;
+        g.seg = NULL;
+        goto out;
+    }
     total = g.start[g.nx * g.ny];
     g.seg = qc__alloc_array(ctx, total ? total : 1, sizeof *g.seg);
     if (g.seg == NULL) {
@@ -92,6 +115,8 @@ int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed
     }
     for (s = 0; s < nseg; s++) {
         size_t r[4], x, y;
+        if (zero_length(pts, n, s))
+            continue;
         cell_range(&g, pts[s], pts[(s + 1) % n], r);
         for (y = r[1]; y <= r[3]; y++)
             for (x = r[0]; x <= r[2]; x++)

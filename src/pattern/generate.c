@@ -13,27 +13,6 @@
  * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
 #define STATS_TOL_MM 0.05
 
-static qc_family_fn family_fn(int family)
-{
-    switch (family) {
-    case QC_FAMILY_VINE: return qc_deco_vine;
-    case QC_FAMILY_BRANCHING: return qc_deco_branching;
-    case QC_FAMILY_WANDERER: return qc_deco_wanderer;
-    case QC_FAMILY_PEBBLING: return qc_deco_pebbling;
-    case QC_FAMILY_PACKING: return qc_deco_packing;
-    case QC_FAMILY_FILL: return qc_deco_fill;
-    case QC_FAMILY_STIPPLE: return qc_deco_stipple;
-    case QC_FAMILY_ECHO: return qc_deco_echo;
-    case QC_FAMILY_SPIRAL: return qc_deco_spiral;
-    default: return NULL;
-    }
-}
-
-static int needs_points(int family)
-{
-    return family != QC_FAMILY_ECHO && family != QC_FAMILY_SPIRAL;
-}
-
 static void trace(qc_ctx *ctx, const char *stage)
 {
     if (ctx->trace != NULL)
@@ -101,8 +80,8 @@ static uint32_t pick_root(const qc_region *region, const qc_params *p, const qc_
 {
     qc_vec2 start;
 
-    if (qc__params_given(p, offsetof(qc_params, start_x)) ||
-        qc__params_given(p, offsetof(qc_params, start_y))) {
+    if (qc_params_given(p, QC_PARAM_ID_START_X) ||
+        qc_params_given(p, QC_PARAM_ID_START_Y)) {
         start.x = p->start_x;
         start.y = p->start_y;
     } else {
@@ -177,22 +156,22 @@ static int run(qc_ctx *ctx, const qc_region *region, const qc_points *given,
 {
     const qc_params *p = &res->params;
     qc_skeleton skel;
-    qc_family_fn fn = family_fn(p->family);
+    const qc_family_desc *family = qc__family(p->family);
 
-    if (fn == NULL)
+    if (family == NULL)
         return qc__fail(ctx, QC_EINVAL, "unknown family %d", p->family);
     if (region == NULL || region->nrings == 0)
         return qc__fail(ctx, QC_EEMPTY, "the region has no outline");
-    if (needs_points(p->family)) {
+    if (family->needs & QC_FAMILY_NEEDS_POINTS) {
         trace(ctx, "sample");
         QC__TRY(sample_points(ctx, region, p, given, &res->points));
     }
     QC__TRY(build_skeleton(ctx, region, p, res, &skel));
     trace(ctx, "decorate");
-    QC__TRY(fn(ctx, region, p, &skel, motifs, &res->path, &res->stats));
+    QC__TRY(family->run(ctx, region, p, &skel, motifs, &res->path, &res->stats));
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
-                        qc_family_name(p->family));
+                        family->name);
     res->stats.points = res->points.n;
     res->stats.edges = res->edges.n;
     res->stats.order = res->order.n;

@@ -9,64 +9,72 @@
 
 #include "internal.h"
 
-#define FAM(f) (1u << QC_FAMILY_##f)
-#define F_ALL 0xFFFFFFFFu
-#define F_TREE (FAM(VINE) | FAM(BRANCHING) | FAM(PEBBLING) | FAM(PACKING) | FAM(FILL) | FAM(STIPPLE))
-#define F_POINTS (F_TREE | FAM(WANDERER))
-#define F_MOTIF (FAM(BRANCHING) | FAM(WANDERER))
 #define OFF(field) offsetof(qc_params, field)
+#define ID(name) QC_PARAM_ID_##name
+#define BIT(name) QC_PARAM_BIT(QC_PARAM_ID_##name)
 
-static const char family_names[] =
-    "vine|branching|wanderer|pebbling|packing|fill|stipple|echo|spiral";
+/* Parameters every family takes, and those of the skeleton (families with
+ * QC_FAMILY_NEEDS_POINTS); the rest belong to the families that list them. */
+#define P_EVERY (BIT(FAMILY) | BIT(SEED) | BIT(SPACING) | BIT(MARGIN) | BIT(START_X) | \
+                 BIT(START_Y))
+#define P_SKELETON (BIT(POINTS) | BIT(SKELETON) | BIT(MST) | BIT(TSP) | BIT(TSP_TIME))
+
+/* "|vine|branching|...": the family row's choices, after the first bar. */
+#define FAMILY_CHOICE(id, name) "|" #name
+static const char family_choices[] = QC_FAMILY_MAP(FAMILY_CHOICE);
+#undef FAMILY_CHOICE
+#define FAMILY_NAMES (family_choices + 1)
 
 static const qc_param_info table[] = {
-    {"family", "pattern family (default stipple)", "", QC_PARAM_ENUM, family_names,
-     1, QC_FAMILY_COUNT - 1, QC_FAMILY_STIPPLE, 0, F_ALL, OFF(family)},
+    {"family", "pattern family (default stipple)", "", QC_PARAM_ENUM, FAMILY_NAMES,
+     1, QC_FAMILY_COUNT - 1, QC_FAMILY_STIPPLE, 0, ID(FAMILY), OFF(family)},
     {"points", "point distribution (default: snub for pebbling/packing, else poisson)", "",
-     QC_PARAM_ENUM, "triangle|square|hex|snub|poisson|given", 1, 6, 0, 0, F_POINTS, OFF(points)},
+     QC_PARAM_ENUM, "triangle|square|hex|snub|poisson|given", 1, 6, QC_POINTS_POISSON, 0,
+     ID(POINTS),
+     OFF(points)},
     {"skeleton", "skeleton path (default: tsp for wanderer, else mst)", "", QC_PARAM_ENUM,
-     "mst|tsp", 1, 2, 0, 0, F_POINTS, OFF(skeleton)},
+     "mst|tsp", 1, 2, QC_SKELETON_MST, 0, ID(SKELETON), OFF(skeleton)},
     {"mst", "spanning tree graph", "", QC_PARAM_ENUM, "delaunay|complete", 1, 2,
-     QC_MST_DELAUNAY, 0, F_POINTS, OFF(mst)},
+     QC_MST_DELAUNAY, 0, ID(MST), OFF(mst)},
     {"tsp", "tour improvement", "", QC_PARAM_ENUM, "greedy|2opt|oropt", 1, 3,
-     QC_TSP_OROPT, 0, F_POINTS, OFF(tsp)},
+     QC_TSP_OROPT, 0, ID(TSP), OFF(tsp)},
     {"edge", "pebbles at the boundary", "", QC_PARAM_ENUM, "strict|overgrow", 1, 2,
-     QC_EDGE_STRICT, 0, FAM(PEBBLING) | FAM(PACKING), OFF(edge)},
+     QC_EDGE_STRICT, 0, ID(EDGE), OFF(edge)},
     {"tile", "repeatable tile", "", QC_PARAM_ENUM, "none|edge-to-edge|all-over", 1, 3,
-     QC_TILE_NONE, 0, FAM(FILL) | FAM(STIPPLE) | FAM(BRANCHING), OFF(tile)},
+     QC_TILE_NONE, 0, ID(TILE), OFF(tile)},
     {"tip", "decoration at branch tips", "", QC_PARAM_ENUM, "none|circle", 1, 2,
-     QC_TIP_NONE, 0, FAM(FILL) | FAM(STIPPLE), OFF(tip)},
+     QC_TIP_NONE, 0, ID(TIP), OFF(tip)},
     {"spiral", "spiral kind", "", QC_PARAM_ENUM, "archimedean|fermat", 1, 2,
-     QC_SPIRAL_ARCHIMEDEAN, 0, FAM(SPIRAL), OFF(spiral)},
+     QC_SPIRAL_ARCHIMEDEAN, 0, ID(SPIRAL), OFF(spiral)},
     {"echo-join", "how echo rings join", "", QC_PARAM_ENUM, "spiral|rings", 1, 2,
-     QC_ECHO_RINGS, 0, FAM(ECHO), OFF(echo_join)},
+     QC_ECHO_RINGS, 0, ID(ECHO_JOIN), OFF(echo_join)},
     {"seed", "random seed", "", QC_PARAM_SEED, NULL, 0, 18446744073709551615.0, 1, 0,
-     F_ALL, OFF(seed)},
+     ID(SEED), OFF(seed)},
     {"spacing", "point distance d", "mm", QC_PARAM_LENGTH, NULL, 0.5, 1000, 12.7, 0,
-     F_ALL, OFF(spacing)},
+     ID(SPACING), OFF(spacing)},
     {"margin", "distance kept from the boundary", "mm", QC_PARAM_LENGTH, NULL, 0, 1000,
-     0, 0.3, F_ALL, OFF(margin)},
-    {"size", "motif size s", "mm", QC_PARAM_LENGTH, NULL, 0.1, 1000, 0, 0.5,
-     F_MOTIF, OFF(size)},
+     0, 0.3, ID(MARGIN), OFF(margin)},
+    {"size", "motif size s", "mm", QC_PARAM_LENGTH, NULL, 0.1, 1000, 0, 0.5, ID(SIZE),
+     OFF(size)},
     {"gap", "gap l between motifs along the vine", "mm", QC_PARAM_LENGTH, NULL, 0, 1000,
-     0, 0.2, FAM(BRANCHING), OFF(gap)},
+     0, 0.2, ID(GAP), OFF(gap)},
     {"angle", "motif angle alpha to the vine", "deg", QC_PARAM_REAL, NULL, -90, 90, 45, 0,
-     FAM(BRANCHING), OFF(angle)},
+     ID(ANGLE), OFF(angle)},
     {"tangent", "tangent length l of the joins, times the join's length", "ratio",
-     QC_PARAM_REAL, NULL, 0, 2, 0.5, 0, FAM(WANDERER), OFF(tangent)},
+     QC_PARAM_REAL, NULL, 0, 2, 0.5, 0, ID(TANGENT), OFF(tangent)},
     {"r-seed", "root pebble radius, times d", "ratio", QC_PARAM_REAL, NULL, 0.5, 1, 0.7, 0,
-     FAM(PEBBLING) | FAM(PACKING), OFF(r_seed)},
+     ID(R_SEED), OFF(r_seed)},
     {"width", "fill width w (default d/5; stipple d/3)", "mm", QC_PARAM_LENGTH, NULL, 0.05,
-     1000, 0, 0.2, FAM(FILL) | FAM(STIPPLE), OFF(width)},
+     1000, 0, 0.2, ID(WIDTH), OFF(width)},
     {"tsp-time", "extra tour improvement (perturbation budget)", "ms", QC_PARAM_REAL, NULL,
-     0, 600000, 0, 0, F_POINTS, OFF(tsp_time_ms)},
-    {"repeat-cols", "tiles across", "count", QC_PARAM_INT, NULL, 1, 100, 1, 0,
-     FAM(FILL) | FAM(STIPPLE) | FAM(BRANCHING), OFF(repeat_cols)},
-    {"repeat-rows", "tiles down", "count", QC_PARAM_INT, NULL, 1, 100, 1, 0,
-     FAM(FILL) | FAM(STIPPLE) | FAM(BRANCHING), OFF(repeat_rows)},
+     0, 600000, 0, 0, ID(TSP_TIME), OFF(tsp_time_ms)},
+    {"repeat-cols", "tiles across", "count", QC_PARAM_INT, NULL, 1, 100, 1, 0, ID(REPEAT_COLS),
+     OFF(repeat_cols)},
+    {"repeat-rows", "tiles down", "count", QC_PARAM_INT, NULL, 1, 100, 1, 0, ID(REPEAT_ROWS),
+     OFF(repeat_rows)},
     {"start-x", "start near this x (the nearest point becomes the root)", "mm",
-     QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, F_ALL, OFF(start_x)},
-    {"start-y", "start near this y", "mm", QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, F_ALL,
+     QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, ID(START_X), OFF(start_x)},
+    {"start-y", "start near this y", "mm", QC_PARAM_LENGTH, NULL, -1e6, 1e6, 0, 0, ID(START_Y),
      OFF(start_y)},
 };
 
@@ -76,6 +84,34 @@ const qc_param_info *qc_param_table(size_t *count)
 {
     *count = NPARAMS;
     return table;
+}
+
+const qc_param_info *qc_param_by_id(int id)
+{
+    size_t i;
+
+    for (i = 0; i < NPARAMS; i++)
+        if ((int)table[i].id == id)
+            return &table[i];
+    return NULL;
+}
+
+uint32_t qc_param_families(const qc_param_info *row)
+{
+    uint64_t bit = QC_PARAM_BIT(row->id);
+    uint32_t mask = 0;
+    const qc_family_desc *f;
+    size_t i;
+
+    for (i = 0; (f = qc_family_info(i)) != NULL; i++) {
+        uint64_t takes = P_EVERY | f->params;
+
+        if (f->needs & QC_FAMILY_NEEDS_POINTS)
+            takes |= P_SKELETON;
+        if (takes & bit)
+            mask |= 1u << f->id;
+    }
+    return mask;
 }
 
 const qc_param_info *qc_param_find(const char *name)
@@ -114,21 +150,16 @@ int qc_param_choice(const qc_param_info *info, const char *choice)
 
 int qc_family_from_name(const char *name)
 {
-    return choice_index(family_names, name);
+    return choice_index(FAMILY_NAMES, name);
 }
 
 const char *qc_family_name(int family)
 {
-    static const char *const names[QC_FAMILY_COUNT] = {
-        "default", "vine", "branching", "wanderer", "pebbling",
-        "packing", "fill", "stipple", "echo", "spiral"};
+    const qc_family_desc *f = qc__family(family);
 
-    return family >= 0 && family < QC_FAMILY_COUNT ? names[family] : NULL;
-}
-
-static size_t row_index(const qc_param_info *info)
-{
-    return (size_t)(info - table);
+    if (family == QC_FAMILY_DEFAULT)
+        return "default";
+    return f != NULL ? f->name : NULL;
 }
 
 double qc_params_get(const qc_params *p, const qc_param_info *info)
@@ -181,13 +212,24 @@ int qc_params_set(qc_ctx *ctx, qc_params *p, const char *name, double value)
         return qc__fail(ctx, QC_EINVAL, "%s %g is not one of %s", info->name, value,
                         info->choices);
     put(p, info, value);
-    p->given |= (uint64_t)1 << row_index(info);
+    p->given |= QC_PARAM_BIT(info->id);
     return QC_OK;
+}
+
+void qc_params_set_seed(qc_params *p, uint64_t seed)
+{
+    p->seed = seed;
+    p->given |= BIT(SEED);
+}
+
+int qc_params_given(const qc_params *p, int id)
+{
+    return id >= 0 && id < QC_PARAM_ID_COUNT && ((p->given >> id) & 1) != 0;
 }
 
 static int is_given(const qc_params *p, const qc_param_info *info)
 {
-    return (p->given >> row_index(info)) & 1;
+    return qc_params_given(p, (int)info->id);
 }
 
 static int check_range(qc_ctx *ctx, const qc_param_info *info, double v)
@@ -206,30 +248,18 @@ static int check_range(qc_ctx *ctx, const qc_param_info *info, double v)
     return QC_OK;
 }
 
-/* Defaults that depend on the family or on other parameters. */
+/* Defaults: the family's own (its descriptor's param_default), else the
+ * table's, which may scale with the spacing. */
 static double family_default(const qc_params *p, const qc_param_info *info)
 {
-    if (info->offset == OFF(points))
-        return p->family == QC_FAMILY_PEBBLING || p->family == QC_FAMILY_PACKING
-                   ? QC_POINTS_SNUB
-                   : QC_POINTS_POISSON;
-    if (info->offset == OFF(skeleton))
-        return p->family == QC_FAMILY_WANDERER ? QC_SKELETON_TSP : QC_SKELETON_MST;
-    if (info->offset == OFF(width) && p->family == QC_FAMILY_STIPPLE)
-        return p->spacing / 3.0;
+    const qc_family_desc *f = qc__family(p->family);
+    double v;
+
+    if (f != NULL && f->param_default != NULL && f->param_default(p, (int)info->id, &v))
+        return v;
     if (info->def_per_spacing != 0.0)
         return info->def_per_spacing * p->spacing;
     return info->def;
-}
-
-int qc__params_given(const qc_params *p, size_t offset)
-{
-    size_t i;
-
-    for (i = 0; i < NPARAMS; i++)
-        if (table[i].offset == offset)
-            return is_given(p, &table[i]);
-    return 0;
 }
 
 int qc_params_resolve(qc_ctx *ctx, const qc_params *in, qc_params *out)
@@ -242,7 +272,7 @@ int qc_params_resolve(qc_ctx *ctx, const qc_params *in, qc_params *out)
     for (pass = 0; pass < 2; pass++) {
         for (i = 0; i < NPARAMS; i++) {
             const qc_param_info *info = &table[i];
-            int early = info->offset == OFF(family) || info->offset == OFF(spacing);
+            int early = info->id == ID(FAMILY) || info->id == ID(SPACING);
 
             if (early != (pass == 0))
                 continue;

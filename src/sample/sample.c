@@ -39,6 +39,10 @@ static int check_request(qc_ctx *ctx, const qc_region *region, const qc_sample_p
     if (!(sp->margin >= 0.0) || !(sp->margin < 1e6))
         return qc__fail(ctx, QC_ERANGE, "margin %g mm must be zero or more and finite",
                         sp->margin);
+    if (region->nrings > QC_MAX_REGION_RINGS)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "the region has %lu outlines and holes, over the limit of %u",
+                        (unsigned long)region->nrings, QC_MAX_REGION_RINGS);
     est = qc_sample_estimate(region, sp);
     if (est > (double)limit)
         return qc__fail(ctx, QC_ELIMIT,

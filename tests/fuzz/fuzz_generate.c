@@ -67,8 +67,7 @@ static int make_region(qc_ctx *ctx, fuzz_in *in, qc_region *r)
 
 /* Writes row's field directly (the table's ranges are not checked here:
  * qc_generate must refuse what is out of range). */
-static void set_field(qc_ctx *ctx, qc_params *p, size_t row, const qc_param_info *info,
-                      fuzz_in *in)
+static void set_field(qc_ctx *ctx, qc_params *p, const qc_param_info *info, fuzz_in *in)
 {
     char *base = (char *)p + info->offset;
     unsigned how = fuzz_u8(in);
@@ -93,15 +92,14 @@ static void set_field(qc_ctx *ctx, qc_params *p, size_t row, const qc_param_info
             v = floor(v);
         memcpy(base, &v, sizeof v);
     }
-    p->given |= (uint64_t)1 << row;
+    p->given |= QC_PARAM_BIT(info->id);
 }
 
 static int fuzz_given(const qc_params *p, const char *name)
 {
-    size_t nrows;
-    const qc_param_info *t = qc_param_table(&nrows), *row = qc_param_find(name);
+    const qc_param_info *row = qc_param_find(name);
 
-    return row != NULL && ((p->given >> (size_t)(row - t)) & 1) != 0;
+    return row != NULL && qc_params_given(p, (int)row->id);
 }
 
 /* Legal but slow requests scaled down; 0 when the run should stop here. */
@@ -221,11 +219,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         goto out;
     memset(&p, 0, sizeof p);
     p.family = 1 + (int)(fuzz_u8(&in) % (QC_FAMILY_COUNT - 1));
-    p.given = 1; /* the family row */
+    p.given = QC_PARAM_BIT(QC_PARAM_ID_FAMILY);
     nset = fuzz_u8(&in) % 8;
     for (k = 0; k < nset; k++) {
         size_t row = fuzz_u8(&in) % nrows;
-        set_field(&ctx, &p, row, &table[row], &in);
+        set_field(&ctx, &p, &table[row], &in);
     }
     if (qc_params_resolve(&ctx, &p, &resolved) == QC_OK) {
         if (!affordable(&region, &p, &resolved))
@@ -246,7 +244,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fputc('\n', stderr);
         }
         for (k = 0; k < nrows; k++)
-            if ((p.given >> k) & 1)
+            if (qc_params_given(&p, (int)table[k].id))
                 fprintf(stderr, "  %s = %.17g\n", table[k].name, qc_params_get(&p, &table[k]));
         fprintf(stderr, "given points %lu, fail_at %lu\n", (unsigned long)given.n,
                 (unsigned long)a.t.fail_at);

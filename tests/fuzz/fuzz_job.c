@@ -1,5 +1,6 @@
 /*
- * Fuzz target: a quilt job file, as `quiltc job` reads it: cJSON's parser,
+ * Fuzz target: a quilt job file, as `quiltc job` reads it: cJSON's parser
+ * read strictly (cli/json_strict.c: duplicate keys, trailing text, depth),
  * then the job's own validation (cli_job_parse of cli/job_parse.c: keys,
  * units, tie, outputs, blocks, params) and, per block, the parameter
  * conversion and range check (cli_pattern_finish) and, for built-in
@@ -46,6 +47,21 @@ static void validate(job *j)
     }
 }
 
+/* The job text as quiltc reads it: NUL-terminated, then strictly. */
+static cJSON *fuzz_job_text(const uint8_t *data, size_t size)
+{
+    char *s = malloc(size + 1);
+    cJSON *root;
+
+    if (s == NULL)
+        return NULL;
+    memcpy(s, data, size);
+    s[size] = '\0';
+    root = cli_json_parse(s, size, "fuzz.json");
+    free(s);
+    return root;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     cJSON *root;
@@ -55,7 +71,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (size > MAX_JOB_BYTES)
         return 0;
     memset(&j, 0, sizeof j);
-    root = cJSON_ParseWithLength((const char *)data, size);
+    root = fuzz_job_text(data, size);
     if (root != NULL) {
         rc = cli_job_parse(&j, root);
         FUZZ_CHECK(rc == CLI_OK || rc == CLI_USAGE, "cli_job_parse status");

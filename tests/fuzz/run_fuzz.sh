@@ -27,7 +27,7 @@ for t in "$@"; do
     case $t in
         svg_region) set -- "$@" -max_len=16384 ;;
         motif) set -- "$@" -max_len=8192 ;;
-        pat|points) set -- "$@" -max_len=8192 ;;
+        pat|points|read) set -- "$@" -max_len=8192 ;;
         generate) set -- "$@" -max_len=512 ;;
         job) set -- "$@" -max_len=4096 -close_fd_mask=2 ;;
     esac

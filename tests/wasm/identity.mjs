@@ -31,7 +31,7 @@ const native = path.join(BUILD, 'tests/qcw_native');
 const nativeReady = fs.existsSync(native);
 
 // ---- the corpus ----
-const FAMILIES = ['vine', 'branching', 'wanderer', 'pebbling', 'packing', 'fill', 'stipple', 'echo', 'spiral'];
+const FAMILIES = api.families().map((f) => f.name); // the library's list (qc_family_info)
 const SHAPES = [
   { region: 'rect:8x8', units: 'in' },
   { region: 'heart:180', units: 'mm' },

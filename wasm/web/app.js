@@ -16,6 +16,7 @@ const MM_PER = { in: 25.4, mm: 1 };
 
 const worker = new Worker(new URL('worker.js', import.meta.url), { type: 'module' });
 let table = [];
+let families = []; // the library's, with their needs and defaults (qc_family_info)
 let regionSvg = null; // { name, text }
 let motifSvg = null; // { name, svg }
 let latest = null;
@@ -35,6 +36,7 @@ worker.onmessage = (e) => {
   const m = e.data;
   if (m.type === 'ready') {
     table = m.params;
+    families = m.families;
     $('version').textContent = `library ${m.version}`;
     buildFamilies();
     buildParams();
@@ -60,12 +62,13 @@ const units = () => $('units').value;
 const mmPerUnit = () => MM_PER[units()];
 const fmt = (v, digits = 6) => String(+Number(v).toPrecision(digits));
 const familyRow = () => table.find((r) => r.name === 'family');
-const familyBit = () => 2 ** (familyRow().choices.split('|').indexOf($('family').value) + 1);
+const family = () => families.find((f) => f.name === $('family').value);
+const familyBit = () => 2 ** family().id;
 
 function buildFamilies() {
-  const fam = familyRow();
-  $('family').innerHTML = fam.choices.split('|')
-    .map((n, i) => `<option value="${n}"${i + 1 === fam.def ? ' selected' : ''}>${n}</option>`).join('');
+  const def = familyRow().def;
+  $('family').innerHTML = families
+    .map((f) => `<option value="${f.name}" title="${f.summary}"${f.id === def ? ' selected' : ''}>${f.name}</option>`).join('');
 }
 
 function unitLabel(row) {
@@ -88,8 +91,8 @@ function buildParams() {
     if (row.type === 'enum') {
       input = document.createElement('select');
       const choices = row.choices.split('|').filter((c) => c !== 'given');
-      const def = row.def ? row.choices.split('|')[row.def - 1] : 'default';
-      input.innerHTML = `<option value="">${def === 'default' ? 'default' : `default (${def})`}</option>` +
+      const def = family().defaults[row.name]; // this family's own default, as the library resolves it
+      input.innerHTML = `<option value="">${def ? `default (${def})` : 'default'}</option>` +
         choices.map((c) => `<option value="${c}">${c}</option>`).join('');
     } else {
       input = document.createElement('input');
@@ -114,9 +117,8 @@ function buildParams() {
   $('motifBox').hidden = !takesMotifs();
 }
 
-// The families that take motifs (docs/motifs.md): Branching, Wanderer, Shape Packing.
-const MOTIF_FAMILIES = ['branching', 'wanderer', 'packing'];
-const takesMotifs = () => MOTIF_FAMILIES.includes($('family').value);
+// The families that draw motifs (docs/motifs.md), as the library says (QC_FAMILY_NEEDS_MOTIFS).
+const takesMotifs = () => family().motifs;
 
 function buildMotifs(names) {
   $('motifList').innerHTML = names.map((n) =>

@@ -44,6 +44,9 @@ export class Quiltc {
 
   motifNames() { return this.json(this.m._qcw_motifs_json(this.job)); }
 
+  // The library's families (qc_family_info): [{ name, summary, id, points, tree, motifs, defaults }].
+  families() { return this.json(this.m._qcw_families_json(this.job)); }
+
   // The parameters as the library resolves them (defaults filled in): { name: value },
   // lengths in mm, enums by choice name, the seed as a decimal string.
   resolved() {

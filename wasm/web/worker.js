@@ -10,7 +10,8 @@ let api = null;
 const ready = createQuiltc().then(
   (m) => {
     api = new Quiltc(m);
-    postMessage({ type: 'ready', version: api.version(), params: api.params(), motifs: api.motifNames() });
+    postMessage({ type: 'ready', version: api.version(), params: api.params(), families: api.families(),
+      motifs: api.motifNames() });
   },
   (err) => postMessage({ type: 'fatal', message: `the WebAssembly module did not load: ${err.message || err}` }),
 );
