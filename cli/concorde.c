@@ -311,33 +311,19 @@ int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region 
     return rc;
 }
 
-static qc_family_fn tour_family(int family)
-{
-    switch (family) {
-    case QC_FAMILY_VINE: return qc_deco_vine;
-    case QC_FAMILY_BRANCHING: return qc_deco_branching;
-    case QC_FAMILY_WANDERER: return qc_deco_wanderer;
-    case QC_FAMILY_PEBBLING: return qc_deco_pebbling;
-    case QC_FAMILY_PACKING: return qc_deco_packing;
-    case QC_FAMILY_FILL: return qc_deco_fill;
-    case QC_FAMILY_STIPPLE: return qc_deco_stipple;
-    default: return NULL; /* echo and spiral have no points */
-    }
-}
-
 int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region *region,
                           const qc_points *given, const qc_motif_set *motifs, qc_result *res)
 {
     qc_params p = *params, r;
+    const qc_family_desc *fam;
     qc_skeleton sk;
     qc_order tour = {0};
-    qc_family_fn fn;
     int rc;
 
     if (qc_params_resolve(ctx, params, &r) < 0)
         return cli_fail(ctx, "generate", ctx->status);
-    fn = tour_family(r.family);
-    if (fn == NULL) {
+    fam = qc_family_info((size_t)r.family - 1);
+    if (fam == NULL || !(fam->needs & QC_FAMILY_NEEDS_POINTS)) {
         cli_error("--tsp concorde: the %s family has no points to tour", qc_family_name(r.family));
         return CLI_USAGE;
     }
@@ -369,7 +355,7 @@ int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region 
     sk.root = res->order.i[0];
     qc_path_free(ctx, &res->path);
     memset(&res->stats, 0, sizeof res->stats);
-    if (fn(ctx, region, &res->params, &sk, motifs, &res->path, &res->stats) < 0)
+    if (fam->run(ctx, region, &res->params, &sk, motifs, &res->path, &res->stats) < 0)
         return cli_fail(ctx, "generate", ctx->status);
     res->stats.points = res->points.n;
     res->stats.edges = res->edges.n;
