@@ -335,7 +335,7 @@ int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region 
     if (!have_concorde())
         return CLI_RUNTIME;
     /* the built-in tour is replaced: its cheapest, then the family again */
-    qc_params_set(ctx, &p, "tsp", QC_TSP_GREEDY);
+    qc_params_set(ctx, &p, "tsp", QC_TSP_METHOD_GREEDY);
     qc_params_set(ctx, &p, "tsp-time", 0);
     if (qc_generate(ctx, region, &p, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
