@@ -155,7 +155,7 @@ lint: $(BUILD)/libquiltc.a
 bench: $(BUILD)/libquiltc.a
 	@mkdir -p $(BUILD)/bench
 	$(CC) $(BASE_CFLAGS) -O2 -D_POSIX_C_SOURCE=200809L -Isrc/core $(LDFLAGS) -o $(BUILD)/bench/quiltc-bench $(BENCH_SRC) $(BUILD)/libquiltc.a $(LIBM)
-	$(BUILD)/bench/quiltc-bench
+	$(BUILD)/bench/quiltc-bench $(BENCH_ONLY)
 
 quiltc.pc: quiltc.pc.in Makefile
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(shell sed -n 's/^#define QC_VERSION_STRING "\(.*\)"/\1/p' include/quiltc/core.h)|' $< > $@

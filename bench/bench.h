@@ -7,6 +7,7 @@
 #include "quiltc.h"
 
 void bench_graph(void);
+void bench_lattice(void);
 void bench_tour(void);
 void bench_pebbling(void);
 void bench_families(void);
@@ -21,6 +22,8 @@ void *bench_meter_alloc(void *ud, void *ptr, size_t old_size, size_t new_size);
 
 /* Monotonic seconds. */
 double bench_now(void);
+/* CPU seconds of the process (what a shared machine's load disturbs least). */
+double bench_cpu(void);
 /* Peak resident set of the process so far, bytes. */
 size_t bench_peak_rss(void);
 /* n uniform points in [0, side)^2 from seed (malloc'ed; NULL on failure). */

@@ -122,7 +122,7 @@ static void tsplib(void)
 {
     size_t len;
     char *list = slurp(TSPLIB_DIR "optima.txt", &len), *line, *save = NULL;
-    double sum[4] = {0, 0, 0, 0};
+    double sum[4] = {0, 0, 0, 0}, fl1577 = -1, tdefault = 0;
     int count = 0;
 
     if (list == NULL) {
@@ -162,6 +162,9 @@ static void tsplib(void)
             sum[k] += gap[k];
         }
         count++;
+        tdefault += t[2];
+        if (strcmp(name, "fl1577") == 0)
+            fl1577 = gap[2];
         printf("%-9s n=%-6lu greedy %6.2f%% %7.2f ms  2-opt %5.2f%% %7.2f ms  Or-opt %5.2f%% "
                "%7.2f ms  +%d kicks %5.2f%% %7.2f ms\n",
                name, (unsigned long)pts.n, gap[0], t[0] * 1e3, gap[1], t[1] * 1e3, gap[2],
@@ -172,6 +175,10 @@ static void tsplib(void)
         printf("tsplib mean of %d: greedy %.2f%%  2-opt %.2f%%  Or-opt %.2f%%  +%d kicks "
                "%.2f%%\n",
                count, sum[0] / count, sum[1] / count, sum[2] / count, KICKS, sum[3] / count);
+    if (count > 0) /* issue 21's goals for the default tour */
+        printf("tsplib default (Or-opt): mean %.2f%% (goal <= 2%%), fl1577 %.2f%% (goal <= 5%%), "
+               "%.1f ms for the %d (a better default may take <= 3x)\n",
+               sum[2] / count, fl1577, tdefault * 1e3, count);
     free(list);
 }
 

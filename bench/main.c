@@ -1,13 +1,29 @@
-/* quiltc-bench: each stage's timings, briefly (the machine is shared). */
+/* quiltc-bench: each stage's timings, briefly (the machine is shared).
+ * With arguments, only the sections named (graph lattice tour pebbling
+ * families), e.g. `build/bench/quiltc-bench lattice`. */
+#include <string.h>
+
 #include "bench.h"
 
-int main(void)
+static const struct {
+    const char *name;
+    void (*run)(void);
+} sections[] = {{"graph", bench_graph},       {"lattice", bench_lattice},
+                {"tour", bench_tour},         {"pebbling", bench_pebbling},
+                {"families", bench_families}, {"meander", bench_meander},
+                {"quilt", bench_quilt}};
+
+int main(int argc, char **argv)
 {
-    bench_graph();
-    bench_tour();
-    bench_pebbling();
-    bench_families();
-    bench_meander();
-    bench_quilt();
+    size_t k;
+    int i;
+
+    for (k = 0; k < sizeof sections / sizeof *sections; k++) {
+        int want = argc < 2;
+        for (i = 1; i < argc; i++)
+            want |= strcmp(argv[i], sections[k].name) == 0;
+        if (want)
+            sections[k].run();
+    }
     return 0;
 }

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "concorde.h"
 #include "stats_json.h"
 
 typedef struct gen_opts {
@@ -12,7 +13,7 @@ typedef struct gen_opts {
     size_t nout;
     const char *format;
     const char *upload;
-    int stats, quiet, tie;
+    int stats, quiet, tie, concorde;
     double feed;
 } gen_opts;
 
@@ -31,6 +32,7 @@ static void usage(FILE *f, const char *family)
           "  --feed MM_PER_MIN        G-code feed rate (default 1500)\n"
           "  --stats                  one JSON object of figures on stderr\n"
           "  --upload DEVICE          send the first output to a machine (VID:PID or BUS-PORT)\n"
+          "  --tsp concorde           tour skeletons: the tour of a concorde program on PATH\n"
           "  -q, --quiet              no progress output\n",
           f);
     if (fam <= 0) {
@@ -59,6 +61,7 @@ static int parse(int argc, char **argv, gen_opts *g)
     struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
     int c, rc = CLI_OK, help = 0;
     unsigned long long tie;
+    size_t n_rows;
 
     if (opts == NULL) {
         cli_error("out of memory");
@@ -95,7 +98,10 @@ static int parse(int argc, char **argv, gen_opts *g)
             break;
         case 'h': help = 1; break;
         default:
-            if (!cli_pattern_take(&g->pat, c, optarg)) {
+            if (c == CLI_PARAM_BASE + (int)(qc_param_find("tsp") - qc_param_table(&n_rows)) &&
+                strcmp(optarg, "concorde") == 0)
+                g->concorde = 1; /* the program, not a built-in method */
+            else if (!cli_pattern_take(&g->pat, c, optarg)) {
                 cli_bad_option("generate", argv[optind - 1], c);
                 rc = CLI_USAGE;
             }
@@ -146,7 +152,11 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
 {
     qc_stitch_params sp;
 
-    if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
+    if (g->concorde) {
+        int rc = cli_concorde_generate(ctx, &g->pat.params, region, given, motifs, res);
+        if (rc != CLI_OK)
+            return rc;
+    } else if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
     cli_timer_mark(timer, "plan");
     memset(&sp, 0, sizeof sp);

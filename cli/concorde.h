@@ -9,4 +9,10 @@
 int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region *region,
                           const qc_points *given, qc_result *res);
 
+/* qc_generate of params with the tour concorde's (families on a tour
+ * skeleton: wanderer, or --skeleton tsp): the built-in tour is replaced
+ * before the family decorates. CLI_* status. */
+int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region *region,
+                          const qc_points *given, const qc_motif_set *motifs, qc_result *res);
+
 #endif

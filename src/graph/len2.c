@@ -62,14 +62,25 @@ static int64_t ifloat_at(const ifloat *f, int e)
 }
 
 /* a * b as hi * 2^64 + lo. */
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef unsigned __int128 qc__u128; /* one multiply where the compiler has it */
+#endif
+
 static void mul_64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 {
+#if defined(__SIZEOF_INT128__)
+    qc__u128 r = (qc__u128)a * b;
+
+    *hi = (uint64_t)(r >> 64);
+    *lo = (uint64_t)r;
+#else
     uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
     uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
     uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
 
     *lo = (mid << 32) | (p00 & 0xffffffffu);
     *hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+#endif
 }
 
 /* dx^2 + dy^2 for integer differences below 2^63 in magnitude. */
@@ -85,29 +96,170 @@ static void len2_u128(int64_t dx, int64_t dy, uint64_t *hi, uint64_t *lo)
     *hi += h2 + (*lo < l2);
 }
 
-int qc__int_span_add(double x, int *lo, int *hi)
-{
-    ifloat f;
+/* ---- exact keys: 256 bits at a group's scale ---- */
 
-    if (!ifloat_of(x, &f))
-        return 0;
-    if (f.m != 0) {
-        *lo = f.e < *lo ? f.e : *lo;
-        *hi = f.e > *hi ? f.e : *hi;
+/* A 128-bit magnitude. */
+typedef struct u128 {
+    uint64_t hi, lo;
+} u128;
+
+static u128 u128_shl(uint64_t m, unsigned s) /* m << s, for s < 128 - bitlen(m) */
+{
+    u128 r;
+
+    r.hi = s == 0 ? 0 : s < 64 ? m >> (64 - s) : m << (s - 64);
+    r.lo = s < 64 ? m << s : 0;
+    return r;
+}
+
+static u128 u128_shl2(u128 x, unsigned s) /* x << s, no bit lost (caller checks) */
+{
+    if (s >= 64) {
+        x.hi = x.lo << (s - 64);
+        x.lo = 0;
+    } else if (s > 0) {
+        x.hi = x.hi << s | x.lo >> (64 - s);
+        x.lo <<= s;
     }
+    return x;
+}
+
+static int u128_less(u128 a, u128 b)
+{
+    return a.hi != b.hi ? a.hi < b.hi : a.lo < b.lo;
+}
+
+static u128 u128_add(u128 a, u128 b)
+{
+    a.lo += b.lo;
+    a.hi += b.hi + (a.lo < b.lo);
+    return a;
+}
+
+static u128 u128_sub(u128 a, u128 b) /* a >= b */
+{
+    u128 r;
+
+    r.lo = a.lo - b.lo;
+    r.hi = a.hi - b.hi - (a.lo < b.lo);
+    return r;
+}
+
+static unsigned bitlen64(uint64_t x)
+{
+#if defined(__GNUC__)
+    return x == 0 ? 0 : 64 - (unsigned)__builtin_clzll(x);
+#else
+    unsigned n = 0;
+
+    if (x >> 32)
+        n += 32, x >>= 32;
+    if (x >> 16)
+        n += 16, x >>= 16;
+    if (x >> 8)
+        n += 8, x >>= 8;
+    if (x >> 4)
+        n += 4, x >>= 4;
+    if (x >> 2)
+        n += 2, x >>= 2;
+    if (x >> 1)
+        n += 1, x >>= 1;
+    return n + (unsigned)x;
+#endif
+}
+
+static unsigned u128_bitlen(u128 x)
+{
+    return x.hi != 0 ? 64 + bitlen64(x.hi) : bitlen64(x.lo);
+}
+
+/* |x - y| exactly as an integer *d times 2^*e (*e the lower exponent of
+ * x and y, *d zero when x == y); 0 if the exponents lie too far apart for
+ * 128 bits, or a value is not finite. */
+static int diff_int(double x, double y, u128 *d, int *e)
+{
+    ifloat fx, fy;
+    u128 X, Y;
+
+    if (!ifloat_of(x, &fx) || !ifloat_of(y, &fy))
+        return 0;
+    d->hi = d->lo = 0;
+    *e = 0;
+    if (fx.m == 0 && fy.m == 0)
+        return 1;
+    *e = fx.m == 0 ? fy.e : fy.m == 0 ? fx.e : fx.e < fy.e ? fx.e : fy.e;
+    if ((fx.m != 0 && fx.e - *e > 74) || (fy.m != 0 && fy.e - *e > 74))
+        return 0; /* a 53-bit mantissa shifted past 127 bits */
+    X = u128_shl(fx.m, fx.m != 0 ? (unsigned)(fx.e - *e) : 0);
+    Y = u128_shl(fy.m, fy.m != 0 ? (unsigned)(fy.e - *e) : 0);
+    if (fx.neg != fy.neg)
+        *d = u128_add(X, Y);
+    else
+        *d = u128_less(X, Y) ? u128_sub(Y, X) : u128_sub(X, Y);
     return 1;
 }
 
-void qc__len2_int(qc_vec2 a, qc_vec2 b, int e, uint64_t *hi, uint64_t *lo)
+/* Lowers *e to the exponent of x's last mantissa bit (x nonzero). */
+static void scale_of(double x, int *e)
 {
-    ifloat f[4];
+    ifloat f;
 
-    ifloat_of(a.x, &f[0]);
-    ifloat_of(a.y, &f[1]);
-    ifloat_of(b.x, &f[2]);
-    ifloat_of(b.y, &f[3]);
-    len2_u128(ifloat_at(&f[0], e) - ifloat_at(&f[2], e), ifloat_at(&f[1], e) - ifloat_at(&f[3], e),
-              hi, lo);
+    if (ifloat_of(x, &f) && f.m != 0 && f.e < *e)
+        *e = f.e;
+}
+
+void qc__len2_key_scale(qc_vec2 a, qc_vec2 b, int *e)
+{
+    scale_of(a.x, e);
+    scale_of(a.y, e);
+    scale_of(b.x, e);
+    scale_of(b.y, e);
+}
+
+/* x^2 for x < 2^126, as w[0] 2^192 + w[1] 2^128 + w[2] 2^64 + w[3]. */
+static void square_256(u128 x, uint64_t w[4])
+{
+    uint64_t hh, hl, mh, ml, lh, ll, c, carry;
+
+    mul_64(x.hi, x.hi, &hh, &hl);
+    mul_64(x.hi, x.lo, &mh, &ml);
+    mul_64(x.lo, x.lo, &lh, &ll);
+    /* 2 x.hi x.lo < 2^190: doubled without overflow */
+    mh = mh << 1 | ml >> 63;
+    ml <<= 1;
+    w[3] = ll;
+    w[2] = lh + ml;
+    c = w[2] < ml;
+    w[1] = hl + mh;
+    carry = w[1] < mh;
+    w[1] += c;
+    carry += w[1] < c;
+    w[0] = hh + carry;
+}
+
+int qc__len2_key(qc_vec2 a, qc_vec2 b, int e, uint64_t key[4])
+{
+    uint64_t sq[4], c = 0;
+    u128 d;
+    int k, i, de;
+
+    key[0] = key[1] = key[2] = key[3] = 0;
+    for (k = 0; k < 2; k++) {
+        if (!diff_int(k ? a.y : a.x, k ? b.y : b.x, &d, &de))
+            return 0;
+        if (d.hi == 0 && d.lo == 0)
+            continue;
+        if (de < e || u128_bitlen(d) + (unsigned)(de - e) > 126)
+            return 0; /* not an integer at 2^e, or too wide */
+        square_256(u128_shl2(d, (unsigned)(de - e)), sq);
+        for (i = 3, c = 0; i >= 0; i--) { /* two squares below 2^252: no carry out */
+            uint64_t s = key[i] + sq[i];
+            uint64_t c2 = s < sq[i];
+            key[i] = s + c;
+            c = c2 + (key[i] < c);
+        }
+    }
+    return 1;
 }
 
 /* ---- big integers: any exponents ---- */

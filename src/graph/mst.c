@@ -7,28 +7,10 @@
  * O(n^2) Prim over the complete graph (the paper's complete graph without
  * its n^2/2 edge list: 20000 points would need 3 GB for Kruskal).
  */
-#include <limits.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "graph_delaunay.h"
 
 #define COMPLETE_MAX 20000
-
-static double len2(const qc_vec2 *p, uint32_t a, uint32_t b)
-{
-    double dx = p[a].x - p[b].x, dy = p[a].y - p[b].y;
-
-    return dx * dx + dy * dy;
-}
-
-static uint64_t len_key(double l)
-{
-    uint64_t u;
-
-    memcpy(&u, &l, sizeof u); /* l >= +0: the bits order like the values */
-    return u;
-}
 
 /* (|a1 b1|, a1, b1) < (|a2 b2|, a2, b2) with a < b in each; lengths exact. */
 static int before(const qc_vec2 *p, uint32_t a1, uint32_t b1, uint32_t a2, uint32_t b2)
@@ -38,152 +20,6 @@ static int before(const qc_vec2 *p, uint32_t a1, uint32_t b1, uint32_t a2, uint3
     if (c != 0)
         return c < 0;
     return a1 != a2 ? a1 < a2 : b1 < b2;
-}
-
-static int edge_before(const qc_vec2 *p, qc_edge x, qc_edge y)
-{
-    return before(p, x.a, x.b, y.a, y.b);
-}
-
-static void sift(const qc_vec2 *p, qc_edge *e, size_t i, size_t m)
-{
-    for (;;) {
-        size_t c = 2 * i + 1;
-        qc_edge t;
-
-        if (c >= m)
-            return;
-        if (c + 1 < m && edge_before(p, e[c], e[c + 1]))
-            c++;
-        if (!edge_before(p, e[i], e[c]))
-            return;
-        t = e[i], e[i] = e[c], e[c] = t;
-        i = c;
-    }
-}
-
-/* Sorts a run of edges in place by the total order (no allocation). */
-static void sort_run(const qc_vec2 *p, qc_edge *e, size_t m)
-{
-    size_t i, j;
-
-    if (m <= 24) {
-        for (i = 1; i < m; i++) {
-            qc_edge x = e[i];
-            for (j = i; j > 0 && edge_before(p, x, e[j - 1]); j--)
-                e[j] = e[j - 1];
-            e[j] = x;
-        }
-        return;
-    }
-    for (i = m / 2; i-- > 0;)
-        sift(p, e, i, m);
-    for (i = m; i-- > 1;) {
-        qc_edge t = e[0];
-        e[0] = e[i], e[i] = t;
-        sift(p, e, 0, i);
-    }
-}
-
-/* An edge with its exact squared length in integers (qc__len2_int). */
-typedef struct int_key {
-    uint64_t hi, lo;
-    qc_edge e;
-} int_key;
-
-static int int_key_cmp(const void *x, const void *y)
-{
-    const int_key *a = x, *b = y;
-
-    if (a->hi != b->hi)
-        return a->hi < b->hi ? -1 : 1;
-    if (a->lo != b->lo)
-        return a->lo < b->lo ? -1 : 1;
-    if (a->e.a != b->e.a)
-        return a->e.a < b->e.a ? -1 : 1;
-    return (a->e.b > b->e.b) - (a->e.b < b->e.b);
-}
-
-/* Sorts a run by exact integer keys when its coordinates allow (lattice
- * runs of thousands of equal-length edges: one key per edge instead of
- * exact arithmetic per comparison); else by sort_run. */
-static int sort_run_keyed(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m, int_key **buf,
-                          size_t *cap)
-{
-    int lo = INT_MAX, hi = INT_MIN, ok = 1;
-    size_t i;
-
-    for (i = 0; i < m && ok; i++)
-        ok = qc__int_span_add(p[e[i].a].x, &lo, &hi) && qc__int_span_add(p[e[i].a].y, &lo, &hi) &&
-             qc__int_span_add(p[e[i].b].x, &lo, &hi) && qc__int_span_add(p[e[i].b].y, &lo, &hi);
-    if (m <= 24 || !ok || (hi != INT_MIN && hi - lo > QC__INT_SPAN)) {
-        sort_run(p, e, m);
-        return QC_OK;
-    }
-    QC__TRY(QC__RESERVE(ctx, *buf, *cap, m));
-    for (i = 0; i < m; i++) {
-        qc__len2_int(p[e[i].a], p[e[i].b], lo, &(*buf)[i].hi, &(*buf)[i].lo);
-        (*buf)[i].e = e[i];
-    }
-    qsort(*buf, m, sizeof **buf, int_key_cmp); /* keys are distinct: deterministic */
-    for (i = 0; i < m; i++)
-        e[i] = (*buf)[i].e;
-    return QC_OK;
-}
-
-/*
- * Sorts e[0..m) (a < b each) by (length, a, b): a radix sort on the upper
- * 32 bits of the squared length (sign, exponent, 20 mantissa bits), then
- * the few runs that tie there are finished exactly (by integer keys, or by
- * exact comparisons).
- */
-static int sort_edges(qc_ctx *ctx, const qc_vec2 *p, qc_edge *e, size_t m)
-{
-    uint64_t *key = qc__alloc_array(ctx, m, sizeof *key);
-    int_key *buf = NULL;
-    size_t i, r, cap = 0;
-    int rc = QC_OK;
-
-    if (key == NULL)
-        return qc__fail(ctx, QC_ENOMEM, "mst: out of memory sorting %lu edges",
-                        (unsigned long)m);
-    for (i = 0; i < m; i++)
-        key[i] = (len_key(len2(p, e[i].a, e[i].b)) >> 32) << 32 | (uint64_t)i;
-    if (qc__radix_sort(ctx, key, NULL, m, 32) < 0) {
-        qc__free(ctx, key, m * sizeof *key);
-        return QC_ENOMEM;
-    }
-    /* Permute through key[] as scratch: e[index in key[i]] -> position i. */
-    for (i = 0; i < m; i++) {
-        qc_edge x = e[(uint32_t)key[i]];
-        key[i] = (uint64_t)x.a << 32 | x.b;
-    }
-    for (i = 0; i < m; i++) {
-        e[i].a = (uint32_t)(key[i] >> 32);
-        e[i].b = (uint32_t)key[i];
-    }
-    qc__free(ctx, key, m * sizeof *key);
-    for (i = 0; i < m && rc == QC_OK; i = r) {
-        uint64_t hi = len_key(len2(p, e[i].a, e[i].b)) >> 32;
-
-        for (r = i + 1; r < m && len_key(len2(p, e[r].a, e[r].b)) >> 32 == hi; r++)
-            ;
-        if (r - i > 1)
-            rc = sort_run_keyed(ctx, p, e + i, r - i, &buf, &cap);
-    }
-    qc__free(ctx, buf, cap * sizeof *buf);
-    if (rc < 0)
-        return qc__fail(ctx, rc, "mst: out of memory sorting %lu edges", (unsigned long)m);
-    /* Computed lengths a few ulps apart may straddle two runs in the wrong
-     * order: one insertion pass with the exact order mends that (it moves
-     * nothing in the usual case, a comparison per edge). */
-    for (i = 1; i < m; i++) {
-        qc_edge x = e[i];
-        for (r = i; r > 0 && edge_before(p, x, e[r - 1]); r--)
-            e[r] = e[r - 1];
-        e[r] = x;
-    }
-    return QC_OK;
 }
 
 /* Kruskal over the sorted e[0..m): tree edges to out (n - 1 of them). */
@@ -229,7 +65,7 @@ static int mst_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
             e[m].a = mesh.dup_of[i];
             e[m++].b = (uint32_t)i;
         }
-    if ((rc = sort_edges(ctx, p, e, m)) < 0)
+    if ((rc = qc__sort_edges(ctx, p, n, e, m)) < 0)
         goto out_free;
     rc = kruskal(ctx, e, m, n, out);
 out_free:
@@ -272,7 +108,7 @@ static int mst_complete(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_edges *out)
         from[bw] = bw;
         v = bw;
     }
-    rc = sort_edges(ctx, p, out->e + start, n - 1);
+    rc = qc__sort_edges(ctx, p, n, out->e + start, n - 1);
 out_free:
     qc__free(ctx, from, n * sizeof *from);
     if (rc < 0)
