@@ -88,8 +88,7 @@ int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg)
     return 1;
 }
 
-/* A length: a number in the current units, or with its own suffix mm, cm, in. */
-static int parse_length(const char *s, double mm_per_unit, double *mm)
+int cli_parse_length(const char *s, double mm_per_unit, double *mm)
 {
     static const struct { const char *suffix; double mm; } units[] = {
         {"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}};
@@ -163,7 +162,7 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
         qc_params_set_seed(&o->params, (uint64_t)seed);
         return CLI_OK;
     case QC_PARAM_LENGTH:
-        rc = parse_length(s, o->mm_per_unit, &v);
+        rc = cli_parse_length(s, o->mm_per_unit, &v);
         if (rc == -2) {
             cli_error("%s: '%s' is too large a length", name, s);
             return CLI_USAGE;

@@ -44,6 +44,11 @@ typedef struct qc_io_opts {
     const qc_region *region; /* SVG: drawn under the path; may be NULL */
     int svg_inches;          /* SVG: width/height in inches (else mm) */
     double feed_mm_min;      /* G-code feed rate; 0 = 1500 */
+    /* G-code: a line sent before each jump and at the end (pen or needle up)
+     * and one after each jump (down), so a plotter does not draw the jumps.
+     * NULL = "G0 Z5" / "G1 Z0"; "" = no line. At most 64 printable ASCII
+     * characters, else QC_EINVAL. */
+    const char *pen_up, *pen_down;
 } qc_io_opts;
 
 /* Encodes plan as format through write(ud, ...), buffered (8 KiB chunks).
