@@ -38,6 +38,8 @@ int cli_getopt(int argc, char **argv, const char *shortopts, const struct option
 /* A length: a number in mm_per_unit, or with its own suffix mm, cm, in.
  * 0, -1 (not a length) or -2 (too large). */
 int cli_parse_length(const char *s, double mm_per_unit, double *mm);
+/* One line: "NAME 0.01 in (0.254 mm) out of range [0.01969, 39.37] in". */
+void cli_length_range(const char *name, double mm, double lo, double hi, double mm_per_unit);
 /* "0.254 mm" in the user's units: "0.01 in" (in), "0.0254 cm"... */
 const char *cli_units_name(double mm_per_unit);
 

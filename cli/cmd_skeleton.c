@@ -48,8 +48,10 @@ static int parse(int argc, char **argv, skel_opts *s)
         return CLI_RUNTIME;
     optind = 1;
     opterr = 0; /* our own one-line messages */
-    while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
-        if (c == 'o' && s->nout == CLI_MAX_OUTPUTS) {
+    while (rc == CLI_OK && (c = cli_getopt(argc, argv, ":o:h", opts)) != -1) {
+        if (c == CLI_GETOPT_REPORTED)
+            rc = CLI_USAGE;
+        else if (c == 'o' && s->nout == CLI_MAX_OUTPUTS) {
             cli_error("skeleton: at most %d outputs", CLI_MAX_OUTPUTS);
             rc = CLI_USAGE;
         } else if (c == 'o')

@@ -23,7 +23,6 @@ int cli_machine_take(cli_machine_opts *m, int opt, const char *arg)
 static int length_in(const char *opt, const char *s, double mpu, double lo, double hi,
                      double *mm)
 {
-    const char *u = cli_units_name(mpu);
     int rc = cli_parse_length(s, mpu, mm);
 
     if (rc != 0) {
@@ -31,8 +30,9 @@ static int length_in(const char *opt, const char *s, double mpu, double lo, doub
         return CLI_USAGE;
     }
     if (!(*mm >= lo && *mm <= hi)) {
-        cli_error("--%s %g %s (%g mm) out of range [%g, %g] %s", opt, *mm / mpu, u, *mm,
-                  lo / mpu, hi / mpu, u);
+        char name[32];
+        snprintf(name, sizeof name, "--%s", opt);
+        cli_length_range(name, *mm, lo, hi, mpu);
         return CLI_USAGE;
     }
     return CLI_OK;

@@ -88,6 +88,17 @@ int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg)
     return 1;
 }
 
+void cli_length_range(const char *name, double mm, double lo, double hi, double mm_per_unit)
+{
+    const char *u = cli_units_name(mm_per_unit);
+    char also[48] = "";
+
+    if (mm_per_unit != 1.0)
+        snprintf(also, sizeof also, " (%.4g mm)", mm);
+    cli_error("%s %.4g %s%s out of range [%.4g, %.4g] %s", name, mm / mm_per_unit, u, also,
+              lo / mm_per_unit, hi / mm_per_unit, u);
+}
+
 int cli_parse_length(const char *s, double mm_per_unit, double *mm)
 {
     static const struct { const char *suffix; double mm; } units[] = {
@@ -146,6 +157,15 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
             o->points_file = s;
             c = QC_POINTS_GIVEN;
         }
+        if (c < 0 && strcmp(row->name, "points") == 0 && (strchr(s, '.') || strchr(s, '/'))) {
+            char *buf;
+            size_t len;
+            if (cli_read_file(s, 1, &buf, &len) == 0) { /* else it said why: missing, ... */
+                free(buf);
+                cli_error("%s: cannot read '%s'", name, s);
+            }
+            return CLI_RUNTIME;
+        }
         if (c < 0) {
             cli_error("%s: unknown choice '%s' (one of %s%s)", name, s, row->choices,
                       strcmp(row->name, "points") == 0 ? ", or a CSV/TSPLIB file" : "");
@@ -172,6 +192,10 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
                       name, s);
             return CLI_USAGE;
         }
+        if (!(v >= row->min && v <= row->max)) { /* in the user's units, not the library's mm */
+            cli_length_range(name, v, row->min, row->max, o->mm_per_unit);
+            return CLI_USAGE;
+        }
         break;
     default:
         if (cli_parse_double(s, &v) != 0) {
@@ -194,7 +218,7 @@ int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o)
         return CLI_USAGE;
     o->mm_per_unit = cli_units_mm(o->units);
     if (o->mm_per_unit == 0.0) {
-        cli_error("--units: unknown unit '%s' (in, mm or cm)", o->units);
+        cli_error("--units: unknown unit '%s' (in, inch, mm or cm)", o->units);
         return CLI_USAGE;
     }
     for (i = 0; i < nrows; i++)

@@ -171,7 +171,7 @@ job_errors() {
     echo '{"blocks": [{"params": {"spacingg": 3}}]}' > p.json
     expect_fail 2 "params.spacingg: unknown parameter" "$QC" job p.json || return 1
     echo '{"blocks": [{"params": {"spacing": 0}}]}' > r.json
-    expect_fail 2 "spacing 0 mm out of range" "$QC" job r.json || return 1
+    expect_fail 2 "spacing 0 in (0 mm) out of range" "$QC" job r.json || return 1
     echo '{"blocks": [' > m.json
     expect_fail 2 "malformed JSON at byte" "$QC" job m.json || return 1
     echo '{"blocks": []}' > e.json
@@ -249,7 +249,7 @@ fails_cleanly() {
     expect_fail "$@" || return 1
     [ -z "$(ls -A)" ] || { echo "left behind: $(ls -A)"; return 1; }
 }
-check spacing_out_of_range fails_cleanly 2 "spacing 0 mm out of range" "$QC" generate --spacing 0
+check spacing_out_of_range fails_cleanly 2 "spacing 0 in (0 mm) out of range \[0.01969, 39.37\] in" "$QC" generate --spacing 0
 check spacing_nan fails_cleanly 2 "'nan' is not a length" "$QC" generate --spacing nan
 check unknown_shape fails_cleanly 2 "unknown shape 'blob:3'" "$QC" generate --region blob:3
 check negative_size fails_cleanly 2 "size -2 mm" "$QC" generate --region circle:-2 --units mm

@@ -137,4 +137,13 @@ pen() {
 }
 check gcode_pen_lines_round_trip pen
 
+# Sizes with their own unit, --units inch, and quiltc list alone.
+words() {
+    "$QC" generate -q --seed 5 -o a.pat && "$QC" generate -q --seed 5 --units mm --region rect:8x8in -o b.pat &&
+        cmp a.pat b.pat && "$QC" generate -q --seed 5 --units inch -o c.pat && cmp a.pat c.pat &&
+        "$QC" generate -q --seed 5 --region rect:20.32x20.32cm -o d.pat && cmp a.pat d.pat &&
+        "$QC" list > l.txt && grep -q '^  families' l.txt && grep -q '^  formats' l.txt
+}
+check shape_units_inch_and_list_alone words
+
 finish
