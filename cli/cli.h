@@ -103,6 +103,8 @@ typedef struct cli_pattern_opts {
     char repeat[2][24];      /* --repeat CxR, split into repeat-cols and repeat-rows */
     int bad;                 /* an option was refused (already reported) */
     const char *where;       /* NULL, or "job: blocks[2]": messages name job keys */
+    int region_given;        /* --region was typed */
+    int fit_points;          /* no --region: the --points' box grown by the margin */
     qc_params params;
 } cli_pattern_opts;
 

@@ -69,6 +69,7 @@ static int parse(int argc, char **argv, skel_opts *s)
         }
     }
     free(opts);
+    s->pat.fit_points = 1; /* --points without --region: the points' own box */
     if (rc == CLI_OK && s->path != NULL && strcmp(s->path, "mst") != 0 &&
         strcmp(s->path, "tsp") != 0) {
         cli_error("--path: unknown '%s' (mst or tsp)", s->path);

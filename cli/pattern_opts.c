@@ -286,11 +286,47 @@ static int load_points(qc_ctx *ctx, const cli_pattern_opts *o, qc_points *given)
     return CLI_OK;
 }
 
+/* The points' bounding box grown by the margin (and a hair, so the points
+ * on its edge are inside by the margin), as a rectangle region. */
+static int fit_region(qc_ctx *ctx, const cli_pattern_opts *o, const qc_points *given,
+                      qc_region *region)
+{
+    qc_params r;
+    qc_vec2 lo = given->v[0], hi = given->v[0], ring[4];
+    double m;
+    size_t i;
+
+    if (qc_params_resolve(ctx, &o->params, &r) < 0)
+        return cli_fail(ctx, "parameters", ctx->status);
+    for (i = 1; i < given->n; i++) {
+        lo.x = fmin(lo.x, given->v[i].x);
+        lo.y = fmin(lo.y, given->v[i].y);
+        hi.x = fmax(hi.x, given->v[i].x);
+        hi.y = fmax(hi.y, given->v[i].y);
+    }
+    m = r.margin * 1.001 + 0.01 + 1e-9 * fmax(fabs(hi.x) + fabs(hi.y), 1.0);
+    ring[0].x = lo.x - m, ring[0].y = lo.y - m;
+    ring[1].x = hi.x + m, ring[1].y = lo.y - m;
+    ring[2].x = hi.x + m, ring[2].y = hi.y + m;
+    ring[3].x = lo.x - m, ring[3].y = hi.y + m;
+    memset(region, 0, sizeof *region);
+    if (qc_region_add_ring(ctx, region, ring, 4) < 0 || qc_region_normalize(ctx, region) < 0) {
+        qc_region_free(ctx, region);
+        return cli_fail(ctx, o->points_file, ctx->status);
+    }
+    return CLI_OK;
+}
+
 int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
                      qc_points *given)
 {
-    int rc = cli_load_region(ctx, o->region, o->mm_per_unit, region);
+    int rc;
 
+    if (o->fit_points && !o->region_given && o->points_file != NULL) {
+        rc = load_points(ctx, o, given);
+        return rc == CLI_OK ? fit_region(ctx, o, given, region) : rc;
+    }
+    rc = cli_load_region(ctx, o->region, o->mm_per_unit, region);
     if (rc != CLI_OK || o->points_file == NULL)
         return rc;
     return load_points(ctx, o, given);

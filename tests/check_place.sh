@@ -146,4 +146,16 @@ words() {
 }
 check shape_units_inch_and_list_alone words
 
+# skeleton --points without --region: the points' own box, grown by the margin.
+skeleton_points() {
+    "$QC" skeleton --points "$ROOT/tests/data/tsplib/berlin52.tsp" --units mm -o b.json &&
+        python3 -c '
+import json
+s = json.load(open("b.json"))
+assert len(s["points"]) == 52 and len(s["edges"]) == 51, (len(s["points"]), len(s["edges"]))
+assert [565.0, 575.0] in s["points"], s["points"][:3]
+'
+}
+check skeleton_points_need_no_region skeleton_points
+
 finish
