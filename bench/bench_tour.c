@@ -79,7 +79,7 @@ static void uniform(size_t n, int reps, int all_methods)
     qc_edges_free(&ctx, &e);
     for (k = all_methods ? 0 : 2; k < 3; k++) {
         m.peak = 0;
-        t = time_tsp(&ctx, p, n, k, 0, reps, &len, euclid_length);
+        t = time_tsp(&ctx, p, n, QC_TSP_METHOD_GREEDY + k, 0, reps, &len, euclid_length);
         if (t < 0)
             break;
         printf("uniform n=%-8lu %-8s %9.2f ms  tour/MST %.4f  tour/(0.7124 sqrt(nA)) %.4f"
@@ -155,8 +155,9 @@ static void tsplib(void)
         }
         free(buf);
         for (k = 0; k < 4; k++) {
-            t[k] = time_tsp(&ctx, pts.v, pts.n, k < 3 ? k : 2, k < 3 ? 0 : KICKS,
-                            k < 3 && pts.n <= 5000 ? 3 : 1, &l, tsplib_length);
+            t[k] = time_tsp(&ctx, pts.v, pts.n, QC_TSP_METHOD_GREEDY + (k < 3 ? k : 2),
+                            k < 3 ? 0 : KICKS, k < 3 && pts.n <= 5000 ? 3 : 1, &l,
+                            tsplib_length);
             gap[k] = 100 * (l / opt - 1);
             sum[k] += gap[k];
         }

@@ -573,6 +573,10 @@ static void mst_should_order_lengths_exactly(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, 3, QC_MST_MODE_COMPLETE, &b));
     TEST_ASSERT_EQUAL_size_t(2, b.n);
     TEST_ASSERT_EQUAL_MEMORY(a.e, b.e, 2 * sizeof *a.e);
+    b.n = 0; /* mode 0 is the default, Delaunay; past COMPLETE is refused */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, 3, QC_MST_MODE_DEFAULT, &b));
+    TEST_ASSERT_EQUAL_MEMORY(a.e, b.e, 2 * sizeof *a.e);
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_mst(&ctx, p, 3, (qc_mst_mode)(QC_MST_MODE_COMPLETE + 1), &b));
     TEST_ASSERT_EQUAL_UINT32(0, b.e[0].a); /* 0-2, the tiny one, then 1-2 */
     TEST_ASSERT_EQUAL_UINT32(2, b.e[0].b);
     TEST_ASSERT_EQUAL_UINT32(1, b.e[1].a);

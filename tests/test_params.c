@@ -201,6 +201,31 @@ static void set_seed_should_keep_all_64_bits(void)
     qc_region_free(&ctx, &block);
 }
 
+/* The skeleton's choices are the stages' own enums, so qc_generate passes
+ * them on with no table in between. */
+static void skeleton_choices_should_be_the_stage_enums(void)
+{
+    static const struct { const char *row, *choice; int value; } cases[] = {
+        {"points", "triangle", QC_SAMPLE_TRIANGLE}, {"points", "square", QC_SAMPLE_SQUARE},
+        {"points", "hex", QC_SAMPLE_HEX},           {"points", "snub", QC_SAMPLE_SNUB},
+        {"points", "poisson", QC_SAMPLE_POISSON},   {"points", "given", QC_POINTS_GIVEN},
+        {"mst", "delaunay", QC_MST_MODE_DELAUNAY},  {"mst", "complete", QC_MST_MODE_COMPLETE},
+        {"tsp", "greedy", QC_TSP_METHOD_GREEDY},    {"tsp", "2opt", QC_TSP_METHOD_2OPT},
+        {"tsp", "oropt", QC_TSP_METHOD_OROPT}};
+    qc_params p, r;
+    size_t i;
+
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        TEST_ASSERT_EQUAL_INT_MESSAGE(cases[i].value,
+                                      qc_param_choice(qc_param_find(cases[i].row), cases[i].choice),
+                                      cases[i].choice);
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
+    TEST_ASSERT_EQUAL_INT(QC_MST_MODE_DELAUNAY, r.mst);
+    TEST_ASSERT_EQUAL_INT(QC_TSP_METHOD_OROPT, r.tsp);
+    TEST_ASSERT_EQUAL_INT(QC_SAMPLE_POISSON, r.points);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -213,5 +238,6 @@ int main(void)
     RUN_TEST(set_should_refuse_enum_values_no_int_holds);
     RUN_TEST(given_should_follow_the_parameter_id_not_the_row);
     RUN_TEST(set_seed_should_keep_all_64_bits);
+    RUN_TEST(skeleton_choices_should_be_the_stage_enums);
     return UNITY_END();
 }

@@ -474,9 +474,15 @@ static void pebbling_should_refuse_empty_tiny_and_bad_input(void)
     TEST_ASSERT_EQUAL_UINT(0, out.ncmd);
     par.r_seed = 0.3;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_deco_pebbling(&ctx, &r, &par, &sk, NULL, &out, NULL));
-    TEST_ASSERT_EQUAL_STRING("r_seed 0.3 out of range [0.5, 1]", qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_STRING("r-seed 0.3 ratio out of range [0.5, 1] ratio", qc_errmsg(&ctx));
     par.r_seed = 0.7;
     par.spacing = 0;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_deco_pebbling(&ctx, &r, &par, &sk, NULL, &out, NULL));
+    /* the table's range, the one qc_params_resolve applies (no second copy) */
+    par.spacing = 0.4;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_deco_pebbling(&ctx, &r, &par, &sk, NULL, &out, NULL));
+    TEST_ASSERT_EQUAL_STRING("spacing 0.4 mm out of range [0.5, 1000] mm", qc_errmsg(&ctx));
+    par.spacing = 1001;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_deco_pebbling(&ctx, &r, &par, &sk, NULL, &out, NULL));
     par.spacing = 10;
     sk.norder = 2;

@@ -140,7 +140,8 @@ static void check_all_methods(const qc_vec2 *p, size_t n, uint64_t rounds)
 
     for (m = 0; m < 4; m++) {
         qc_order o = {0};
-        tour(p, n, m < 3 ? m : QC_TSP_METHOD_OROPT, m < 3 ? 0 : rounds, &o);
+        tour(p, n, m < 3 ? QC_TSP_METHOD_GREEDY + m : QC_TSP_METHOD_OROPT, m < 3 ? 0 : rounds,
+             &o);
         len[m] = qc_tour_length(p, o.i, o.n, 1);
         if (m >= 1 && n <= 2000)
             TEST_ASSERT_EQUAL_size_t_MESSAGE(0, crossings(p, o.i, o.n), "tour edges cross");
@@ -237,10 +238,10 @@ void tsp_should_handle_collinear_points(void)
                 p[i] = v2(3 + 4 * t / 3, -1 + 3 * t / 7);
             }
         }
-        for (m = 0; m < 3; m++) {
+        for (m = QC_TSP_METHOD_GREEDY; m <= QC_TSP_METHOD_OROPT; m++) {
             qc_order o = {0};
             tour(p, 300, m, 0, &o);
-            if (m > 0)
+            if (m > QC_TSP_METHOD_GREEDY)
                 TEST_ASSERT_EQUAL_size_t(0, crossings(p, o.i, o.n));
             if (exact && m == QC_TSP_METHOD_OROPT) /* there and back along the line */
                 TEST_ASSERT_DOUBLE_WITHIN(1e-9, 2 * (hi - lo), qc_tour_length(p, o.i, o.n, 1));
@@ -286,7 +287,7 @@ void tsp_should_return_tiny_inputs_in_index_order(void)
     int m;
 
     for (n = 0; n <= 3; n++)
-        for (m = 0; m < 3; m++) {
+        for (m = QC_TSP_METHOD_GREEDY; m <= QC_TSP_METHOD_OROPT; m++) {
             qc_order o = {0};
             tour(p, n, m, 10, &o);
             for (i = 0; i < n; i++)
@@ -294,7 +295,7 @@ void tsp_should_return_tiny_inputs_in_index_order(void)
             qc_order_free(&ctx, &o);
         }
     /* four points listed in crossing order: 2-opt turns the bow tie into a square */
-    for (m = 1; m < 3; m++) {
+    for (m = QC_TSP_METHOD_2OPT; m <= QC_TSP_METHOD_OROPT; m++) {
         qc_order o = {0};
         tour(p, 4, m, 10, &o);
         TEST_ASSERT_EQUAL_size_t(0, crossings(p, o.i, 4));
@@ -346,9 +347,9 @@ void tsp_should_refuse_bad_input_and_keep_the_output(void)
     p[4].y = 1e200;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_tsp(&ctx, p, 6, &tp, &o));
     p[4].y = 1;
-    tp.method = 3;
+    tp.method = QC_TSP_METHOD_OROPT + 1;
     TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tsp(&ctx, p, 6, &tp, &o));
-    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "method 3"));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "method 4"));
     tp.method = QC_TSP_METHOD_2OPT;
     tp.neighbours = -1;
     TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tsp(&ctx, p, 6, &tp, &o));
@@ -359,6 +360,24 @@ void tsp_should_refuse_bad_input_and_keep_the_output(void)
     TEST_ASSERT_EQUAL_size_t(7, o.n);
     assert_permutation(o.i + 1, 6);
     qc_order_free(&ctx, &o);
+}
+
+/* Method 0 is the default, Or-opt, the same tour as asking for it. */
+void tsp_method_zero_should_be_oropt(void)
+{
+    qc_vec2 *p = random_points(300, 5, 100.0);
+    qc_order a = {0}, b = {0};
+    qc_tsp_params zero = params(QC_TSP_METHOD_DEFAULT, 200, 3);
+    qc_tsp_params oropt = params(QC_TSP_METHOD_OROPT, 200, 3);
+
+    TEST_ASSERT_EQUAL_INT(0, QC_TSP_METHOD_DEFAULT);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&ctx, p, 300, &zero, &a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&ctx, p, 300, &oropt, &b));
+    TEST_ASSERT_EQUAL_size_t(a.n, b.n);
+    TEST_ASSERT_EQUAL_MEMORY(a.i, b.i, a.n * sizeof *a.i);
+    qc_order_free(&ctx, &a);
+    qc_order_free(&ctx, &b);
+    free(p);
 }
 
 void tsp_should_repeat_for_a_seed(void)
@@ -543,6 +562,7 @@ int main(void)
     RUN_TEST(tsp_should_return_tiny_inputs_in_index_order);
     RUN_TEST(tsp_should_accept_any_candidate_list_size);
     RUN_TEST(tsp_should_refuse_bad_input_and_keep_the_output);
+    RUN_TEST(tsp_method_zero_should_be_oropt);
     RUN_TEST(tsp_should_repeat_for_a_seed);
     RUN_TEST(tsp_should_fail_cleanly_out_of_memory);
     RUN_TEST(tour_length_should_sum_the_edges);

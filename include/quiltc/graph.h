@@ -56,9 +56,11 @@ typedef struct qc_mesh {
 int qc_delaunay(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mesh *out);
 void qc_mesh_free(qc_ctx *ctx, qc_mesh *mesh);
 
+/* Also the `mst` parameter's values (qc_params.mst, choices 1..2). */
 typedef enum qc_mst_mode {
-    QC_MST_MODE_DELAUNAY = 0, /* Kruskal over the Delaunay edges, O(n log n) */
-    QC_MST_MODE_COMPLETE = 1  /* Kruskal over all n(n-1)/2 edges, O(n^2 log n) (the paper's) */
+    QC_MST_MODE_DEFAULT = 0,  /* Delaunay */
+    QC_MST_MODE_DELAUNAY = 1, /* Kruskal over the Delaunay edges, O(n log n) */
+    QC_MST_MODE_COMPLETE = 2  /* the complete graph (the paper's), O(n^2) */
 } qc_mst_mode;
 
 /*

@@ -10,6 +10,9 @@
 #include "core.h"
 #include "region.h"
 #include "motif.h"
+#include "sample.h"
+#include "graph.h"
+#include "tour.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -42,19 +45,19 @@ typedef enum qc_family {
     QC_FAMILY_COUNT
 } qc_family;
 
+/* Where the points come from: a sampler (the values are qc_sample_kind's,
+ * so qc_generate passes them on unchanged) or the caller. */
 typedef enum qc_points_kind {
     QC_POINTS_DEFAULT = 0,
-    QC_POINTS_TRIANGLE,
-    QC_POINTS_SQUARE,
-    QC_POINTS_HEX,
-    QC_POINTS_SNUB, /* 3.3.4.3.4 */
-    QC_POINTS_POISSON,
-    QC_POINTS_GIVEN /* the caller's points (qc_generate's given argument) */
+    QC_POINTS_TRIANGLE = QC_SAMPLE_TRIANGLE,
+    QC_POINTS_SQUARE = QC_SAMPLE_SQUARE,
+    QC_POINTS_HEX = QC_SAMPLE_HEX,
+    QC_POINTS_SNUB = QC_SAMPLE_SNUB, /* 3.3.4.3.4 */
+    QC_POINTS_POISSON = QC_SAMPLE_POISSON,
+    QC_POINTS_GIVEN = 6 /* the caller's points (qc_generate's given argument) */
 } qc_points_kind;
 
 typedef enum qc_skeleton_kind { QC_SKELETON_DEFAULT = 0, QC_SKELETON_MST, QC_SKELETON_TSP } qc_skeleton_kind;
-typedef enum qc_mst_kind { QC_MST_DEFAULT = 0, QC_MST_DELAUNAY, QC_MST_COMPLETE } qc_mst_kind;
-typedef enum qc_tsp_kind { QC_TSP_DEFAULT = 0, QC_TSP_GREEDY, QC_TSP_2OPT, QC_TSP_OROPT } qc_tsp_kind;
 typedef enum qc_edge_mode { QC_EDGE_DEFAULT = 0, QC_EDGE_STRICT, QC_EDGE_OVERGROW } qc_edge_mode;
 typedef enum qc_tile_mode { QC_TILE_DEFAULT = 0, QC_TILE_NONE, QC_TILE_EDGE_TO_EDGE, QC_TILE_ALL_OVER } qc_tile_mode;
 typedef enum qc_tip_mode { QC_TIP_DEFAULT = 0, QC_TIP_NONE, QC_TIP_CIRCLE } qc_tip_mode;
@@ -106,8 +109,8 @@ typedef struct qc_params {
     int family;         /* qc_family */
     int points;         /* qc_points_kind */
     int skeleton;       /* qc_skeleton_kind */
-    int mst;            /* qc_mst_kind */
-    int tsp;            /* qc_tsp_kind */
+    int mst;            /* qc_mst_mode (graph.h) */
+    int tsp;            /* qc_tsp_method (tour.h) */
     int edge;           /* qc_edge_mode (pebbling, packing) */
     int tile;           /* qc_tile_mode */
     int tip;            /* qc_tip_mode (fill, stipple) */

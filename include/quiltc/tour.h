@@ -35,10 +35,12 @@ int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edge
 /* Index of the point nearest q (lowest index on ties); 0 for n == 0. */
 uint32_t qc_nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);
 
+/* Also the `tsp` parameter's values (qc_params.tsp, choices 1..3). */
 typedef enum qc_tsp_method {
-    QC_TSP_METHOD_GREEDY = 0, /* greedy-edge construction only */
-    QC_TSP_METHOD_2OPT,       /* + 2-opt with neighbour lists, don't-look bits */
-    QC_TSP_METHOD_OROPT       /* + Or-opt (the default) */
+    QC_TSP_METHOD_DEFAULT = 0, /* Or-opt */
+    QC_TSP_METHOD_GREEDY,      /* greedy-edge construction only */
+    QC_TSP_METHOD_2OPT,        /* + 2-opt with neighbour lists, don't-look bits */
+    QC_TSP_METHOD_OROPT        /* + Or-opt */
 } qc_tsp_method;
 
 typedef struct qc_tsp_params {

@@ -53,6 +53,9 @@ QC__HIDDEN double qc__fit_cell(qc_bbox box, double cell, double max_cells);
 #define QC__FAMILY_DECL(id, name) QC__HIDDEN extern const qc_family_desc qc__family_##name;
 QC_FAMILY_MAP(QC__FAMILY_DECL)
 #undef QC__FAMILY_DECL
+/* value checked against parameter id's row of the table (the one source of
+ * each range): QC_OK, or qc_params_resolve's error and message. */
+QC__HIDDEN int qc__param_check(qc_ctx *ctx, int id, double value);
 /* The descriptor of family id (a qc_family), or NULL. */
 QC__HIDDEN const qc_family_desc *qc__family(int id);
 

@@ -807,10 +807,8 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
     memset(&P, 0, sizeof P);
     if (n == 0)
         return qc__fail(ctx, QC_EEMPTY, "pebbling needs at least one point");
-    if (!(d > 0) || d > 1e6)
-        return qc__fail(ctx, QC_ERANGE, "spacing %g mm out of range (0, 1e6]", d);
-    if (!(rs >= 0.5 && rs <= 1))
-        return qc__fail(ctx, QC_ERANGE, "r_seed %g out of range [0.5, 1]", rs);
+    QC__TRY(qc__param_check(ctx, QC_PARAM_ID_SPACING, d));
+    QC__TRY(qc__param_check(ctx, QC_PARAM_ID_R_SEED, rs));
     if (n > QC_MAX_POINTS)
         return qc__fail(ctx, QC_ELIMIT, "%lu points exceed the limit of %lu",
                         (unsigned long)n, (unsigned long)QC_MAX_POINTS);

@@ -314,6 +314,8 @@ int qc_mst(qc_ctx *ctx, const qc_vec2 *p, size_t n, qc_mst_mode mode,
     size_t start = out->n;
     int rc;
 
+    if (mode == QC_MST_MODE_DEFAULT)
+        mode = QC_MST_MODE_DELAUNAY;
     if (mode != QC_MST_MODE_DELAUNAY && mode != QC_MST_MODE_COMPLETE)
         return qc__fail(ctx, QC_EINVAL, "mst: unknown mode %d", (int)mode);
     if (n >= ((size_t)1 << 30)) /* edge indices must fit in 32 bits */

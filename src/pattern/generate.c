@@ -46,8 +46,6 @@ static int check_given_inside(qc_ctx *ctx, const qc_region *region, const qc_poi
 static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *p,
                          const qc_points *given, qc_points *out)
 {
-    static const int kinds[] = {0, QC_SAMPLE_TRIANGLE, QC_SAMPLE_SQUARE, QC_SAMPLE_HEX,
-                                QC_SAMPLE_SNUB, QC_SAMPLE_POISSON};
     qc_sample_params sp;
     size_t i;
 
@@ -63,7 +61,7 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
         return QC_OK;
     }
     memset(&sp, 0, sizeof sp);
-    sp.kind = kinds[p->points];
+    sp.kind = p->points; /* a qc_sample_kind: QC_POINTS_GIVEN was handled above */
     sp.spacing = p->spacing;
     sp.margin = p->margin;
     sp.seed = p->seed;
@@ -93,15 +91,13 @@ static uint32_t pick_root(const qc_region *region, const qc_params *p, const qc_
 static int build_tour(qc_ctx *ctx, const qc_params *p, const qc_points *pts,
                       uint32_t root, qc_order *order)
 {
-    static const int methods[] = {0, QC_TSP_METHOD_GREEDY, QC_TSP_METHOD_2OPT,
-                                  QC_TSP_METHOD_OROPT};
     qc_tsp_params tp;
     qc_order raw = {0};
     size_t i, at = 0;
     int rc;
 
     memset(&tp, 0, sizeof tp);
-    tp.method = methods[p->tsp];
+    tp.method = p->tsp;
     tp.seed = p->seed;
     /* the core has no clock: the budget becomes a round count (measured:
      * 70-150 rounds per ms on 10^3-10^5 uniform points) */
@@ -133,10 +129,7 @@ static int build_skeleton(qc_ctx *ctx, const qc_region *region, const qc_params 
         QC__TRY(build_tour(ctx, p, &res->points, root, &res->order));
     } else {
         trace(ctx, "graph");
-        QC__TRY(qc_mst(ctx, res->points.v, res->points.n,
-                       p->mst == QC_MST_COMPLETE ? QC_MST_MODE_COMPLETE
-                                                 : QC_MST_MODE_DELAUNAY,
-                       &res->edges));
+        QC__TRY(qc_mst(ctx, res->points.v, res->points.n, (qc_mst_mode)p->mst, &res->edges));
         trace(ctx, "tour");
         QC__TRY(qc_tree_walk(ctx, res->points.v, res->points.n, res->edges.e,
                              res->edges.n, root, &res->order));

@@ -35,9 +35,9 @@ static const qc_param_info table[] = {
     {"skeleton", "skeleton path (default: tsp for wanderer, else mst)", "", QC_PARAM_ENUM,
      "mst|tsp", 1, 2, QC_SKELETON_MST, 0, ID(SKELETON), OFF(skeleton)},
     {"mst", "spanning tree graph", "", QC_PARAM_ENUM, "delaunay|complete", 1, 2,
-     QC_MST_DELAUNAY, 0, ID(MST), OFF(mst)},
+     QC_MST_MODE_DELAUNAY, 0, ID(MST), OFF(mst)},
     {"tsp", "tour improvement", "", QC_PARAM_ENUM, "greedy|2opt|oropt", 1, 3,
-     QC_TSP_OROPT, 0, ID(TSP), OFF(tsp)},
+     QC_TSP_METHOD_OROPT, 0, ID(TSP), OFF(tsp)},
     {"edge", "pebbles at the boundary", "", QC_PARAM_ENUM, "strict|overgrow", 1, 2,
      QC_EDGE_STRICT, 0, ID(EDGE), OFF(edge)},
     {"tile", "repeatable tile", "", QC_PARAM_ENUM, "none|edge-to-edge|all-over", 1, 3,
@@ -246,6 +246,14 @@ static int check_range(qc_ctx *ctx, const qc_param_info *info, double v)
     if (info->type == QC_PARAM_INT && v != floor(v))
         return qc__fail(ctx, QC_ERANGE, "%s %g must be a whole number", info->name, v);
     return QC_OK;
+}
+
+int qc__param_check(qc_ctx *ctx, int id, double value)
+{
+    const qc_param_info *info = qc_param_by_id(id);
+
+    return info != NULL ? check_range(ctx, info, value)
+                        : qc__fail(ctx, QC_EINVAL, "unknown parameter id %d", id);
 }
 
 /* Defaults: the family's own (its descriptor's param_default), else the

@@ -119,7 +119,8 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
 int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
            qc_order *out)
 {
-    int method = params ? params->method : QC_TSP_METHOD_OROPT;
+    int method = params && params->method != QC_TSP_METHOD_DEFAULT ? params->method
+                                                                   : QC_TSP_METHOD_OROPT;
     int neighbours = params ? params->neighbours : 0;
     qc__tsp s;
     size_t i;
