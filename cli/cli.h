@@ -29,6 +29,20 @@ int cli_fail(const qc_ctx *ctx, const char *what, int status);
 /* getopt returned '?' or ':' for arg: one line naming it and the help command. */
 void cli_bad_option(const char *command, const char *arg, int c);
 
+/* getopt_long that refuses abbreviated long options: returns
+ * CLI_GETOPT_REPORTED after one line naming the typed and the full name. */
+#define CLI_GETOPT_REPORTED (-2)
+struct option;
+int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *opts);
+
+/* A length: a number in mm_per_unit, or with its own suffix mm, cm, in.
+ * 0, -1 (not a length) or -2 (too large). */
+int cli_parse_length(const char *s, double mm_per_unit, double *mm);
+/* One line: "NAME 0.01 in (0.254 mm) out of range [0.01969, 39.37] in". */
+void cli_length_range(const char *name, double mm, double lo, double hi, double mm_per_unit);
+/* "0.254 mm" in the user's units: "0.01 in" (in), "0.0254 cm"... */
+const char *cli_units_name(double mm_per_unit);
+
 /* Reads a whole file (at most max bytes) into a NUL-terminated buffer. */
 int cli_read_file(const char *path, size_t max, char **buf, size_t *len);
 
@@ -98,6 +112,8 @@ typedef struct cli_pattern_opts {
     char repeat[2][24];      /* --repeat CxR, split into repeat-cols and repeat-rows */
     int bad;                 /* an option was refused (already reported) */
     const char *where;       /* NULL, or "job: blocks[2]": messages name job keys */
+    int region_given;        /* --region was typed */
+    int fit_points;          /* no --region: the --points' box grown by the margin */
     qc_params params;
 } cli_pattern_opts;
 

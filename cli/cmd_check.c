@@ -14,6 +14,7 @@ typedef struct check_opts {
     unsigned long long max_jumps;
     double min_seg, max_seg; /* mm; max 0 = no limit */
     int no_crossing;
+    double spi; /* for the stitch count; 12 unless --spi */
 } check_opts;
 
 typedef struct tally {
@@ -44,6 +45,7 @@ static void usage(FILE *f)
           "  --min-segment LEN   shorter stitches are faults (default 0.1mm)\n"
           "  --max-segment LEN   longer stitches are faults (default: no limit)\n"
           "  --no-crossing       self-crossings are faults (loop motifs cross by design)\n"
+          "  --spi N             stitches per inch for the stitch count (default 12)\n"
           "  --region R          stitches outside R are faults; also the farthest fabric\n"
           "  --units in|mm|cm    units of R and of bare lengths (default in)\n",
           f);
@@ -76,14 +78,16 @@ static int parse(int argc, char **argv, check_opts *o)
         {"max-jumps", required_argument, NULL, 'j'}, {"min-segment", required_argument, NULL, 's'},
         {"max-segment", required_argument, NULL, 'S'}, {"no-crossing", no_argument, NULL, 'x'},
         {"region", required_argument, NULL, 'r'}, {"units", required_argument, NULL, 'u'},
+        {"spi", required_argument, NULL, 'p'},
         {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
     const char *min_s = "0.1mm", *max_s = "0";
     int c;
 
     o->units = "in";
+    o->spi = 12;
     optind = 1;
     opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts)) != -1) {
         switch (c) {
         case 'j':
             if (cli_parse_u64(optarg, &o->max_jumps) != 0) {
@@ -94,6 +98,13 @@ static int parse(int argc, char **argv, check_opts *o)
         case 's': min_s = optarg; break;
         case 'S': max_s = optarg; break;
         case 'x': o->no_crossing = 1; break;
+        case 'p':
+            if (cli_parse_double(optarg, &o->spi) != 0 || !(o->spi >= 1 && o->spi <= 100)) {
+                cli_error("--spi: '%s' is not a number in [1, 100] stitches per inch", optarg);
+                return CLI_USAGE;
+            }
+            break;
+        case CLI_GETOPT_REPORTED: return CLI_USAGE;
         case 'r': o->region = optarg; break;
         case 'u': o->units = optarg; break;
         case 'h': usage(stdout); return -1;
@@ -120,6 +131,7 @@ static void measure(const check_opts *o, const qc_plan *p, tally *t)
 {
     size_t i, jumps = 0, segs = 0;
     double len = 0, shortest = HUGE_VAL, longest = 0;
+    qc_plan_estimate est;
     qc_bbox b;
 
     b.min = b.max = p->p[0];
@@ -139,18 +151,21 @@ static void measure(const check_opts *o, const qc_plan *p, tally *t)
             shortest = fmin(shortest, s);
             longest = fmax(longest, s);
             if (s < o->min_seg)
-                finding(t, "stitch of %.3f mm shorter than %.3f mm", s, o->min_seg);
+                finding(t, "segment of %.3f mm shorter than %.3f mm", s, o->min_seg);
             if (o->max_seg > 0 && s > o->max_seg)
-                finding(t, "stitch of %.3f mm longer than %.3f mm", s, o->max_seg);
+                finding(t, "segment of %.3f mm longer than %.3f mm", s, o->max_seg);
         }
     }
-    printf("points: %lu, stitches: %lu, jumps: %lu\n", (unsigned long)p->n, (unsigned long)segs,
+    /* stitches as --stats counts them: the sewn length at spi */
+    qc_plan_estimate_get(p, o->spi, 0, &est);
+    printf("points: %lu, segments: %lu, jumps: %lu\n", (unsigned long)p->n, (unsigned long)segs,
            (unsigned long)jumps);
+    printf("stitches: %lu at %g spi\n", (unsigned long)est.stitches, o->spi);
     printf("length: %.1f mm (%.2f in)\n", len, len / 25.4);
     printf("bbox: %.3f %.3f %.3f %.3f in\n", b.min.x / 25.4, b.min.y / 25.4, b.max.x / 25.4,
            b.max.y / 25.4);
     if (segs > 0)
-        printf("stitch lengths: %.3f .. %.3f mm\n", shortest, longest);
+        printf("segment lengths: %.3f .. %.3f mm\n", shortest, longest);
     if (jumps > o->max_jumps)
         finding(t, "%.0f jumps (needle-up moves), more than %.0f allowed", (double)jumps,
                 (double)o->max_jumps);

@@ -5,10 +5,12 @@
 
 #include "cli.h"
 #include "concorde.h"
+#include "machine_opts.h"
 #include "stats_json.h"
 
 typedef struct gen_opts {
     cli_pattern_opts pat;
+    cli_machine_opts mach;
     const char *out[CLI_MAX_OUTPUTS];
     size_t nout;
     const char *format;
@@ -44,6 +46,7 @@ static void usage(FILE *f, const char *family)
             fprintf(f, "  %-24s %s\n", d->name, d->summary);
     }
     cli_pattern_help(f, fam > 0 ? 1u << fam : 0xFFFFFFFFu);
+    cli_machine_help(f);
     fputs("Lengths are in --units unless suffixed (12mm, 0.5in). Example:\n"
           "  quiltc generate --region heart:10 --family branching --spacing 0.6 -o heart.pat\n",
           f);
@@ -56,7 +59,7 @@ static int parse(int argc, char **argv, gen_opts *g)
         {"motif", required_argument, NULL, 'm'},  {"tie", required_argument, NULL, 't'},
         {"stats", no_argument, NULL, 's'},        {"upload", required_argument, NULL, 'u'},
         {"quiet", no_argument, NULL, 'q'},        {"help", no_argument, NULL, 'h'},
-        {"feed", required_argument, NULL, 'F'},
+        {"feed", required_argument, NULL, 'F'},   CLI_MACHINE_OPTIONS,
     };
     struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
     int c, rc = CLI_OK, help = 0;
@@ -69,7 +72,7 @@ static int parse(int argc, char **argv, gen_opts *g)
     }
     optind = 1;
     opterr = 0; /* our own one-line messages */
-    while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:qh", opts, NULL)) != -1) {
+    while (rc == CLI_OK && (c = cli_getopt(argc, argv, ":o:qh", opts)) != -1) {
         switch (c) {
         case 'o':
             if (g->nout == CLI_MAX_OUTPUTS) {
@@ -97,11 +100,12 @@ static int parse(int argc, char **argv, gen_opts *g)
             }
             break;
         case 'h': help = 1; break;
+        case CLI_GETOPT_REPORTED: rc = CLI_USAGE; break;
         default:
             if (c == CLI_PARAM_BASE + (int)(qc_param_find("tsp") - qc_param_table(&n_rows)) &&
                 strcmp(optarg, "concorde") == 0)
                 g->concorde = 1; /* the program, not a built-in method */
-            else if (!cli_pattern_take(&g->pat, c, optarg)) {
+            else if (!cli_pattern_take(&g->pat, c, optarg) && !cli_machine_take(&g->mach, c, optarg)) {
                 cli_bad_option("generate", argv[optind - 1], c);
                 rc = CLI_USAGE;
             }
@@ -161,7 +165,9 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
     cli_timer_mark(timer, "plan");
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = g->tie;
-    if (qc_stitch_plan(ctx, &res->path, NULL, &sp, plan) < 0)
+    sp.tie_length = g->mach.tie_length_mm;
+    sp.clip = g->mach.clip;
+    if (qc_stitch_plan(ctx, &res->path, region, &sp, plan) < 0)
         return cli_fail(ctx, "stitch plan", ctx->status);
     return CLI_OK;
 }
@@ -175,7 +181,62 @@ static int write_outputs(qc_ctx *ctx, const gen_opts *g, const int *fmt, const q
     io.region = region;
     io.svg_inches = g->pat.mm_per_unit == 25.4;
     io.feed_mm_min = g->feed;
+    io.pen_up = g->mach.raw[CLI_MACH_PEN_UP - CLI_MACH_BASE];
+    io.pen_down = g->mach.raw[CLI_MACH_PEN_DOWN - CLI_MACH_BASE];
     return cli_write_plans(ctx, g->out, fmt, g->nout, plan, &io);
+}
+
+/* --mirror, --rotate, --at: the finished plan and its outline move together.
+ * A .pat cannot hold a negative position: say which option put it there. */
+static int place(qc_ctx *ctx, const gen_opts *g, const int *fmt, qc_region *region,
+                 qc_plan *plan)
+{
+    qc_xform m;
+    qc_plan_estimate est;
+    double mpu = g->pat.mm_per_unit;
+    size_t i;
+
+    if (qc_place_xform(ctx, region, &g->mach.place, &m) < 0)
+        return cli_fail(ctx, "place", ctx->status);
+    qc_plan_transform(plan, &m);
+    qc_region_transform(region, &m);
+    qc_plan_estimate_get(plan, 0, 0, &est);
+    for (i = 0; i < g->nout; i++)
+        if (fmt[i] == QC_FORMAT_PAT && (est.bbox.min.x < -0.0005 * 25.4 ||
+                                        est.bbox.min.y < -0.0005 * 25.4)) {
+            cli_error("--at %g,%g %s puts the pattern's lower-left at (%g, %g) %s: a .pat "
+                      "needs x and y >= 0", g->mach.place.at.x / mpu, g->mach.place.at.y / mpu,
+                      cli_units_name(mpu), est.bbox.min.x / mpu, est.bbox.min.y / mpu,
+                      cli_units_name(mpu));
+            return CLI_USAGE;
+        }
+    return CLI_OK;
+}
+
+/* One line per file written: what, stitches, thread, time. */
+static void say_written(const gen_opts *g, const int *fmt, const qc_plan *plan,
+                        const cli_sewing *sew)
+{
+    qc_plan_estimate est;
+    int inches = g->pat.mm_per_unit == 25.4;
+    double thread, bobbins;
+    long secs;
+    size_t i;
+    char extra[48] = "";
+
+    qc_plan_estimate_get(plan, sew->spi, sew->speed_mm_s, &est);
+    thread = est.thread_mm / (inches ? 914.4 : 1000.0);
+    secs = (long)(est.seconds + 0.5);
+    bobbins = cli_bobbins(&est, sew);
+    if (bobbins > 0)
+        snprintf(extra, sizeof extra, ", %.1f bobbin%s", bobbins, bobbins == 1 ? "" : "s");
+    for (i = 0; i < g->nout; i++) {
+        fputs("wrote ", stderr);
+        cli_put_escaped(stderr, strcmp(g->out[i], "-") == 0 ? "stdout" : g->out[i]);
+        fprintf(stderr, " (%s): %lu stitches at %g spi, %.1f %s of thread%s, about %ld min %02ld s\n",
+                qc_format_name(fmt[i]), (unsigned long)est.stitches, sew->spi, thread,
+                inches ? "yd" : "m", extra, secs / 60, secs % 60);
+    }
 }
 
 int cmd_generate(int argc, char **argv)
@@ -188,6 +249,7 @@ int cmd_generate(int argc, char **argv)
     qc_result res = {0};
     qc_plan plan = {0};
     cli_timer timer;
+    cli_sewing sew;
     int fmt[CLI_MAX_OUTPUTS];
     int rc;
 
@@ -203,6 +265,8 @@ int cmd_generate(int argc, char **argv)
     }
     rc = cli_pattern_finish(&ctx, &g.pat);
     if (rc == CLI_OK)
+        rc = cli_machine_finish(&g.mach, g.pat.mm_per_unit);
+    if (rc == CLI_OK)
         rc = output_formats(&g, fmt);
     cli_timer_start(&timer, &ctx);
     if (rc == CLI_OK)
@@ -213,14 +277,21 @@ int cmd_generate(int argc, char **argv)
         rc = make_plan(&ctx, &g, &region, &given, motifs.n ? &motifs : NULL, &res, &plan,
                        &timer);
     cli_timer_mark(&timer, "write");
+    if (rc == CLI_OK && g.mach.placed)
+        rc = place(&ctx, &g, fmt, &region, &plan);
     if (rc == CLI_OK)
         rc = cli_check_inside(plan.p, plan.n, &res.params, &region,
                               g.pat.region != NULL ? g.pat.region : "rect:8x8", "generate");
     if (rc == CLI_OK)
         rc = write_outputs(&ctx, &g, fmt, &region, &plan);
     cli_timer_mark(&timer, NULL);
+    sew.spi = g.mach.spi;
+    sew.speed_mm_s = g.mach.speed_mm_s;
+    sew.bobbin_mm = g.mach.bobbin_mm;
+    if (rc == CLI_OK && !g.quiet)
+        say_written(&g, fmt, &plan, &sew);
     if (rc == CLI_OK && g.stats)
-        cli_stats_print(stderr, &res, &plan, &timer);
+        cli_stats_print(stderr, &res, &plan, &timer, &sew);
     if (rc == CLI_OK && g.upload != NULL)
         rc = cli_usb_send_file(g.out[0], g.upload, g.quiet);
     qc_plan_free(&ctx, &plan);

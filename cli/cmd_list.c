@@ -44,8 +44,12 @@ int cmd_list(int argc, char **argv)
     } else if (strcmp(what, "formats") == 0) {
         for (i = 1; i < QC_FORMAT_COUNT; i++)
             printf("%-6s %s\n", qc_format_name((int)i), qc_format_ext((int)i));
-    } else if (strcmp(what, "--help") == 0) {
-        puts("usage: quiltc list families|params|motifs|formats");
+    } else if (strcmp(what, "--help") == 0 || what[0] == '\0') {
+        puts("usage: quiltc list WHAT, one of:\n"
+             "  families   the pattern families (--family)\n"
+             "  params     every parameter with its unit, range and default\n"
+             "  motifs     the built-in motifs (--motif)\n"
+             "  formats    the machine formats quiltc writes and reads");
     } else {
         cli_error("list: unknown list '%s' (families, params, motifs or formats)", what);
         return CLI_USAGE;

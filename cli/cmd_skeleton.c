@@ -48,8 +48,10 @@ static int parse(int argc, char **argv, skel_opts *s)
         return CLI_RUNTIME;
     optind = 1;
     opterr = 0; /* our own one-line messages */
-    while (rc == CLI_OK && (c = getopt_long(argc, argv, ":o:h", opts, NULL)) != -1) {
-        if (c == 'o' && s->nout == CLI_MAX_OUTPUTS) {
+    while (rc == CLI_OK && (c = cli_getopt(argc, argv, ":o:h", opts)) != -1) {
+        if (c == CLI_GETOPT_REPORTED)
+            rc = CLI_USAGE;
+        else if (c == 'o' && s->nout == CLI_MAX_OUTPUTS) {
             cli_error("skeleton: at most %d outputs", CLI_MAX_OUTPUTS);
             rc = CLI_USAGE;
         } else if (c == 'o')
@@ -67,6 +69,7 @@ static int parse(int argc, char **argv, skel_opts *s)
         }
     }
     free(opts);
+    s->pat.fit_points = 1; /* --points without --region: the points' own box */
     if (rc == CLI_OK && s->path != NULL && strcmp(s->path, "mst") != 0 &&
         strcmp(s->path, "tsp") != 0) {
         cli_error("--path: unknown '%s' (mst or tsp)", s->path);

@@ -88,8 +88,18 @@ int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg)
     return 1;
 }
 
-/* A length: a number in the current units, or with its own suffix mm, cm, in. */
-static int parse_length(const char *s, double mm_per_unit, double *mm)
+void cli_length_range(const char *name, double mm, double lo, double hi, double mm_per_unit)
+{
+    const char *u = cli_units_name(mm_per_unit);
+    char also[48] = "";
+
+    if (mm_per_unit != 1.0)
+        snprintf(also, sizeof also, " (%.4g mm)", mm);
+    cli_error("%s %.4g %s%s out of range [%.4g, %.4g] %s", name, mm / mm_per_unit, u, also,
+              lo / mm_per_unit, hi / mm_per_unit, u);
+}
+
+int cli_parse_length(const char *s, double mm_per_unit, double *mm)
 {
     static const struct { const char *suffix; double mm; } units[] = {
         {"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}};
@@ -147,6 +157,15 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
             o->points_file = s;
             c = QC_POINTS_GIVEN;
         }
+        if (c < 0 && strcmp(row->name, "points") == 0 && (strchr(s, '.') || strchr(s, '/'))) {
+            char *buf;
+            size_t len;
+            if (cli_read_file(s, 1, &buf, &len) == 0) { /* else it said why: missing, ... */
+                free(buf);
+                cli_error("%s: cannot read '%s'", name, s);
+            }
+            return CLI_RUNTIME;
+        }
         if (c < 0) {
             cli_error("%s: unknown choice '%s' (one of %s%s)", name, s, row->choices,
                       strcmp(row->name, "points") == 0 ? ", or a CSV/TSPLIB file" : "");
@@ -163,7 +182,7 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
         qc_params_set_seed(&o->params, (uint64_t)seed);
         return CLI_OK;
     case QC_PARAM_LENGTH:
-        rc = parse_length(s, o->mm_per_unit, &v);
+        rc = cli_parse_length(s, o->mm_per_unit, &v);
         if (rc == -2) {
             cli_error("%s: '%s' is too large a length", name, s);
             return CLI_USAGE;
@@ -171,6 +190,10 @@ static int take_row(qc_ctx *ctx, cli_pattern_opts *o, const qc_param_info *row, 
         if (rc != 0) {
             cli_error("%s: '%s' is not a length (a number, optionally with mm, cm or in)",
                       name, s);
+            return CLI_USAGE;
+        }
+        if (!(v >= row->min && v <= row->max)) { /* in the user's units, not the library's mm */
+            cli_length_range(name, v, row->min, row->max, o->mm_per_unit);
             return CLI_USAGE;
         }
         break;
@@ -195,7 +218,7 @@ int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o)
         return CLI_USAGE;
     o->mm_per_unit = cli_units_mm(o->units);
     if (o->mm_per_unit == 0.0) {
-        cli_error("--units: unknown unit '%s' (in, mm or cm)", o->units);
+        cli_error("--units: unknown unit '%s' (in, inch, mm or cm)", o->units);
         return CLI_USAGE;
     }
     for (i = 0; i < nrows; i++)
@@ -263,11 +286,47 @@ static int load_points(qc_ctx *ctx, const cli_pattern_opts *o, qc_points *given)
     return CLI_OK;
 }
 
+/* The points' bounding box grown by the margin (and a hair, so the points
+ * on its edge are inside by the margin), as a rectangle region. */
+static int fit_region(qc_ctx *ctx, const cli_pattern_opts *o, const qc_points *given,
+                      qc_region *region)
+{
+    qc_params r;
+    qc_vec2 lo = given->v[0], hi = given->v[0], ring[4];
+    double m;
+    size_t i;
+
+    if (qc_params_resolve(ctx, &o->params, &r) < 0)
+        return cli_fail(ctx, "parameters", ctx->status);
+    for (i = 1; i < given->n; i++) {
+        lo.x = fmin(lo.x, given->v[i].x);
+        lo.y = fmin(lo.y, given->v[i].y);
+        hi.x = fmax(hi.x, given->v[i].x);
+        hi.y = fmax(hi.y, given->v[i].y);
+    }
+    m = r.margin * 1.001 + 0.01 + 1e-9 * fmax(fabs(hi.x) + fabs(hi.y), 1.0);
+    ring[0].x = lo.x - m, ring[0].y = lo.y - m;
+    ring[1].x = hi.x + m, ring[1].y = lo.y - m;
+    ring[2].x = hi.x + m, ring[2].y = hi.y + m;
+    ring[3].x = lo.x - m, ring[3].y = hi.y + m;
+    memset(region, 0, sizeof *region);
+    if (qc_region_add_ring(ctx, region, ring, 4) < 0 || qc_region_normalize(ctx, region) < 0) {
+        qc_region_free(ctx, region);
+        return cli_fail(ctx, o->points_file, ctx->status);
+    }
+    return CLI_OK;
+}
+
 int cli_pattern_load(qc_ctx *ctx, const cli_pattern_opts *o, qc_region *region,
                      qc_points *given)
 {
-    int rc = cli_load_region(ctx, o->region, o->mm_per_unit, region);
+    int rc;
 
+    if (o->fit_points && !o->region_given && o->points_file != NULL) {
+        rc = load_points(ctx, o, given);
+        return rc == CLI_OK ? fit_region(ctx, o, given, region) : rc;
+    }
+    rc = cli_load_region(ctx, o->region, o->mm_per_unit, region);
     if (rc != CLI_OK || o->points_file == NULL)
         return rc;
     return load_points(ctx, o, given);

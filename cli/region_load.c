@@ -39,6 +39,24 @@ static int read_svg(qc_ctx *ctx, const char *path, qc_region *out)
     return CLI_OK;
 }
 
+/* A shape whose sizes end in a unit, "rect:8x8in", "circle:20cm", takes
+ * that unit instead of --units, as lengths do. */
+static int shape(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
+{
+    static const char *const units[] = {"mm", "cm", "in"};
+    size_t n = strlen(spec), i;
+    char buf[128];
+
+    for (i = 0; i < 3; i++)
+        if (n > 2 && n < sizeof buf && strcmp(spec + n - 2, units[i]) == 0 &&
+            spec[n - 3] >= '0' && spec[n - 3] <= '9') {
+            memcpy(buf, spec, n - 2);
+            buf[n - 2] = '\0';
+            return qc_region_shape(ctx, buf, cli_units_mm(units[i]), out);
+        }
+    return qc_region_shape(ctx, spec, mm_per_unit, out);
+}
+
 int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
 {
     qc_bbox box;
@@ -48,7 +66,7 @@ int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region
         int rc = read_svg(ctx, spec, out);
         if (rc != CLI_OK)
             return rc;
-    } else if (qc_region_shape(ctx, spec, mm_per_unit, out) < 0) {
+    } else if (shape(ctx, spec, mm_per_unit, out) < 0) {
         cli_error("--region: %s", qc_errmsg(ctx));
         return CLI_USAGE;
     }

@@ -40,7 +40,13 @@ static void add_family_figures(cJSON *o, const qc_stats *s)
         cJSON_AddNumberToObject(o, "largest_gap_mm", s->largest_gap_mm);
 }
 
-void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const cli_timer *t)
+double cli_bobbins(const qc_plan_estimate *est, const cli_sewing *sew)
+{
+    return sew->bobbin_mm > 0 ? est->sewn_mm * 1.1 / sew->bobbin_mm : 0;
+}
+
+void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const cli_timer *t,
+                     const cli_sewing *sew)
 {
     cJSON *o = cJSON_CreateObject(), *ms;
     qc_plan_estimate est;
@@ -49,7 +55,7 @@ void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const c
 
     if (o == NULL)
         return;
-    qc_plan_estimate_get(plan, 0, 0, &est);
+    qc_plan_estimate_get(plan, sew->spi, sew->speed_mm_s, &est);
     cJSON_AddStringToObject(o, "family", qc_family_name(res->params.family));
     cJSON_AddNumberToObject(o, "points", (double)res->stats.points);
     cJSON_AddNumberToObject(o, "edges", (double)res->stats.edges);
@@ -60,7 +66,10 @@ void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const c
     cJSON_AddNumberToObject(o, "stitch_points", (double)plan->n);
     cJSON_AddNumberToObject(o, "stitches", (double)est.stitches);
     cJSON_AddNumberToObject(o, "thread_mm", est.thread_mm);
+    cJSON_AddNumberToObject(o, "spi", sew->spi);
     cJSON_AddNumberToObject(o, "sew_seconds", est.seconds);
+    if (sew->bobbin_mm > 0)
+        cJSON_AddNumberToObject(o, "bobbins", cli_bobbins(&est, sew));
     add_family_figures(o, &res->stats);
     ms = cJSON_AddObjectToObject(o, "ms");
     for (i = 0; ms != NULL && i < t->n; i++)

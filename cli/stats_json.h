@@ -4,7 +4,16 @@
 
 #include "cli.h"
 
+/* How the estimate counts: stitches per inch, sewing speed, bobbin capacity
+ * (0: no bobbin count). */
+typedef struct cli_sewing {
+    double spi, speed_mm_s, bobbin_mm;
+} cli_sewing;
+
 /* Prints one line of JSON: counts, lengths, the stitch estimate, ms per stage. */
-void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const cli_timer *t);
+void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const cli_timer *t,
+                     const cli_sewing *sew);
+/* Bobbins for the sewn length (thread take-up as the top thread's), or 0. */
+double cli_bobbins(const qc_plan_estimate *est, const cli_sewing *sew);
 
 #endif

@@ -167,9 +167,14 @@ int cli_parse_u64(const char *s, unsigned long long *out)
     return 0;
 }
 
+const char *cli_units_name(double mm_per_unit)
+{
+    return mm_per_unit == 25.4 ? "in" : mm_per_unit == 10.0 ? "cm" : "mm";
+}
+
 double cli_units_mm(const char *units)
 {
-    if (strcmp(units, "in") == 0)
+    if (strcmp(units, "in") == 0 || strcmp(units, "inch") == 0 || strcmp(units, "inches") == 0)
         return 25.4;
     if (strcmp(units, "mm") == 0)
         return 1.0;

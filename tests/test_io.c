@@ -423,6 +423,25 @@ static void other_formats_should_match_golden_bytes(void)
     check_golden(QC_FORMAT_GCODE, NULL, "small.gcode");
     o.feed_mm_min = 2400.5;
     check_golden(QC_FORMAT_GCODE, &o, "small-feed.gcode");
+    o.pen_up = "M5";
+    o.pen_down = "M3 S1000";
+    check_golden(QC_FORMAT_GCODE, &o, "small-pen-m3.gcode");
+    o.pen_up = o.pen_down = "";
+    check_golden(QC_FORMAT_GCODE, &o, "small-no-pen.gcode");
+    o.pen_up = "G0 Z5\nG28"; /* a command must stay one line */
+    {
+        qc_plan plan;
+        membuf m;
+
+        memset(&m, 0, sizeof m);
+        m.fail_after = -1;
+        golden_plan(&plan);
+        TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_io_write(&ctx, QC_FORMAT_GCODE, &plan, &o, mem_write, &m));
+        TEST_ASSERT_EQUAL_size_t(0, m.n);
+        qc_plan_free(&ctx, &plan);
+        free(m.p);
+    }
+    o.pen_up = o.pen_down = NULL;
     o.feed_mm_min = -1;
     {
         qc_plan plan;
@@ -432,6 +451,40 @@ static void other_formats_should_match_golden_bytes(void)
         m.fail_after = -1;
         golden_plan(&plan);
         TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_io_write(&ctx, QC_FORMAT_GCODE, &plan, &o, mem_write, &m));
+        qc_plan_free(&ctx, &plan);
+        free(m.p);
+    }
+}
+
+/* A pen plotter's G-code (the default pen lines, or M5/M3) reads back with
+ * every jump a jump and every point where it was. */
+static void gcode_pen_lines_should_keep_jumps_on_reading(void)
+{
+    static const char *const ups[] = {NULL, "M5"}, *const downs[] = {NULL, "M3"};
+    size_t k, i;
+
+    for (k = 0; k < 2; k++) {
+        qc_plan plan, back = {0};
+        qc_io_opts o;
+        membuf m;
+
+        memset(&o, 0, sizeof o);
+        o.pen_up = ups[k];
+        o.pen_down = downs[k];
+        golden_plan(&plan);
+        encode(QC_FORMAT_GCODE, &plan, &o, &m);
+        TEST_ASSERT_EQUAL_INT(0, mem_write(&m, "", 1)); /* a NUL for strstr */
+        m.n--;
+        TEST_ASSERT_NOT_NULL(strstr(m.p, k == 0 ? "G0 Z5\nG0 X50.800 Y25.400\nG1 Z0\n"
+                                                : "M5\nG0 X50.800 Y25.400\nM3\n"));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_io_read(&ctx, QC_FORMAT_GCODE, m.p, m.n, &back));
+        TEST_ASSERT_EQUAL_size_t(plan.n, back.n);
+        for (i = 0; i < plan.n; i++) {
+            TEST_ASSERT_DOUBLE_WITHIN(0.0006, plan.p[i].x, back.p[i].x);
+            TEST_ASSERT_DOUBLE_WITHIN(0.0006, plan.p[i].y, back.p[i].y);
+            TEST_ASSERT_EQUAL_INT(plan.flags[i] & QC_ST_JUMP, back.flags[i] & QC_ST_JUMP);
+        }
+        qc_plan_free(&ctx, &back);
         qc_plan_free(&ctx, &plan);
         free(m.p);
     }
@@ -483,7 +536,12 @@ static void write_reader_samples(const char *dir)
     for (fmt = 1; fmt < QC_FORMAT_COUNT; fmt++) {
         membuf m;
 
-        encode(fmt, &plan, NULL, &m);
+        qc_io_opts o;
+
+        /* pystitch (an embroidery reader) takes a Z-only G1 for a stitch: no pen lines */
+        memset(&o, 0, sizeof o);
+        o.pen_up = o.pen_down = "";
+        encode(fmt, &plan, &o, &m);
         snprintf(path, sizeof path, "%s/sample%s", dir, qc_format_ext(fmt));
         write_file(path, m.p, m.n);
         free(m.p);
@@ -522,6 +580,7 @@ int main(void)
     RUN_TEST(read_pat_should_survive_mutated_input);
     RUN_TEST(svg_should_match_golden_bytes_in_mm_and_inches);
     RUN_TEST(other_formats_should_match_golden_bytes);
+    RUN_TEST(gcode_pen_lines_should_keep_jumps_on_reading);
     RUN_TEST(format_names_should_round_trip);
     if (getenv("QC_READERS_DIR") != NULL)
         RUN_TEST(reader_samples_should_be_written_when_asked);

@@ -47,6 +47,11 @@ typedef struct qc_io_opts {
     const qc_path *travel;   /* SVG: layer "ditch" drawn over the path in a third colour
                               * (a quilt's travel along seams, lines only); may be NULL */
     int dxf_outlines;        /* DXF: region's rings as closed polylines on layer OUTLINES */
+    /* G-code: a line sent before each jump and at the end (pen or needle up)
+     * and one after each jump (down), so a plotter does not draw the jumps.
+     * NULL = "G0 Z5" / "G1 Z0"; "" = no line. At most 64 printable ASCII
+     * characters, else QC_EINVAL. */
+    const char *pen_up, *pen_down;
 } qc_io_opts;
 
 /* Encodes plan as format through write(ud, ...), buffered (8 KiB chunks).

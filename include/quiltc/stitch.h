@@ -75,6 +75,30 @@ typedef struct qc_plan_estimate {
 void qc_plan_estimate_get(const qc_plan *plan, double spi, double speed_mm_s,
                           qc_plan_estimate *out);
 
+/* Placing a block on the quilt: mirror (QC_MIRROR_X negates x, a left-right
+ * mirror image; QC_MIRROR_Y negates y), then rotate counter-clockwise (y up)
+ * by rotate_deg, then move so the outline's bounding box has its lower-left
+ * corner at `at` (mm). */
+enum { QC_MIRROR_X = 1, QC_MIRROR_Y = 2 };
+typedef struct qc_place {
+    double rotate_deg; /* [-360, 360] */
+    unsigned mirror;   /* QC_MIRROR_* bits */
+    qc_vec2 at;        /* mm, within 1e6 */
+} qc_place;
+typedef struct qc_xform {
+    double a, b, c, d, tx, ty; /* x' = a x + b y + tx, y' = c x + d y + ty */
+} qc_xform;
+
+/* The map of *pl for the block outlined by frame (its vertices give the
+ * box). Quarter turns are exact. QC_OK, QC_EINVAL (NULL or empty frame) or
+ * QC_ERANGE (rotation or place out of range). */
+int qc_place_xform(qc_ctx *ctx, const qc_region *frame, const qc_place *pl, qc_xform *out);
+/* Maps every point of plan by m (rigid maps keep stitch lengths). */
+void qc_plan_transform(qc_plan *plan, const qc_xform *m);
+/* Maps every vertex of r by m; a mirror image also reverses each ring, so
+ * a normalized region stays normalized (outer rings CCW, holes CW). */
+void qc_region_transform(qc_region *r, const qc_xform *m);
+
 #ifdef __cplusplus
 }
 #endif

@@ -47,8 +47,8 @@ def main():
     pieces, cur = [], None
     for line in open(out):
         w = line.split()
-        if not w or w[0] not in ("G0", "G1"):
-            continue
+        if not w or w[0] not in ("G0", "G1") or not w[1].startswith("X"):
+            continue  # the pen lines (G0 Z5, G1 Z0)
         p = (float(w[1][1:]), float(w[2][1:]))
         if w[0] == "G0":
             cur = [p]
