@@ -48,7 +48,7 @@ check fake_concorde_tour_used_and_its_files_removed fake_tour_used
 not_permutation() {
     fake f '{ echo "$N"; seq 0 $((N - 2)); echo 0; } > "$SOL"; exit 0'
     mkdir -p tmp && TMPDIR=$WORK/tmp PATH=$WORK/f:$PATH expect_fail 1 \
-        "concorde's tour is not a permutation of the 81 points" "$QC" $SKEL -o np.json &&
+        "concorde's tour is not a permutation of the" "$QC" $SKEL -o np.json &&
         [ ! -e np.json ] && no_leak
 }
 check tour_that_is_not_a_permutation_refused not_permutation
@@ -57,7 +57,7 @@ check tour_that_is_not_a_permutation_refused not_permutation
 failed_exit() {
     fake f '{ echo "$N"; seq 0 $((N - 1)); } > "$SOL"; exit 255'
     mkdir -p tmp && TMPDIR=$WORK/tmp PATH=$WORK/f:$PATH expect_fail 1 \
-        "concorde failed on 81 points" "$QC" $SKEL -o fe.json && [ ! -e fe.json ] && no_leak
+        "concorde failed on" "$QC" $SKEL -o fe.json && [ ! -e fe.json ] && no_leak
 }
 check failed_exit_refused failed_exit
 
@@ -77,7 +77,7 @@ timeout_kills() {
     fake f 'echo $$ > "$WORK_OUT/pid"; trap "" TERM; sleep 60 & echo $! > "$WORK_OUT/child"; wait; sleep 60'
     mkdir -p tmp && t0=$(date +%s) &&
         WORK_OUT=$WORK TMPDIR=$WORK/tmp PATH=$WORK/f:$PATH expect_fail 1 \
-            "no tour from concorde within 0.3 s on 81 points" "$QC" $SKEL --tsp-time 300 -o to.json &&
+            "no tour from concorde within 0.3 s on" "$QC" $SKEL --tsp-time 300 -o to.json &&
         [ $(($(date +%s) - t0)) -lt 10 ] && [ ! -e to.json ] && no_leak &&
         gone "$(cat pid)" && gone "$(cat child)"
 }
