@@ -94,7 +94,7 @@ check plan_unknown_match_key plan_case '[{"match": {"ID": "p*"}}]' 'rules\[0\]\.
 check plan_bad_colour plan_case '[{"match": {"fill": "#12345"}}]' "rules\[0\]\.match\.fill: '#12345' is not a colour"
 check plan_rule_matching_nothing plan_case '[{"match": {"id": "star-*"}, "family": "echo"}, {"family": "stipple"}]' 'rules\[0\] matches no patch'
 check plan_unknown_family plan_case '[{"family": "quilting"}]' 'rules\[0\]\.family: unknown choice'
-check plan_bad_parameter plan_case '[{"params": {"spacing": -1}}]' 'rules\[0\]: spacing -25.4 mm out of range'
+check plan_bad_parameter plan_case '[{"params": {"spacing": -1}}]' 'rules\[0\].params.spacing -1 in (-25.4 mm) out of range'
 check plan_wrong_type plan_case '[{"match": {"class": 3}}]' 'rules\[0\]\.match\.class: expected a string'
 check plan_not_a_list plan_case '{"rules": []}' 'plan: rules: expected a list'
 check plan_malformed_json plan_case '[{"family": }]' 'malformed JSON at byte'
