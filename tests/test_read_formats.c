@@ -282,6 +282,8 @@ static void test_malformed_files_should_fail_naming_the_line(void)
     REFUSES(QC_FORMAT_IQP, "StitchV2        \0\0\0\0\0\0\0\0\7\0\0\0\100\0\0\0", QC_EFORMAT,
             "longer than the file");
     REFUSES(QC_FORMAT_IQP, "StitchV1", QC_EFORMAT, "StitchV2");
+    REFUSES(QC_FORMAT_IQP, "StitchV2        \0\0\0\0\0\0\0\0\7\0\0\0\4\0\0\0\377\377\377\177\0\0\0\0\2\0\0\0",
+            QC_ERANGE, "iqp byte 24: point");
     REFUSES(QC_FORMAT_IQP, "StitchV2        \0\0\0\0\0\0\0\0\2\0\0\0x", QC_EFORMAT,
             "after the end record");
 }

@@ -78,6 +78,7 @@ void qc__reader_init(qc__reader *r, qc_ctx *ctx, qc_plan *plan, const char *form
     r->ctx = ctx;
     r->plan = plan;
     r->format = format;
+    r->where_word = "line";
 }
 
 void qc__reader_lift(qc__reader *r)
@@ -89,16 +90,16 @@ static int check_point(qc__reader *r, qc_vec2 p)
 {
     if (!(fabs(p.x) <= READ_MAX_MM && fabs(p.y) <= READ_MAX_MM))
         return qc__fail(r->ctx, QC_ERANGE,
-                        "%s line %lu: point (%g, %g) mm is not a number or beyond 1e6 mm",
-                        r->format, r->where, p.x, p.y);
+                        "%s %s %lu: point (%g, %g) mm is not a number or beyond 1e6 mm",
+                        r->format, r->where_word, r->where, p.x, p.y);
     return QC_OK;
 }
 
 static int push(qc__reader *r, qc_vec2 p, unsigned flags)
 {
     if (r->plan->n >= QC_MAX_PLAN_POINTS)
-        return qc__fail(r->ctx, QC_ELIMIT, "%s line %lu: more than %lu points",
-                        r->format, r->where, (unsigned long)QC_MAX_PLAN_POINTS);
+        return qc__fail(r->ctx, QC_ELIMIT, "%s %s %lu: more than %lu points",
+                        r->format, r->where_word, r->where, (unsigned long)QC_MAX_PLAN_POINTS);
     return qc_plan_push(r->ctx, r->plan, p, flags);
 }
 

@@ -31,6 +31,7 @@ typedef struct qc__reader {
     qc_plan *plan;
     const char *format;  /* "qli", for messages */
     unsigned long where; /* line (or byte offset) for messages */
+    const char *where_word; /* "line", or "byte" for binary formats */
     qc_vec2 pos;         /* the pen, mm */
     int placed;          /* pos was set by a move (else the first move only places it) */
     int down;            /* the needle is down at pos (a piece is open) */

@@ -51,6 +51,7 @@ int qc__read_iqp(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
     size_t at = IQP_HEADER;
 
     qc__reader_init(&r, ctx, out, "iqp");
+    r.where_word = "byte";
     if (len < IQP_HEADER || memcmp(buf, "StitchV2", 8) != 0)
         return bad(ctx, 0, "not an IntelliQuilter file (no StitchV2 header)");
     for (;;) {
