@@ -9,11 +9,12 @@
 #include <cjson/cJSON.h>
 
 #include "cli.h"
+#include "json_fields.h"
 
 #define MAX_BLOCKS 1024
 #define MAX_JOB_OUTPUTS CLI_MAX_OUTPUTS
 #define MAX_JOB_BYTES ((size_t)1 << 20)
-#define VALUE_LEN 48
+#define VALUE_LEN CLI_JSON_VALUE_LEN
 #define MAX_AT_MM 1e5 /* block corners: 100 m is beyond any quilt */
 #define JOB_MAX_TSP_MS 600000.0 /* the blocks' tsp-time together: one block's maximum */
 

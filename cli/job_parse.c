@@ -7,50 +7,17 @@
 
 static int bad(const char *where, const char *key, const char *what)
 {
-    cli_error("job: %s%s%s: %s", where, *key ? "." : "", key, what);
-    return CLI_USAGE;
+    return cli_json_bad("job: ", where, key, what);
 }
 
 static int check_keys(const cJSON *obj, const char *where, const char *const *known)
 {
-    const cJSON *it;
-
-    cJSON_ArrayForEach(it, obj) {
-        size_t i;
-        int ok = 0;
-        for (i = 0; known[i] != NULL; i++)
-            ok |= strcmp(it->string, known[i]) == 0;
-        if (!ok)
-            return bad(where, it->string, "unknown key");
-    }
-    return CLI_OK;
+    return cli_json_check_keys("job: ", obj, where, known);
 }
 
 static int take_params(block *b, const cJSON *params)
 {
-    const cJSON *it;
-    char key[96];
-    size_t nrows;
-    const qc_param_info *table = qc_param_table(&nrows);
-
-    if (!cJSON_IsObject(params))
-        return bad(b->where, "params", "expected an object");
-    cJSON_ArrayForEach(it, params) {
-        const qc_param_info *row = qc_param_find(it->string);
-        size_t r;
-        snprintf(key, sizeof key, "params.%s", it->string);
-        if (row == NULL || strcmp(row->name, "family") == 0)
-            return bad(b->where, key, "unknown parameter (see 'quiltc list params')");
-        r = (size_t)(row - table);
-        if (cJSON_IsNumber(it))
-            snprintf(b->values[r], VALUE_LEN, "%.17g", it->valuedouble);
-        else if (cJSON_IsString(it) && strlen(it->valuestring) < VALUE_LEN)
-            strcpy(b->values[r], it->valuestring);
-        else
-            return bad(b->where, key, "expected a number or a short string");
-        b->pat.raw[r] = b->values[r];
-    }
-    return CLI_OK;
+    return cli_json_take_params("job: ", params, b->where, b->values, &b->pat);
 }
 
 static int take_block(const job *j, block *b, const cJSON *o)

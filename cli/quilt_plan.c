@@ -6,23 +6,12 @@
 
 static int bad(const char *where, const char *key, const char *what)
 {
-    cli_error("%s%s%s: %s", where, *key ? "." : "", key, what);
-    return CLI_USAGE;
+    return cli_json_bad("", where, key, what);
 }
 
 static int check_keys(const cJSON *obj, const char *where, const char *const *known)
 {
-    const cJSON *it;
-
-    cJSON_ArrayForEach(it, obj) {
-        size_t i;
-        int ok = 0;
-        for (i = 0; known[i] != NULL; i++)
-            ok |= strcmp(it->string, known[i]) == 0;
-        if (!ok)
-            return bad(where, it->string, "unknown key");
-    }
-    return CLI_OK;
+    return cli_json_check_keys("", obj, where, known);
 }
 
 int cli_glob(const char *p, const char *s)
@@ -85,30 +74,7 @@ static int take_match(plan_rule *r, const cJSON *m)
 
 static int take_params(plan_rule *r, const cJSON *params)
 {
-    const cJSON *it;
-    char key[96];
-    size_t nrows;
-    const qc_param_info *table = qc_param_table(&nrows);
-
-    if (!cJSON_IsObject(params))
-        return bad(r->where, "params", "expected an object");
-    cJSON_ArrayForEach(it, params) {
-        const qc_param_info *row = qc_param_find(it->string);
-        size_t k;
-
-        snprintf(key, sizeof key, "params.%s", it->string);
-        if (row == NULL || strcmp(row->name, "family") == 0)
-            return bad(r->where, key, "unknown parameter (see 'quiltc list params')");
-        k = (size_t)(row - table);
-        if (cJSON_IsNumber(it))
-            snprintf(r->values[k], PLAN_VALUE_LEN, "%.17g", it->valuedouble);
-        else if (cJSON_IsString(it) && strlen(it->valuestring) < PLAN_VALUE_LEN)
-            strcpy(r->values[k], it->valuestring);
-        else
-            return bad(r->where, key, "expected a number or a short string");
-        r->pat.raw[k] = r->values[k];
-    }
-    return CLI_OK;
+    return cli_json_take_params("", params, r->where, r->values, &r->pat);
 }
 
 static int take_rule(plan_rule *r, const cJSON *o)

@@ -13,9 +13,10 @@
 #include <cjson/cJSON.h>
 
 #include "cli.h"
+#include "json_fields.h"
 
 #define MAX_PLAN_RULES 256
-#define PLAN_VALUE_LEN 48
+#define PLAN_VALUE_LEN CLI_JSON_VALUE_LEN
 
 typedef struct plan_rule {
     const char *id, *cls, *label; /* "*" wildcards; NULL matches anything */
