@@ -109,6 +109,29 @@ static inline char *fuzz_copy(const uint8_t *data, size_t size)
     return b;
 }
 
+/* A writer's sink that keeps the bytes, to read them back. */
+typedef struct fuzz_grow {
+    char *b;
+    size_t n, cap;
+} fuzz_grow;
+
+static inline int fuzz_grow_fn(void *ud, const void *data, size_t len)
+{
+    fuzz_grow *g = ud;
+
+    if (g->n + len > g->cap) {
+        size_t cap = (g->n + len) * 2;
+        char *nb = realloc(g->b, cap);
+        if (nb == NULL)
+            return -1;
+        g->b = nb;
+        g->cap = cap;
+    }
+    memcpy(g->b + g->n, data, len);
+    g->n += len;
+    return 0;
+}
+
 /* Writers' sinks: count bytes; fail after `fail_after` calls when non-zero. */
 typedef struct fuzz_sink {
     size_t bytes, calls, fail_after;

@@ -17,28 +17,6 @@ static void on_finding(void *ud, size_t line, const char *kind, const char *text
     f->n++;
 }
 
-typedef struct grow {
-    char *b;
-    size_t n, cap;
-} grow;
-
-static int grow_fn(void *ud, const void *data, size_t len)
-{
-    grow *g = ud;
-
-    if (g->n + len > g->cap) {
-        size_t cap = (g->n + len) * 2;
-        char *nb = realloc(g->b, cap);
-        if (nb == NULL)
-            return -1;
-        g->b = nb;
-        g->cap = cap;
-    }
-    memcpy(g->b + g->n, data, len);
-    g->n += len;
-    return 0;
-}
-
 static void check_plan(const qc_plan *pl)
 {
     size_t i;
@@ -64,10 +42,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rc = qc_io_read_pat(&ctx, buf, size, &plan);
     fuzz_check_status(&ctx, rc, "read_pat status");
     if (rc == QC_OK) {
-        grow g = {0};
+        fuzz_grow g = {0};
 
         check_plan(&plan);
-        rc = qc_io_write(&ctx, QC_FORMAT_PAT, &plan, NULL, grow_fn, &g);
+        rc = qc_io_write(&ctx, QC_FORMAT_PAT, &plan, NULL, fuzz_grow_fn, &g);
         fuzz_check_status(&ctx, rc, "write_pat status");
         if (rc == QC_OK) {
             rc = qc_io_read_pat(&ctx, g.b, g.n, &again);

@@ -8,28 +8,6 @@
 static const int formats[] = {QC_FORMAT_QLI, QC_FORMAT_DXF, QC_FORMAT_HPGL, QC_FORMAT_QCC,
                               QC_FORMAT_IQP, QC_FORMAT_BQM, QC_FORMAT_GCODE};
 
-typedef struct grow {
-    char *b;
-    size_t n, cap;
-} grow;
-
-static int grow_fn(void *ud, const void *data, size_t len)
-{
-    grow *g = ud;
-
-    if (g->n + len > g->cap) {
-        size_t cap = (g->n + len) * 2;
-        char *nb = realloc(g->b, cap);
-        if (nb == NULL)
-            return -1;
-        g->b = nb;
-        g->cap = cap;
-    }
-    memcpy(g->b + g->n, data, len);
-    g->n += len;
-    return 0;
-}
-
 static void check_plan(const qc_plan *pl)
 {
     size_t i;
@@ -57,10 +35,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rc = qc_io_read(&ctx, fmt, buf, size - 1, &plan);
     fuzz_check_status(&ctx, rc, "read status");
     if (rc == QC_OK) {
-        grow g = {0};
+        fuzz_grow g = {0};
 
         check_plan(&plan);
-        rc = qc_io_write(&ctx, fmt, &plan, NULL, grow_fn, &g);
+        rc = qc_io_write(&ctx, fmt, &plan, NULL, fuzz_grow_fn, &g);
         fuzz_check_status(&ctx, rc, "write status");
         if (rc == QC_OK) {
             rc = qc_io_read(&ctx, fmt, g.b, g.n, &again);
