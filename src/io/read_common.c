@@ -43,6 +43,17 @@ void qc__skip_blanks(const char *s, size_t n, size_t *pos)
         (*pos)++;
 }
 
+void qc__trim_blanks(const char **s, size_t *n)
+{
+    size_t i = 0;
+
+    qc__skip_blanks(*s, *n, &i);
+    *s += i;
+    *n -= i;
+    while (*n > 0 && ((*s)[*n - 1] == ' ' || (*s)[*n - 1] == '\t'))
+        (*n)--;
+}
+
 /* Digits with at most one point, after an optional sign: G-code and HP-GL
  * have no exponents, so "X1E5" must not read as 100000. */
 int qc__scan_num(const char *s, size_t n, size_t *pos, double *v)

@@ -21,6 +21,8 @@ QC__HIDDEN int qc__lines_next(qc__lines *it, const char **ls, size_t *n);
 
 /* Skips spaces and tabs at s[*pos]. */
 QC__HIDDEN void qc__skip_blanks(const char *s, size_t n, size_t *pos);
+/* Narrows [*s, *s + *n) to drop leading and trailing spaces and tabs. */
+QC__HIDDEN void qc__trim_blanks(const char **s, size_t *n);
 /* A decimal number at s[*pos] (blanks skipped first): sign, digits, point,
  * exponent; no locale, no hex, no inf/nan. 1 and *pos past it, or 0. */
 QC__HIDDEN int qc__scan_num(const char *s, size_t n, size_t *pos, double *v);

@@ -68,12 +68,9 @@ static int next_group(dxf *d)
     d->code = (int)c;
     if (!qc__lines_next(&d->it, &s, &n))
         return bad(d, "a group code without its value"), -1;
-    i = 0;
-    qc__skip_blanks(s, n, &i);
-    while (n > i && (s[n - 1] == ' ' || s[n - 1] == '\t'))
-        n--;
-    d->val = s + i;
-    d->nval = n - i;
+    qc__trim_blanks(&s, &n);
+    d->val = s;
+    d->nval = n;
     d->r.where = d->it.line;
     return 1;
 }

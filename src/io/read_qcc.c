@@ -36,10 +36,8 @@ int qc__read_qcc(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
         double x, y;
 
         r.where = it.line;
-        qc__skip_blanks(s, n, &i);
-        while (n > i && (s[n - 1] == ' ' || s[n - 1] == '\t'))
-            n--;
-        if (i == n)
+        qc__trim_blanks(&s, &n);
+        if (n == 0)
             continue;
         if (!header) {
             if (n - i != 3 || memcmp(s + i, "c s", 3) != 0)

@@ -108,16 +108,15 @@ int qc__read_qli(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
 
         r.where = it.line;
         while (a <= n) {
-            size_t b = a, e;
+            size_t b = a, m;
+            const char *c = ls + a;
 
             while (b < n && ls[b] != ';')
                 b++;
-            e = b;
-            qc__skip_blanks(ls, e, &a);
-            while (e > a && (ls[e - 1] == ' ' || ls[e - 1] == '\t'))
-                e--;
-            QC__TRY(command(&r, &needle_off, ls + a, e - a));
-            if (n == 0 || (a < n && starts(ls + a, n - a, "REM")))
+            m = b - a;
+            qc__trim_blanks(&c, &m);
+            QC__TRY(command(&r, &needle_off, c, m));
+            if (n == 0 || starts(c, (size_t)(ls + n - c), "REM"))
                 break;
             a = b + 1;
         }
