@@ -31,6 +31,19 @@ void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
     }
 }
 
+void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region)
+{
+    size_t k, i, rs = 0;
+
+    for (k = 0; k < region->nrings; k++) {
+        size_t end = region->ring_end[k], p = end - 1;
+
+        for (i = rs; i < end; p = i++)
+            qc__gap_seed_segment(g, region->v[p], region->v[i]);
+        rs = end;
+    }
+}
+
 void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
 {
     g->h = resolution;
@@ -122,7 +135,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     qc__gap_grid g;
     qc_bbox box;
     unsigned char *mask = NULL;
-    size_t i, j, k, best_at = 0, rs = 0;
+    size_t i, j, k, best_at = 0;
     double best = -1.0, r;
     int rc;
 
@@ -167,13 +180,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
             b = e;
         }
     }
-    for (k = 0; k < region->nrings; k++) {
-        size_t end = region->ring_end[k], p = end - 1;
-
-        for (i = rs; i < end; p = i++)
-            qc__gap_seed_segment(&g, region->v[p], region->v[i]);
-        rs = end;
-    }
+    qc__gap_seed_region(&g, region);
     rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;

@@ -23,6 +23,8 @@ QC__HIDDEN void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolutio
 /* Zeroes the cells segment ab passes through (points up to a cell outside
  * the box go to its edge cells). */
 QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);
+/* Zeroes the cells every ring edge of region passes through. */
+QC__HIDDEN void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region);
 /* f becomes each cell's squared distance (in cells) to the nearest zero cell. */
 QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
 

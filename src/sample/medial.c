@@ -156,7 +156,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     near_grid ng;
     unsigned char *mask = NULL;
     ridge *rg = NULL;
-    size_t cells, k, nr = 0, i, j, rs = 0;
+    size_t cells, k, nr = 0, i, j;
     qc_bbox box = qc_region_bbox(region);
     int rc, have_ix = 0;
 
@@ -182,12 +182,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
         goto out;
     for (k = 0; k < cells; k++)
         g.f[k] = (float)QC__GAP_FAR;
-    for (k = 0; k < region->nrings; k++) {
-        size_t end = region->ring_end[k], p = end - 1;
-        for (i = rs; i < end; p = i++)
-            qc__gap_seed_segment(&g, region->v[p], region->v[i]);
-        rs = end;
-    }
+    qc__gap_seed_region(&g, region);
     rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;
