@@ -1,4 +1,6 @@
 /* Small geometric helpers the stages share, so their answers agree to the bit. */
+#include <math.h>
+
 #include "internal.h"
 
 double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
@@ -49,4 +51,20 @@ size_t qc__region_ring_of(const qc_region *r, size_t v)
             lo = mid + 1;
     }
     return lo;
+}
+
+size_t qc__nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q)
+{
+    size_t i, best = 0;
+    double bd = HUGE_VAL;
+
+    for (i = 0; i < n; i++) {
+        double dx = p[i].x - q.x, dy = p[i].y - q.y, dd = dx * dx + dy * dy;
+
+        if (dd < bd) {
+            bd = dd;
+            best = i;
+        }
+    }
+    return best;
 }

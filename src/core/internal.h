@@ -49,6 +49,9 @@ QC__HIDDEN int qc__scan_number(const char *s, size_t n, size_t *pos, double *v);
  * formula every stage uses, so their answers agree to the bit. */
 QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
 
+/* Index of the point of p[0..n) nearest q (ties: the lowest); 0 when n == 0. */
+QC__HIDDEN size_t qc__nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);
+
 /* The bounding box of p[0..n), n >= 1. */
 QC__HIDDEN qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n);
 /* cell, grown by half until a grid of that cell over box has at most

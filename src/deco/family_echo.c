@@ -36,21 +36,6 @@ static qc_vec2 start_point(const qc_region *region, const qc_params *params)
     return s;
 }
 
-static uint32_t nearest_vertex(const qc_points *p, qc_vec2 q)
-{
-    size_t i, best = 0;
-    double bd = HUGE_VAL;
-
-    for (i = 0; i < p->n; i++) {
-        double dx = p->v[i].x - q.x, dy = p->v[i].y - q.y, dd = dx * dx + dy * dy;
-        if (dd < bd) {
-            bd = dd;
-            best = i;
-        }
-    }
-    return (uint32_t)best;
-}
-
 int qc_deco_echo(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                  const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
                  qc_stats *stats)
@@ -98,7 +83,7 @@ int qc_deco_echo(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     memset(&jo, 0, sizeof jo);
     jo.gap = GAP * d;
     jo.reach = REACH * d;
-    jo.start = nearest_vertex(&rings.pts, start_point(region, params));
+    jo.start = (uint32_t)qc__nearest_point(rings.pts.v, rings.pts.n, start_point(region, params));
     jo.spiral = params->echo_join == QC_ECHO_SPIRAL;
     jo.sdf = &s;
     jo.vmin = l0;

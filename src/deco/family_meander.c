@@ -117,22 +117,6 @@ static int seed_curve(qc_ctx *ctx, const qc_region *region, const qc_params *prm
     return rc;
 }
 
-/* Index of the vertex of c nearest q (ties: the lowest). */
-static size_t nearest_vertex(const qc_points *c, qc_vec2 q)
-{
-    size_t i, best = 0;
-    double bd = HUGE_VAL;
-
-    for (i = 0; i < c->n; i++) {
-        double dx = c->v[i].x - q.x, dy = c->v[i].y - q.y, r = dx * dx + dy * dy;
-        if (r < bd) {
-            bd = r;
-            best = i;
-        }
-    }
-    return best;
-}
-
 /* The boundary point nearest p. */
 static qc_vec2 to_boundary(const qc__sdf *s, qc_vec2 p)
 {
@@ -150,7 +134,7 @@ static int sew(qc_ctx *ctx, const qc_points *c, const qc__sdf *s, const qc_regio
     int given = qc_params_given(prm, QC_PARAM_ID_START_X) ||
                 qc_params_given(prm, QC_PARAM_ID_START_Y);
     qc_vec2 start = given ? QC__V2(prm->start_x, prm->start_y) : qc_region_bbox(region).min;
-    size_t n = c->n, k = nearest_vertex(c, start), i;
+    size_t n = c->n, k = qc__nearest_point(c->v, c->n, start), i;
     qc_points r = {0};
     int rc = QC_OK;
 
