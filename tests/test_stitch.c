@@ -25,6 +25,45 @@ static double seg(const qc_plan *p, size_t i)
     return hypot(p->p[i].x - p->p[i - 1].x, p->p[i].y - p->p[i - 1].y);
 }
 
+/* A first segment just longer than the minimum: an odd tie-off stopping
+ * tie_length along it used to leave a stitch of 0.036-0.076 mm to its end.
+ * Every stitch after the start tie is now at least the minimum, ties or
+ * splits, for first segments from the minimum to twice the tie length past it. */
+static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
+{
+    qc_stitch_params sp;
+    int ties, k, split;
+
+    memset(&sp, 0, sizeof sp);
+    sp.tie_length = 0.5;
+    for (split = 0; split <= 1; split++)
+        for (ties = 1; ties <= 4; ties++)
+            for (k = 0; k <= 20; k++) {
+                qc_path path = {0};
+                qc_plan plan;
+                double first = 0.508 + 0.05 * k;
+                size_t i;
+
+                sp.tie_stitches = ties;
+                sp.max_segment = split ? 0.6 : 0;
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 0)));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 5)));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+                for (i = 1; i < plan.n; i++) {
+                    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, seg(&plan, i));
+                    if (!(plan.flags[i] & QC_ST_TIE))
+                        TEST_ASSERT_TRUE(seg(&plan, i) >= 0.5 * 0.6 - 1e-9 &&
+                                         (split || seg(&plan, i) >= 0.508 - 1e-9));
+                }
+                /* the piece still reaches its corner and its end */
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12, first, plan.p[plan.n - 1].x);
+                qc_plan_free(&ctx, &plan);
+                qc_path_free(&ctx, &path);
+            }
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 static void plan_should_merge_short_and_split_long_segments(void)
 {
     qc_path path = {0};
@@ -281,6 +320,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(plan_should_merge_short_and_split_long_segments);
     RUN_TEST(plan_should_add_jumps_and_tie_offs_per_piece);
+    RUN_TEST(plan_should_leave_no_short_stitch_after_a_tie_off);
     RUN_TEST(plan_should_flatten_curves_within_tolerance);
     RUN_TEST(plan_should_clip_to_region);
     RUN_TEST(clip_should_keep_exactly_the_inside_length);

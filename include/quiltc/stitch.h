@@ -45,7 +45,9 @@ typedef struct qc_stitch_params {
  * one point dropped. Each piece's first point has QC_ST_JUMP; after it and
  * after its last point come tie_stitches points flagged QC_ST_TIE going back
  * and forth over tie_length (at most the adjacent segment's length) along
- * the piece. params may be NULL (all defaults). clip_region may be NULL.
+ * the piece; where stopping tie_length along the first segment would leave
+ * a stitch shorter than min_segment to its end, the start tie runs to that
+ * end instead. params may be NULL (all defaults). clip_region may be NULL.
  * Errors: QC_EEMPTY (nothing to sew), QC_ERANGE (bad tolerance/lengths, a
  * path coordinate NaN or beyond 1e6 mm), QC_ELIMIT (more than
  * QC_MAX_PLAN_POINTS points, refused before the plan grows), QC_ENOMEM; *out

@@ -132,47 +132,75 @@ static size_t merge(const qc_vec2 *v, size_t n, double min_seg, qc_vec2 *m)
     return k;
 }
 
-/* N stitches back and forth between at and at + L along towards. */
-static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards,
-                   const resolved *r)
+/* N stitches back and forth between at and at + l along towards; returns
+ * where the needle stops (far for an odd N, at for an even one). */
+static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, double l,
+                   const resolved *r, qc_vec2 *stop)
 {
-    double d = dist(at, towards), l = fmin(r->tie_len, d);
+    double d = dist(at, towards);
     qc_vec2 far;
     int k;
 
     far.x = at.x + (towards.x - at.x) / d * l;
     far.y = at.y + (towards.y - at.y) / d * l;
+    if (l >= d)
+        far = towards; /* exactly on the next point, not a rounding away */
     for (k = 1; k <= r->ties; k++)
         QC__TRY(qc_plan_push(ctx, out, (k & 1) ? far : at, QC_ST_TIE));
+    *stop = (r->ties & 1) ? far : at;
     return QC_OK;
+}
+
+/* The start tie's length along the first segment of length d: tie_len, but
+ * when stopping short of the next point would leave a stitch below the
+ * minimum, the tie runs all the way to it. */
+static double start_tie_length(double d, const resolved *r)
+{
+    return d - r->tie_len < r->min_seg ? d : r->tie_len;
+}
+
+/* The stitch from a to b, split into equal parts no longer than max_seg. */
+static int sew_to(qc_ctx *ctx, qc_plan *out, qc_vec2 a, qc_vec2 b, const resolved *r)
+{
+    double d = dist(a, b);
+
+    if (r->max_seg > 0 && d > r->max_seg) {
+        double parts = ceil(d / r->max_seg);
+        size_t j, np = (size_t)parts;
+
+        for (j = 1; j < np; j++) {
+            double t = (double)j / parts;
+            qc_vec2 q;
+
+            q.x = a.x + (b.x - a.x) * t;
+            q.y = a.y + (b.y - a.y) * t;
+            QC__TRY(qc_plan_push(ctx, out, q, 0));
+        }
+    }
+    return qc_plan_push(ctx, out, b, 0);
 }
 
 static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
                       const resolved *r)
 {
+    qc_vec2 cur, stop;
     size_t i;
 
     QC__TRY(qc_plan_push(ctx, out, m[0], QC_ST_JUMP));
-    QC__TRY(tie_off(ctx, out, m[0], m[1], r));
-    for (i = 1; i < n; i++) {
-        double d = dist(m[i - 1], m[i]);
-
-        if (r->max_seg > 0 && d > r->max_seg) {
-            double parts = ceil(d / r->max_seg);
-            size_t j, np = (size_t)parts;
-
-            for (j = 1; j < np; j++) {
-                double t = (double)j / parts;
-                qc_vec2 q;
-
-                q.x = m[i - 1].x + (m[i].x - m[i - 1].x) * t;
-                q.y = m[i - 1].y + (m[i].y - m[i - 1].y) * t;
-                QC__TRY(qc_plan_push(ctx, out, q, 0));
-            }
-        }
-        QC__TRY(qc_plan_push(ctx, out, m[i], 0));
+    cur = m[0];
+    if (r->ties > 0) {
+        QC__TRY(tie_off(ctx, out, m[0], m[1], start_tie_length(dist(m[0], m[1]), r), r,
+                        &cur));
     }
-    return tie_off(ctx, out, m[n - 1], m[n - 2], r);
+    for (i = 1; i < n; i++) {
+        if (dist(cur, m[i]) > 0) /* the start tie may already stand on m[1] */
+            QC__TRY(sew_to(ctx, out, cur, m[i], r));
+        cur = m[i];
+    }
+    if (r->ties == 0)
+        return QC_OK;
+    return tie_off(ctx, out, m[n - 1], m[n - 2], fmin(r->tie_len, dist(m[n - 1], m[n - 2])),
+                   r, &stop);
 }
 
 /* The points emit_piece makes for the n merged points m (a double, so a
