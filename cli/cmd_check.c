@@ -41,7 +41,8 @@ static void usage(FILE *f)
 {
     fputs("usage: quiltc check FILE [options]   (FILE: .pat, .qli, .dxf, .plt, .qcc, .iqp, .bqm, .gcode, .svg)\n"
           "Reports every dialect fault and geometric problem; exit 0 when sewable.\n"
-          "  --max-jumps N       needle-up moves allowed after the start (default 0)\n"
+          "  --max-jumps N       needle-up moves allowed after the start (default 0); jumps\n"
+          "                      with a tie-off on both sides are thread cuts, not counted\n"
           "  --min-segment LEN   shorter stitches are faults (default 0.1mm)\n"
           "  --max-segment LEN   longer stitches are faults (default: no limit)\n"
           "  --no-crossing       self-crossings are faults (loop motifs cross by design)\n"
@@ -126,10 +127,49 @@ static int parse(int argc, char **argv, check_opts *o)
     return CLI_OK;
 }
 
+/* Two points the same within two PAT units (each point is rounded on its
+ * own, to 0.001 in in the coarsest format). */
+static int same_point(qc_vec2 a, qc_vec2 b)
+{
+    return hypot(a.x - b.x, a.y - b.y) <= 0.06;
+}
+
+/* A tie-off: the needle goes back and forth over the same stitch, so a
+ * piece [s, e) starts tied when its third point is its first again and
+ * ends tied when its last point is the one two before it. quiltc's --tie 2
+ * and more make both; a stray jump from a foreign file has neither. */
+static int starts_tied(const qc_plan *p, size_t s, size_t e)
+{
+    return e - s >= 3 && !same_point(p->p[s], p->p[s + 1]) && same_point(p->p[s], p->p[s + 2]);
+}
+
+static int ends_tied(const qc_plan *p, size_t s, size_t e)
+{
+    return e - s >= 3 && !same_point(p->p[e - 1], p->p[e - 2]) &&
+           same_point(p->p[e - 1], p->p[e - 3]);
+}
+
+/* Jumps with a tie-off on both sides: thread cuts by design, not faults. */
+static size_t tied_jumps(const qc_plan *p)
+{
+    size_t i, s = 0, prev_s = 0, tied = 0;
+
+    for (i = 1; i <= p->n; i++) {
+        if (i < p->n && !(p->flags[i] & QC_ST_JUMP))
+            continue;
+        /* piece [s, i) ends here; the jump into it came after [prev_s, s) */
+        if (s > 0 && ends_tied(p, prev_s, s) && starts_tied(p, s, i))
+            tied++;
+        prev_s = s;
+        s = i;
+    }
+    return tied;
+}
+
 /* Jumps, length, box and segment lengths of the sewn pieces. */
 static void measure(const check_opts *o, const qc_plan *p, tally *t)
 {
-    size_t i, jumps = 0, segs = 0;
+    size_t i, jumps = 0, segs = 0, tied;
     double len = 0, shortest = HUGE_VAL, longest = 0;
     qc_plan_estimate est;
     qc_bbox b;
@@ -166,9 +206,12 @@ static void measure(const check_opts *o, const qc_plan *p, tally *t)
            b.max.y / 25.4);
     if (segs > 0)
         printf("segment lengths: %.3f .. %.3f mm\n", shortest, longest);
-    if (jumps > o->max_jumps)
-        finding(t, "%.0f jumps (needle-up moves), more than %.0f allowed", (double)jumps,
-                (double)o->max_jumps);
+    tied = tied_jumps(p);
+    if (tied > 0)
+        printf("thread cuts (jumps with a tie-off on both sides): %lu\n", (unsigned long)tied);
+    if (jumps - tied > o->max_jumps)
+        finding(t, "%.0f jumps (needle-up moves) without a tie-off on both sides, more than %.0f "
+                "allowed", (double)(jumps - tied), (double)o->max_jumps);
 }
 
 static int crossings(qc_ctx *ctx, const check_opts *o, const qc_plan *p, tally *t)

@@ -200,6 +200,32 @@ JSON
 }
 check job_names_are_relative_to_the_job_file job_relative_names
 
+# A job's jumps between tie-offs are thread cuts by design: check passes its
+# own outputs (any format), while the same quilt without tie-offs, or a jump
+# put into a file by hand, is still flagged.
+job_jumps_designed() {
+    "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat -o quilt.qli &&
+        "$QC" check quilt.pat > c.txt && grep -q 'thread cuts .*: 3$' c.txt &&
+        "$QC" check quilt.qli > /dev/null || { cat c.txt; return 1; }
+    sed 's/"tie": 3/"tie": 0/' "$ROOT/examples/quilt.json" > untied.json &&
+        "$QC" job untied.json -o untied.pat || return 1
+    "$QC" check untied.pat > u.txt
+    [ $? -eq 1 ] && grep -q 'finding: 3 jumps .* without a tie-off' u.txt || { cat u.txt; return 1; }
+    # one stray jump in the middle of the tied quilt: G00 on a stitched line
+    awk 'NR == 200 { sub(/G01/, "G00") } { print }' quilt.pat > stray.pat
+    "$QC" check stray.pat > s.txt
+    [ $? -eq 1 ] && grep -q 'finding: 1 jumps' s.txt || { cat s.txt; return 1; }
+}
+check job_jumps_between_tie_offs_are_thread_cuts job_jumps_designed
+
+# No stitch below the minimum right after a tie-off (meander seed 2 made one
+# of 0.036 mm): check with the generator's own minimum passes.
+tie_short_stitch() {
+    "$QC" generate -q --family meander --region rect:3x3 --tie 3 --seed 2 -o m.pat &&
+        "$QC" check --min-segment 0.4mm m.pat > m.txt || { grep finding m.txt | head -3; return 1; }
+}
+check no_short_stitch_after_a_tie_off tie_short_stitch
+
 # quiltc check finds each kind of fault in deliberately broken files.
 check_finds() { # FILE PATTERN: exit 1 and a line matching PATTERN
     "$QC" check "$ROOT/tests/bad/pat/$1" --region rect:8x8 --no-crossing > out.txt
@@ -210,7 +236,7 @@ check check_finds_decimals check_finds decimals.pat "X has 2 and Y 3 decimals"
 check check_finds_lf_endings check_finds lf_endings.pat "expected CRLF"
 check check_finds_unknown_command check_finds unknown_command.pat "unknown command 'G05"
 check check_finds_missing_m02 check_finds missing_m02.pat "missing the final M02"
-check check_finds_jumps check_finds jump.pat "1 jumps (needle-up moves), more than 0"
+check check_finds_jumps check_finds jump.pat "1 jumps (needle-up moves) without a tie-off on both sides, more than 0"
 check check_finds_short_stitch check_finds short_stitch.pat "segment of 0.051 mm shorter"
 check check_finds_points_outside check_finds outside.pat "segments outside the region, up to"
 check check_finds_self_crossing check_finds crossing.pat "1 self-crossings"

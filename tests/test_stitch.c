@@ -50,6 +50,8 @@ static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 0)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 5)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+                for (i = 1; i <= (size_t)ties; i++) /* the tie keeps its length */
+                    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.5, seg(&plan, i));
                 for (i = 1; i < plan.n; i++) {
                     TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, seg(&plan, i));
                     if (!(plan.flags[i] & QC_ST_TIE))

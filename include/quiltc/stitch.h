@@ -45,9 +45,10 @@ typedef struct qc_stitch_params {
  * one point dropped. Each piece's first point has QC_ST_JUMP; after it and
  * after its last point come tie_stitches points flagged QC_ST_TIE going back
  * and forth over tie_length (at most the adjacent segment's length) along
- * the piece; where stopping tie_length along the first segment would leave
- * a stitch shorter than min_segment to its end, the start tie runs to that
- * end instead. params may be NULL (all defaults). clip_region may be NULL.
+ * the piece; points closer than min_segment to where the start tie leaves
+ * the needle are dropped (if that would drop the piece's end, the tie runs
+ * to the second point instead), so no stitch after it is shorter than
+ * min_segment. params may be NULL (all defaults). clip_region may be NULL.
  * Errors: QC_EEMPTY (nothing to sew), QC_ERANGE (bad tolerance/lengths, a
  * path coordinate NaN or beyond 1e6 mm), QC_ELIMIT (more than
  * QC_MAX_PLAN_POINTS points, refused before the plan grows), QC_ENOMEM; *out

@@ -132,31 +132,51 @@ static size_t merge(const qc_vec2 *v, size_t n, double min_seg, qc_vec2 *m)
     return k;
 }
 
-/* N stitches back and forth between at and at + l along towards; returns
- * where the needle stops (far for an odd N, at for an even one). */
-static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, double l,
-                   const resolved *r, qc_vec2 *stop)
+static qc_vec2 along(qc_vec2 at, qc_vec2 towards, double l)
 {
     double d = dist(at, towards);
-    qc_vec2 far;
+    qc_vec2 q;
+
+    if (l >= d)
+        return towards; /* exactly on the next point, not a rounding away */
+    q.x = at.x + (towards.x - at.x) / d * l;
+    q.y = at.y + (towards.y - at.y) / d * l;
+    return q;
+}
+
+/* N stitches back and forth between at and at + l along towards. */
+static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, double l,
+                   const resolved *r)
+{
+    qc_vec2 far = along(at, towards, l);
     int k;
 
-    far.x = at.x + (towards.x - at.x) / d * l;
-    far.y = at.y + (towards.y - at.y) / d * l;
-    if (l >= d)
-        far = towards; /* exactly on the next point, not a rounding away */
     for (k = 1; k <= r->ties; k++)
         QC__TRY(qc_plan_push(ctx, out, (k & 1) ? far : at, QC_ST_TIE));
-    *stop = (r->ties & 1) ? far : at;
     return QC_OK;
 }
 
-/* The start tie's length along the first segment of length d: tie_len, but
- * when stopping short of the next point would leave a stitch below the
- * minimum, the tie runs all the way to it. */
-static double start_tie_length(double d, const resolved *r)
+/* The start tie's length (*l) and the first point sewn after it. An odd tie
+ * leaves the needle l along the first segment; points closer than min_seg
+ * to it are dropped as merge() drops them, so no stitch after the tie is
+ * shorter than the minimum. If that would drop the piece's last point, the
+ * tie runs to m[1] instead (and m[1] is where the needle stands). */
+static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l)
 {
-    return d - r->tie_len < r->min_seg ? d : r->tie_len;
+    qc_vec2 stop;
+    size_t i = 1;
+
+    *l = fmin(r->tie_len, dist(m[0], m[1]));
+    if (!(r->ties & 1))
+        return 1;
+    stop = along(m[0], m[1], *l);
+    while (i + 1 < n && dist(stop, m[i]) < r->min_seg)
+        i++;
+    if (dist(stop, m[i]) < r->min_seg) {
+        *l = dist(m[0], m[1]);
+        return 1;
+    }
+    return i;
 }
 
 /* The stitch from a to b, split into equal parts no longer than max_seg. */
@@ -183,24 +203,25 @@ static int sew_to(qc_ctx *ctx, qc_plan *out, qc_vec2 a, qc_vec2 b, const resolve
 static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
                       const resolved *r)
 {
-    qc_vec2 cur, stop;
-    size_t i;
+    qc_vec2 cur = m[0];
+    size_t i = 1;
+    double l;
 
     QC__TRY(qc_plan_push(ctx, out, m[0], QC_ST_JUMP));
-    cur = m[0];
     if (r->ties > 0) {
-        QC__TRY(tie_off(ctx, out, m[0], m[1], start_tie_length(dist(m[0], m[1]), r), r,
-                        &cur));
+        i = start_tie(m, n, r, &l);
+        QC__TRY(tie_off(ctx, out, m[0], m[1], l, r));
+        if (r->ties & 1)
+            cur = along(m[0], m[1], l);
     }
-    for (i = 1; i < n; i++) {
-        if (dist(cur, m[i]) > 0) /* the start tie may already stand on m[1] */
+    for (; i < n; i++) {
+        if (dist(cur, m[i]) > 0) /* the tie may already stand on m[1] */
             QC__TRY(sew_to(ctx, out, cur, m[i], r));
         cur = m[i];
     }
     if (r->ties == 0)
         return QC_OK;
-    return tie_off(ctx, out, m[n - 1], m[n - 2], fmin(r->tie_len, dist(m[n - 1], m[n - 2])),
-                   r, &stop);
+    return tie_off(ctx, out, m[n - 1], m[n - 2], fmin(r->tie_len, dist(m[n - 1], m[n - 2])), r);
 }
 
 /* The points emit_piece makes for the n merged points m (a double, so a
