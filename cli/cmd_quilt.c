@@ -173,25 +173,6 @@ static int load_plan(const quilt_opts *q, quilt_plan *plan)
     return rc;
 }
 
-/* The top's lower-left corner becomes the origin, as for a block (PAT
- * refuses negative coordinates; the patterns stay inside the top). */
-static void shift_positive(qc_quilt_result *res, qc_region *out)
-{
-    qc_bbox b = qc_region_bbox(out);
-    double minx = b.min.x, miny = b.min.y;
-    size_t i;
-
-    qc_region_translate(out, -minx, -miny);
-    for (i = 0; i < res->path.npt; i++) {
-        res->path.pt[i].x -= minx;
-        res->path.pt[i].y -= miny;
-    }
-    for (i = 0; i < res->ditch.npt; i++) {
-        res->ditch.pt[i].x -= minx;
-        res->ditch.pt[i].y -= miny;
-    }
-}
-
 static void print_stats(const qc_patches *ps, const qc_quilt_result *res,
                         const plan_rule *const *chosen, const qc_plan *plan, const cli_timer *t)
 {
@@ -275,7 +256,7 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     if (rc == CLI_OK)
         rc = cli_quilt_outlines(ctx, &top.ps, &drawn);
     if (rc == CLI_OK)
-        shift_positive(&top.res, &drawn);
+        qc_quilt_to_origin(&top.res, &drawn); /* PAT refuses negative coordinates */
     cli_timer_mark(&timer, "plan");
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = q->tie;

@@ -14,28 +14,6 @@ static int check_keys(const cJSON *obj, const char *where, const char *const *kn
     return cli_json_check_keys("", obj, where, known);
 }
 
-int cli_glob(const char *p, const char *s)
-{
-    const char *star = NULL, *resume = NULL;
-
-    while (*s != '\0') {
-        if (*p == '*') {
-            star = p++;
-            resume = s;
-        } else if (*p == *s) {
-            p++;
-            s++;
-        } else if (star != NULL) {
-            p = star + 1;
-            s = ++resume;
-        } else
-            return 0;
-    }
-    while (*p == '*')
-        p++;
-    return *p == '\0';
-}
-
 static int take_match(plan_rule *r, const cJSON *m)
 {
     static const char *const known[] = {"id", "class", "label", "fill", NULL};
@@ -56,17 +34,17 @@ static int take_match(plan_rule *r, const cJSON *m)
         if (!cJSON_IsString(v))
             return bad(where, *k, "expected a string");
         if (strcmp(*k, "id") == 0)
-            r->id = v->valuestring;
+            r->match.id = v->valuestring;
         else if (strcmp(*k, "class") == 0)
-            r->cls = v->valuestring;
+            r->match.cls = v->valuestring;
         else if (strcmp(*k, "label") == 0)
-            r->label = v->valuestring;
-        else if (!qc_color_parse(v->valuestring, &r->fill)) {
+            r->match.label = v->valuestring;
+        else if (!qc_color_parse(v->valuestring, &r->match.fill)) {
             cli_error("%s.fill: '%s' is not a colour (#rgb, #rrggbb, rgb(r, g, b) or a name "
                       "such as navy)", where, v->valuestring);
             return CLI_USAGE;
         } else
-            r->has_fill = 1;
+            r->match.has_fill = 1;
     }
     r->has_match = 1;
     return CLI_OK;
@@ -150,44 +128,13 @@ void cli_quilt_plan_free(qc_ctx *ctx, quilt_plan *p)
     memset(p, 0, sizeof *p);
 }
 
-static int glob_opt(const char *pattern, const char *s)
-{
-    return pattern == NULL || cli_glob(pattern, s != NULL ? s : "");
-}
-
-/* class is a space-separated list: the rule's pattern may match any one. */
-static int class_match(const char *pattern, const char *cls)
-{
-    char one[128];
-    const char *s = cls;
-
-    if (pattern == NULL)
-        return 1;
-    while (s != NULL && *s != '\0') {
-        size_t n = strcspn(s, " \t\n");
-        if (n > 0 && n < sizeof one) {
-            memcpy(one, s, n);
-            one[n] = '\0';
-            if (cli_glob(pattern, one))
-                return 1;
-        }
-        s += n;
-        s += strspn(s, " \t\n");
-    }
-    return 0;
-}
-
 plan_rule *cli_quilt_plan_match(quilt_plan *p, const qc_patch *patch)
 {
     size_t i;
 
     for (i = 0; i < p->n; i++) {
-        plan_rule *r = &p->rule[i];
-
-        if (glob_opt(r->id, patch->id) && class_match(r->cls, patch->cls) &&
-            glob_opt(r->label, patch->label) &&
-            (!r->has_fill || (patch->has_fill && patch->fill == r->fill)))
-            return r;
+        if (qc_patch_matches(&p->rule[i].match, patch))
+            return &p->rule[i];
     }
     return NULL;
 }

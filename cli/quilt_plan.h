@@ -19,9 +19,8 @@
 #define PLAN_VALUE_LEN CLI_JSON_VALUE_LEN
 
 typedef struct plan_rule {
-    const char *id, *cls, *label; /* "*" wildcards; NULL matches anything */
-    uint32_t fill;
-    int has_fill, has_match;
+    qc_patch_match match;         /* id, class, label, fill (qc_patch_matches) */
+    int has_match;
     int none;                     /* "family": "none": leave unquilted */
     cli_pattern_opts pat;         /* the command line's options, then the rule's */
     char values[64][PLAN_VALUE_LEN];
@@ -45,8 +44,6 @@ int cli_quilt_plan_parse(quilt_plan *p, const cJSON *root, const cli_pattern_opt
 void cli_quilt_plan_free(qc_ctx *ctx, quilt_plan *p);
 /* The first rule matching patch, or NULL. */
 plan_rule *cli_quilt_plan_match(quilt_plan *p, const qc_patch *patch);
-/* '*' matches any run of characters. */
-int cli_glob(const char *pattern, const char *s);
 
 /* A top quilted by its plan (quilt_sew.c), shared by quiltc quilt and job. */
 typedef struct cli_quilt {

@@ -112,16 +112,7 @@ void cli_quilt_free(qc_ctx *ctx, cli_quilt *q)
 
 int cli_quilt_outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out)
 {
-    size_t i, k;
-
-    memset(out, 0, sizeof *out);
-    for (i = 0; i < ps->n; i++) {
-        const qc_region *r = &ps->p[i].region;
-        for (k = 0; k < r->nrings; k++) {
-            size_t s = k ? r->ring_end[k - 1] : 0;
-            if (qc_region_add_ring(ctx, out, r->v + s, r->ring_end[k] - s) < 0)
-                return cli_fail(ctx, "quilt", ctx->status);
-        }
-    }
+    if (qc_patches_outlines(ctx, ps, out) < 0)
+        return cli_fail(ctx, "quilt", ctx->status);
     return CLI_OK;
 }

@@ -10,7 +10,8 @@ WASM_LDFLAGS = -O3 -sMODULARIZE=1 -sEXPORT_ES6=1 -sEXPORT_NAME=createQuiltc \
              -sENVIRONMENT=web,worker -sFILESYSTEM=0 -sALLOW_MEMORY_GROWTH=1 \
              -sASSERTIONS=0 -sEXPORTED_FUNCTIONS=@wasm/exports.txt \
              -sEXPORTED_RUNTIME_METHODS=UTF8ToString,stringToUTF8,lengthBytesUTF8,HEAPU8,HEAPU32,HEAPF64
-WASM_OBJ    = $(patsubst %.c,$(WASM_OBJDIR)/%.o,$(LIB_SRC) wasm/quiltc_wasm.c)
+WASM_BIND_SRC = wasm/quiltc_wasm.c wasm/quiltc_wasm_top.c wasm/qcw_text.c
+WASM_OBJ    = $(patsubst %.c,$(WASM_OBJDIR)/%.o,$(LIB_SRC) $(WASM_BIND_SRC))
 WASM_PAGE   = $(patsubst wasm/web/%,$(WASM_DIR)/%,$(wildcard wasm/web/*))
 
 .PHONY: wasm serve
@@ -28,9 +29,9 @@ $(WASM_DIR)/%: wasm/web/%
 	@mkdir -p $(WASM_DIR)
 	cp $< $@
 
-$(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c wasm/quiltc_wasm.c wasm/quiltc_wasm.h $(BUILD)/libquiltc.a
+$(BUILD)/tests/qcw_native: tests/wasm/qcw_native.c $(WASM_BIND_SRC) wasm/quiltc_wasm.h wasm/qcw_internal.h $(BUILD)/libquiltc.a
 	@mkdir -p $(dir $@)
-	$(CC) $(BASE_CFLAGS) $(LDFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c wasm/quiltc_wasm.c $(BUILD)/libquiltc.a $(LIBM)
+	$(CC) $(BASE_CFLAGS) $(LDFLAGS) -Iwasm -o $@ tests/wasm/qcw_native.c $(WASM_BIND_SRC) $(BUILD)/libquiltc.a $(LIBM)
 
 SERVE_PORT ?= 8000
 serve: wasm

@@ -8,7 +8,6 @@
  * the context's trace hook.
  */
 #define _POSIX_C_SOURCE 200809L
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,25 +15,7 @@
 
 #include "quiltc.h"
 #include "quiltc_wasm.h"
-
-#define MAX_STAGES 16
-
-struct qcw_job {
-    qc_ctx ctx;
-    qc_region region;
-    qc_params params;
-    qc_motif_set motifs;
-    qc_result result;
-    qc_plan plan;
-    int svg_inches;
-    const char *stage[MAX_STAGES]; /* trace: stage names and start times */
-    double stage_ms[MAX_STAGES];
-    size_t nstages;
-    double plan_ms, total_ms;
-    unsigned char *bytes; /* last export */
-    size_t nbytes, bytes_cap;
-    char *json;           /* last JSON answer */
-};
+#include "qcw_internal.h"
 
 static double now_ms(void)
 {
@@ -68,9 +49,11 @@ qcw_job *qcw_new(void)
     return job;
 }
 
-static void drop_result(qcw_job *job)
+void qcw__drop_result(qcw_job *job)
 {
     qc_result_free(&job->ctx, &job->result);
+    qc_quilt_result_free(&job->ctx, &job->quilt);
+    job->sewn = 0;
     qc_plan_free(&job->ctx, &job->plan);
     job->nstages = 0;
     job->plan_ms = job->total_ms = 0.0;
@@ -80,7 +63,8 @@ void qcw_free(qcw_job *job)
 {
     if (job == NULL)
         return;
-    drop_result(job);
+    qcw__drop_result(job);
+    qcw__drop_top(job);
     qc_region_free(&job->ctx, &job->region);
     qc_motif_set_free(&job->ctx, &job->motifs);
     free(job->bytes);
@@ -98,172 +82,86 @@ const char *qcw_version(void)
     return qc_version();
 }
 
-/* A message of the binding's own (the library's are set by qc__fail). */
-static int fail(qcw_job *job, int status, const char *fmt, const char *arg)
-{
-    snprintf(job->ctx.msg, sizeof job->ctx.msg, fmt, arg);
-    job->ctx.status = status;
-    return status;
-}
-
-/* ---- JSON text over a growing heap string ---- */
-
-typedef struct text {
-    char *s;
-    size_t n, cap;
-    int failed;
-} text;
-
-static int grow(text *t, size_t need)
-{
-    size_t cap;
-    char *s;
-
-    if (t->failed)
-        return -1;
-    if (t->n + need < t->cap)
-        return 0;
-    cap = (t->cap ? t->cap * 2 : 1024) + need;
-    s = realloc(t->s, cap);
-    if (s == NULL) {
-        t->failed = 1;
-        return -1;
-    }
-    t->s = s;
-    t->cap = cap;
-    return 0;
-}
-
-#if defined(__GNUC__)
-static void add(text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-#endif
-static void add(text *t, const char *fmt, ...)
-{
-    va_list ap;
-    int k;
-
-    va_start(ap, fmt);
-    k = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (k < 0) {
-        t->failed = 1;
-        return;
-    }
-    if (grow(t, (size_t)k + 1) != 0)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(t->s + t->n, t->cap - t->n, fmt, ap);
-    va_end(ap);
-    t->n += (size_t)k;
-}
-
-/* A JSON string literal. */
-static void add_str(text *t, const char *s)
-{
-    add(t, "\"");
-    for (; s != NULL && *s != '\0'; s++) {
-        unsigned char c = (unsigned char)*s;
-
-        if (c == '"' || c == '\\')
-            add(t, "\\%c", c);
-        else if (c < 0x20)
-            add(t, "\\u%04x", c);
-        else
-            add(t, "%c", c);
-    }
-    add(t, "\"");
-}
-
-static const char *finish_json(qcw_job *job, text *t)
-{
-    free(job->json);
-    job->json = NULL;
-    if (t->failed || t->s == NULL)
-        free(t->s);
-    else
-        job->json = t->s;
-    return job->json != NULL ? job->json : "null";
-}
 
 const char *qcw_params_json(qcw_job *job)
 {
     static const char *const types[] = {"int", "enum", "real", "length", "seed"};
     size_t n, i;
     const qc_param_info *t = qc_param_table(&n);
-    text out = {0};
+    qcw_text out = {0};
 
-    add(&out, "[");
+    qcw__add(&out, "[");
     for (i = 0; i < n; i++) {
-        add(&out, "%s{\"name\":", i ? "," : "");
-        add_str(&out, t[i].name);
-        add(&out, ",\"help\":");
-        add_str(&out, t[i].help);
-        add(&out, ",\"unit\":");
-        add_str(&out, t[i].unit);
-        add(&out, ",\"type\":\"%s\",\"choices\":", types[t[i].type]);
-        add_str(&out, t[i].choices != NULL ? t[i].choices : "");
-        add(&out, ",\"min\":%.17g,\"max\":%.17g,\"def\":%.17g,\"def_per_spacing\":%.17g,"
+        qcw__add(&out, "%s{\"name\":", i ? "," : "");
+        qcw__add_str(&out, t[i].name);
+        qcw__add(&out, ",\"help\":");
+        qcw__add_str(&out, t[i].help);
+        qcw__add(&out, ",\"unit\":");
+        qcw__add_str(&out, t[i].unit);
+        qcw__add(&out, ",\"type\":\"%s\",\"choices\":", types[t[i].type]);
+        qcw__add_str(&out, t[i].choices != NULL ? t[i].choices : "");
+        qcw__add(&out, ",\"min\":%.17g,\"max\":%.17g,\"def\":%.17g,\"def_per_spacing\":%.17g,"
                   "\"families\":%lu}",
             t[i].min, t[i].max, t[i].def, t[i].def_per_spacing,
             (unsigned long)qc_param_families(&t[i]));
     }
-    add(&out, "]");
-    return finish_json(job, &out);
+    qcw__add(&out, "]");
+    return qcw__finish_json(job, &out);
 }
 
 /* Enum row value k (1-based) as its choice name. */
-static void add_choice(text *t, const char *choices, int k)
+static void add_choice(qcw_text *t, const char *choices, int k)
 {
     const char *s = choices;
 
     while (--k > 0 && s != NULL)
         s = strchr(s, '|') != NULL ? strchr(s, '|') + 1 : NULL;
     if (s == NULL) {
-        add(t, "null");
+        qcw__add(t, "null");
         return;
     }
-    add(t, "\"%.*s\"", (int)(strchr(s, '|') != NULL ? (size_t)(strchr(s, '|') - s) : strlen(s)), s);
+    qcw__add(t, "\"%.*s\"", (int)(strchr(s, '|') != NULL ? (size_t)(strchr(s, '|') - s) : strlen(s)), s);
 }
 
 /* Every row of resolved r as "name":value (enums by choice name, the seed
  * as a decimal string), in a JSON object. */
-static void add_resolved(text *out, const qc_params *r)
+static void add_resolved(qcw_text *out, const qc_params *r)
 {
     size_t n, i;
     const qc_param_info *t = qc_param_table(&n);
 
-    add(out, "{");
+    qcw__add(out, "{");
     for (i = 0; i < n; i++) {
-        add(out, "%s\"%s\":", i ? "," : "", t[i].name);
+        qcw__add(out, "%s\"%s\":", i ? "," : "", t[i].name);
         if (t[i].type == QC_PARAM_ENUM)
             add_choice(out, t[i].choices, (int)qc_params_get(r, &t[i]));
         else if (t[i].type == QC_PARAM_SEED)
-            add(out, "\"%llu\"", (unsigned long long)r->seed);
+            qcw__add(out, "\"%llu\"", (unsigned long long)r->seed);
         else
-            add(out, "%.17g", qc_params_get(r, &t[i]));
+            qcw__add(out, "%.17g", qc_params_get(r, &t[i]));
     }
-    add(out, "}");
+    qcw__add(out, "}");
 }
 
 const char *qcw_resolved_json(qcw_job *job)
 {
     qc_params r;
-    text out = {0};
+    qcw_text out = {0};
 
     qc_clear_error(&job->ctx);
     if (qc_params_resolve(&job->ctx, &job->params, &r) < 0)
         return NULL;
     add_resolved(&out, &r);
-    return finish_json(job, &out);
+    return qcw__finish_json(job, &out);
 }
 
 const char *qcw_families_json(qcw_job *job)
 {
     const qc_family_desc *f;
     size_t i;
-    text out = {0};
+    qcw_text out = {0};
 
-    add(&out, "[");
+    qcw__add(&out, "[");
     for (i = 0; (f = qc_family_info(i)) != NULL; i++) {
         qc_params p, r;
 
@@ -273,34 +171,34 @@ const char *qcw_families_json(qcw_job *job)
             free(out.s);
             return NULL;
         }
-        add(&out, "%s{\"name\":", i ? "," : "");
-        add_str(&out, f->name);
-        add(&out, ",\"summary\":");
-        add_str(&out, f->summary);
-        add(&out, ",\"id\":%d,\"points\":%s,\"tree\":%s,\"motifs\":%s", (int)f->id,
+        qcw__add(&out, "%s{\"name\":", i ? "," : "");
+        qcw__add_str(&out, f->name);
+        qcw__add(&out, ",\"summary\":");
+        qcw__add_str(&out, f->summary);
+        qcw__add(&out, ",\"id\":%d,\"points\":%s,\"tree\":%s,\"motifs\":%s", (int)f->id,
             f->needs & QC_FAMILY_NEEDS_POINTS ? "true" : "false",
             f->needs & QC_FAMILY_NEEDS_TREE ? "true" : "false",
             f->needs & QC_FAMILY_NEEDS_MOTIFS ? "true" : "false");
-        add(&out, ",\"defaults\":");
+        qcw__add(&out, ",\"defaults\":");
         add_resolved(&out, &r);
-        add(&out, "}");
+        qcw__add(&out, "}");
     }
-    add(&out, "]");
-    return finish_json(job, &out);
+    qcw__add(&out, "]");
+    return qcw__finish_json(job, &out);
 }
 
 const char *qcw_motifs_json(qcw_job *job)
 {
     size_t n = qc_motif_builtin_count(), i;
-    text out = {0};
+    qcw_text out = {0};
 
-    add(&out, "[");
+    qcw__add(&out, "[");
     for (i = 0; i < n; i++) {
-        add(&out, "%s", i ? "," : "");
-        add_str(&out, qc_motif_builtin_name(i));
+        qcw__add(&out, "%s", i ? "," : "");
+        qcw__add_str(&out, qc_motif_builtin_name(i));
     }
-    add(&out, "]");
-    return finish_json(job, &out);
+    qcw__add(&out, "]");
+    return qcw__finish_json(job, &out);
 }
 
 /* ---- region ---- */
@@ -323,6 +221,7 @@ static int place_region(qcw_job *job, int rc)
 
 int qcw_region_shape(qcw_job *job, const char *spec, double mm_per_unit)
 {
+    qcw__drop_top(job);
     qc_region_free(&job->ctx, &job->region);
     qc_clear_error(&job->ctx);
     return place_region(job, qc_region_shape(&job->ctx, spec, mm_per_unit, &job->region));
@@ -333,6 +232,7 @@ int qcw_region_svg(qcw_job *job, const char *svg, size_t len)
     qc_svg_opts opts;
 
     memset(&opts, 0, sizeof opts);
+    qcw__drop_top(job);
     qc_region_free(&job->ctx, &job->region);
     qc_clear_error(&job->ctx);
     return place_region(job, qc_io_read_svg_region(&job->ctx, svg, len, &opts, &job->region));
@@ -377,7 +277,7 @@ int qcw_seed(qcw_job *job, double hi, double lo)
 {
     qc_clear_error(&job->ctx);
     if (!(hi >= 0.0 && hi <= 4294967295.0 && lo >= 0.0 && lo <= 4294967295.0))
-        return fail(job, QC_ERANGE, "seed halves out of range%s", "");
+        return qcw__fail(job, QC_ERANGE, "seed halves out of range%s", "");
     qc_params_set_seed(&job->params, ((uint64_t)hi << 32) | (uint64_t)lo);
     return QC_OK;
 }
@@ -402,7 +302,7 @@ int qcw_run(qcw_job *job, int tie_stitches)
     double t0 = now_ms(), t1;
     int rc;
 
-    drop_result(job);
+    qcw__drop_result(job);
     qc_clear_error(&job->ctx);
     job->params.skip_gap_stat = 1; /* a live preview: the path is the same without it */
     rc = qc_generate(&job->ctx, &job->region, &job->params, NULL,
@@ -410,7 +310,7 @@ int qcw_run(qcw_job *job, int tie_stitches)
     if (rc == QC_OK) /* the same figure as --stats and `quiltc check` */
         rc = qc_result_measure(&job->ctx, &job->region, &job->result);
     if (rc < 0) {
-        drop_result(job);
+        qcw__drop_result(job);
         return rc;
     }
     t1 = now_ms();
@@ -420,7 +320,7 @@ int qcw_run(qcw_job *job, int tie_stitches)
     job->plan_ms = now_ms() - t1;
     job->total_ms = now_ms() - t0;
     if (rc < 0)
-        drop_result(job);
+        qcw__drop_result(job);
     return rc;
 }
 
@@ -443,13 +343,13 @@ const char *qcw_stats_json(qcw_job *job)
 {
     const qc_stats *s = &job->result.stats;
     qc_plan_estimate est;
-    text out = {0};
+    qcw_text out = {0};
     size_t i;
 
     qc_plan_estimate_get(&job->plan, 0, 0, &est);
-    add(&out, "{\"family\":");
-    add_str(&out, qc_family_name(job->result.params.family));
-    add(&out, ",\"points\":%lu,\"plan_points\":%lu,\"pieces\":%lu,\"path_length_mm\":%.3f,"
+    qcw__add(&out, "{\"family\":");
+    qcw__add_str(&out, qc_family_name(job->result.params.family));
+    qcw__add(&out, ",\"points\":%lu,\"plan_points\":%lu,\"pieces\":%lu,\"path_length_mm\":%.3f,"
               "\"stitches\":%lu,\"thread_mm\":%.1f,\"sew_seconds\":%.1f,\"jumps\":%lu,"
               "\"ties\":%lu,\"width_mm\":%.3f,\"height_mm\":%.3f,"
               "\"motifs_placed\":%lu,\"motifs_shrunk\":%lu,\"motifs_skipped\":%lu,"
@@ -463,12 +363,12 @@ const char *qcw_stats_json(qcw_job *job)
         (unsigned long)s->pebbles, s->largest_gap_mm, s->farthest_fabric_mm, s->seam_bare,
         job->result.params.spacing);
     for (i = 0; i + 1 < job->nstages; i++) {
-        add(&out, "%s", i ? "," : "");
-        add_str(&out, job->stage[i]);
-        add(&out, ":%.3f", job->stage_ms[i + 1] - job->stage_ms[i]);
+        qcw__add(&out, "%s", i ? "," : "");
+        qcw__add_str(&out, job->stage[i]);
+        qcw__add(&out, ":%.3f", job->stage_ms[i + 1] - job->stage_ms[i]);
     }
-    add(&out, "%s\"plan\":%.3f},\"total_ms\":%.3f}", i ? "," : "", job->plan_ms, job->total_ms);
-    return finish_json(job, &out);
+    qcw__add(&out, "%s\"plan\":%.3f},\"total_ms\":%.3f}", i ? "," : "", job->plan_ms, job->total_ms);
+    return qcw__finish_json(job, &out);
 }
 
 /* ---- export ---- */
@@ -499,12 +399,16 @@ int qcw_export(qcw_job *job, const char *format)
     qc_clear_error(&job->ctx);
     job->nbytes = 0;
     if (f < 0)
-        return fail(job, QC_EINVAL, "unknown format '%s'", format);
+        return qcw__fail(job, QC_EINVAL, "unknown format '%s'", format);
     if (job->plan.n == 0)
-        return fail(job, QC_EEMPTY, "nothing to export: generate a pattern first%s", "");
+        return qcw__fail(job, QC_EEMPTY, "nothing to export: generate a pattern first%s", "");
     memset(&io, 0, sizeof io);
     io.region = &job->region;
     io.svg_inches = job->svg_inches;
+    if (job->sewn) { /* a top: as quiltc quilt writes it */
+        io.travel = &job->quilt.ditch;
+        io.dxf_outlines = 1;
+    }
     return qc_io_write(&job->ctx, f, &job->plan, &io, collect, job);
 }
 

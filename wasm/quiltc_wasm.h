@@ -70,4 +70,36 @@ int qcw_export(qcw_job *job, const char *format);
 const unsigned char *qcw_export_data(const qcw_job *job);
 size_t qcw_export_size(const qcw_job *job);
 
+/* ---- quilt tops (as quiltc quilt TOP.svg [--plan P.json]) ----
+ * A top replaces the job's region: every closed shape of the SVG is a patch
+ * kept where drawn (qc_io_read_svg_patches); overlapping patches are refused
+ * naming both, with the place in mm_per_unit units called units. The job's
+ * parameters and motifs are every patch's defaults. */
+int qcw_top_svg(qcw_job *job, const char *svg, size_t len, double mm_per_unit,
+                const char *units);
+/* The patches as a JSON array of {id, class, label, fill ("#rrggbb" or
+ * null), element, line, rings: [[x, y, x, y, ...], ...]}, moved as the sewn
+ * top is (its lower-left corner at the origin). */
+const char *qcw_patches_json(qcw_job *job);
+/* The plan: ordered rules, the first that fits a patch chooses for it.
+ * qcw_rule_add appends a rule matching id, class and label ('*' wildcards;
+ * "" for any) and fill (a CSS colour, "" for any); qcw_rule_param and
+ * qcw_rule_none set the last rule's parameters (as qcw_param; the rest are
+ * the defaults) or leave its patches unquilted. */
+void qcw_rules_clear(qcw_job *job);
+int qcw_rule_add(qcw_job *job, const char *id, const char *cls, const char *label,
+                 const char *fill);
+int qcw_rule_param(qcw_job *job, const char *name, double value);
+int qcw_rule_none(qcw_job *job);
+/* Sews the top as one line (qc_quilt, join: 0 ditch, 1 jump), moves it to
+ * the origin and plans it with tie_stitches, as quiltc quilt does; then
+ * qcw_points/qcw_xy/qcw_flags/qcw_export give it (the export with the
+ * outlines and the ditch travel). A rule fitting no patch is an error. */
+int qcw_quilt(qcw_job *job, int join, int tie_stitches);
+/* The seam travel as a JSON array of pieces [x, y, x, y, ...] (mm). */
+const char *qcw_ditch_json(qcw_job *job);
+/* quiltc quilt --stats' figures: per patch (patch, id, line, rule, family,
+ * order, length_mm, largest_gap_mm, pieces) and the totals. */
+const char *qcw_quilt_stats_json(qcw_job *job);
+
 #endif

@@ -68,6 +68,25 @@ int qc_patches_overlap(const qc_patches *ps, double tol, size_t *a, size_t *b,
  * 1 and *rgb = 0xRRGGBB when understood, else 0. */
 int qc_color_parse(const char *s, uint32_t *rgb);
 
+/* How a plan's rule picks patches: every field given must fit. */
+typedef struct qc_patch_match {
+    const char *id, *cls, *label; /* '*' matches any run of characters; NULL: anything */
+    uint32_t fill;                /* 0xRRGGBB, when has_fill */
+    int has_fill;
+} qc_patch_match;
+
+/* 1 when '*'-pattern matches all of s. */
+int qc_glob(const char *pattern, const char *s);
+/* 1 when patch p fits m: id and label by qc_glob, class when any one of the
+ * patch's space-separated classes fits, fill exactly (a patch with no fill
+ * colour never fits a fill). A plan is an ordered list: the first rule that
+ * fits a patch chooses for it. */
+int qc_patch_matches(const qc_patch_match *m, const qc_patch *p);
+
+/* Every ring of every patch, in one region (to draw and to write as the
+ * outline layer). *out is zeroed first and empty on error. */
+int qc_patches_outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out);
+
 enum { QC_JOIN_DITCH = 0, QC_JOIN_JUMP = 1 };
 
 typedef struct qc_quilt_params {
@@ -125,6 +144,11 @@ typedef struct qc_quilt_result {
 int qc_quilt(qc_ctx *ctx, const qc_patches *ps, const qc_patch_job *jobs,
              const qc_quilt_params *params, qc_quilt_result *out);
 void qc_quilt_result_free(qc_ctx *ctx, qc_quilt_result *r);
+/* Moves the outlines and the result (path and ditch) so the outlines' lower
+ * left corner is the origin, as a block is placed (PAT refuses negative
+ * coordinates; the patterns stay inside the top). No allocation. */
+void qc_quilt_to_origin(qc_quilt_result *r, qc_region *outlines);
+
 
 #ifdef __cplusplus
 }

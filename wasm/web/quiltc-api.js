@@ -99,29 +99,13 @@ export class Quiltc {
   // seed: a decimal string or number (0 .. 2^64-1); motifs: a comma-separated
   // list of built-in names, or an array of names and { name, svg } objects.
   setParams(settings) {
-    const mm = unitScale(settings.units);
     const rows = new Map(this.params().map((r) => [r.name, r]));
     this.m._qcw_params_reset(this.job, (settings.units || 'in') === 'in' ? 1 : 0);
     for (const [name, value] of Object.entries(settings.params || {})) {
       const row = rows.get(name);
       if (!row) throw new Error(`unknown parameter '${name}'`);
       if (row.type === 'seed') { this.seed(value); continue; }
-      let v;
-      if (row.type === 'enum') {
-        v = row.choices.split('|').indexOf(String(value)) + 1;
-        if (v === 0) throw new Error(`${name}: unknown choice '${value}' (one of ${row.choices})`);
-      } else {
-        let scale = row.type === 'length' ? mm : 1;
-        let text = value;
-        const suffix = row.type === 'length' && typeof value === 'string' && /(mm|cm|in)\s*$/.exec(value);
-        if (suffix) { // like the CLI: a length may carry its own unit
-          scale = MM_PER_UNIT[suffix[1]];
-          text = value.slice(0, suffix.index);
-        }
-        v = typeof text === 'number' ? text : strictNumber(text);
-        if (!Number.isFinite(v)) throw new Error(`${name}: '${value}' is not a ${row.type === 'length' ? 'length (a number, optionally with mm, cm or in)' : 'number'}`);
-        v *= scale;
-      }
+      const v = paramValue(row, name, value, settings.units);
       this.withString(name, (p) => this.check(this.m._qcw_param(this.job, p, v)));
     }
     if (settings.seed !== undefined && settings.seed !== '') this.seed(settings.seed);
@@ -165,11 +149,69 @@ export class Quiltc {
     return { xy, flags, stats };
   }
 
-  // The whole composition for one settings object (what the worker does).
+  // The whole composition for one settings object (what the worker does):
+  // a block (settings.region), or a quilt top (settings.top, see quilt()).
   generate(settings) {
+    if (settings.top) return this.quilt(settings);
     this.region(settings);
     this.setParams(settings);
     return this.run(settings.tie || 0);
+  }
+
+  // ---- quilt tops: quiltc quilt TOP.svg --plan PLAN.json ----
+  // Reads the top's patches: [{ id, class, label, fill, element, line, rings }]
+  // (rings in mm, the top's lower-left corner at the origin). Errors name the file.
+  topSvg(text, name, units = 'in') {
+    try {
+      this.withString(units, (pu) => this.withString(text, (p, n) =>
+        this.check(this.m._qcw_top_svg(this.job, p, n, unitScale(units), pu))));
+    } catch (err) {
+      throw new Error(`${name || 'quilt top'}: ${err.message}`);
+    }
+    return this.json(this.m._qcw_patches_json(this.job));
+  }
+
+  // plan: the rules of a quiltc plan file, [{ match: { id, class, label, fill },
+  // family, params }] in order (the first that fits a patch chooses; params in
+  // the settings' units, family "none" leaves the patches unquilted).
+  setPlan(plan, units) {
+    this.m._qcw_rules_clear(this.job);
+    const rows = new Map(this.params().map((r) => [r.name, r]));
+    plan.forEach((rule, i) => {
+      const where = `plan: rules[${i}]`;
+      const m = rule.match || {};
+      for (const k of Object.keys(m)) {
+        if (!['id', 'class', 'label', 'fill'].includes(k)) throw new Error(`${where}.match.${k}: unknown key`);
+      }
+      this.withString(m.id || '', (a) => this.withString(m.class || '', (b) => this.withString(m.label || '', (c) =>
+        this.withString(m.fill || '', (d) => this.check(this.m._qcw_rule_add(this.job, a, b, c, d))))));
+      if (rule.family === 'none') { this.check(this.m._qcw_rule_none(this.job)); return; }
+      const params = { ...(rule.params || {}) };
+      if (rule.family) params.family = rule.family;
+      for (const [name, value] of Object.entries(params)) {
+        const v = paramValue(rows.get(name), name, value, units);
+        try {
+          this.withString(name, (p) => this.check(this.m._qcw_rule_param(this.job, p, v)));
+        } catch (err) {
+          throw new Error(`${where}: ${err.message}`);
+        }
+      }
+    });
+  }
+
+  // settings: { top: { svg, name }, plan: [...], units, params, seed, motifs, tie, join }
+  // -> { xy, flags, stats (quiltc quilt --stats' figures), patches, ditch }.
+  quilt(settings) {
+    const patches = this.topSvg(settings.top.svg, settings.top.name, settings.units || 'in');
+    this.setParams(settings);
+    this.setPlan(settings.plan || [], settings.units);
+    this.check(this.m._qcw_quilt(this.job, settings.join === 'jump' ? 1 : 0, settings.tie || 0));
+    const n = this.m._qcw_points(this.job);
+    const xy = new Float64Array(this.m.HEAPF64.buffer, this.m._qcw_xy(this.job), n * 2).slice();
+    const flags = new Uint8Array(this.m.HEAPU8.buffer, this.m._qcw_flags(this.job), n).slice();
+    const stats = this.json(this.m._qcw_quilt_stats_json(this.job));
+    const ditch = this.json(this.m._qcw_ditch_json(this.job));
+    return { xy, flags, stats, patches, ditch };
   }
 
   // The last result encoded as format ('pat', 'svg', ...): a Uint8Array.
@@ -180,6 +222,27 @@ export class Quiltc {
   }
 
   free() { this.m._qcw_free(this.job); this.job = 0; }
+}
+
+// A parameter's value as qcw_param takes it: lengths in mm (a bare number in
+// units, or with its own mm, cm or in), enums as 1-based choices.
+function paramValue(row, name, value, units) {
+  if (!row || row.type === 'seed') throw new Error(`unknown parameter '${name}'`);
+  if (row.type === 'enum') {
+    const v = row.choices.split('|').indexOf(String(value)) + 1;
+    if (v === 0) throw new Error(`${name}: unknown choice '${value}' (one of ${row.choices})`);
+    return v;
+  }
+  let scale = row.type === 'length' ? unitScale(units) : 1;
+  let text = value;
+  const suffix = row.type === 'length' && typeof value === 'string' && /(mm|cm|in)\s*$/.exec(value);
+  if (suffix) { // like the CLI: a length may carry its own unit
+    scale = MM_PER_UNIT[suffix[1]];
+    text = value.slice(0, suffix.index);
+  }
+  const v = typeof text === 'number' ? text : strictNumber(text);
+  if (!Number.isFinite(v)) throw new Error(`${name}: '${value}' is not a ${row.type === 'length' ? 'length (a number, optionally with mm, cm or in)' : 'number'}`);
+  return v * scale;
 }
 
 function unitScale(units) {

@@ -1,12 +1,17 @@
 // Generation off the page's thread, so the page never freezes while the core
 // works. Messages: { type: 'generate', id, units, region, params, seed,
 // motifs, tie } -> { type: 'result', id, rings, resolved, xy, flags, stats, ms };
-// { type: 'export', id, format } -> { type: 'export', id, format, bytes };
+// a quilt top (msg.top, msg.plan) also gives patches and ditch;
+// { type: 'export', id, format } -> { type: 'export', id, format, bytes }
+// (refused after a failed generate: never the previous pattern);
+// { type: 'probe', id, svg, name } -> { type: 'probe', id, patches } (how many
+// patches the SVG holds, 0 if it is no top);
 // any failure -> { type: 'error', id, message }.
 import createQuiltc from './quiltc.mjs';
 import { Quiltc } from './quiltc-api.js';
 
 let api = null;
+let current = false; // the module holds the result of the last generate
 const ready = createQuiltc().then(
   (m) => {
     api = new Quiltc(m);
@@ -22,12 +27,20 @@ onmessage = async (e) => {
   try {
     if (!api) throw new Error('the WebAssembly module did not load');
     if (msg.type === 'generate') {
+      current = false;
       const t0 = performance.now();
       const out = api.generate(msg);
       const ms = performance.now() - t0;
       postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), resolved: api.resolved(), ...out, ms },
         [out.xy.buffer, out.flags.buffer]);
+      current = true;
+    } else if (msg.type === 'probe') {
+      current = false;
+      let n = 0;
+      try { n = api.topSvg(msg.svg, msg.name).length; } catch { n = 0; }
+      postMessage({ type: 'probe', id: msg.id, patches: n });
     } else if (msg.type === 'export') {
+      if (!current) throw new Error('nothing to download: the last settings gave no pattern');
       const bytes = api.export(msg.format);
       postMessage({ type: 'export', id: msg.id, format: msg.format, bytes }, [bytes.buffer]);
     }
