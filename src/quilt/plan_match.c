@@ -48,7 +48,8 @@ static int class_match(const char *pattern, const char *cls)
                 return 1;
         }
         s += n;
-        s += strspn(s, " \t\n");
+        while (*s == ' ' || *s == '\t' || *s == '\n')
+            s++;
     }
     return 0;
 }
