@@ -75,6 +75,25 @@ static int make_jobs(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *pla
     return rc;
 }
 
+/* One line per patch too small for its pattern, which qc_quilt sewed round
+ * in the ditch instead: the quilter may want a smaller spacing there. */
+static void report_ditch_only(qc_ctx *ctx, const cli_quilt *q, const char *top, double u)
+{
+    char name[160];
+    size_t i;
+
+    for (i = 0; i < q->res.npatch; i++) {
+        qc_params p;
+
+        if (!q->res.patch[i].ditch_only || qc_params_resolve(ctx, q->jobs[i].params, &p) < 0)
+            continue;
+        patch_name(&q->ps.p[i], name, sizeof name);
+        fprintf(stderr, "quiltc: %s: patch %s is too small for %s at spacing %g %s; "
+                "sewn round in the ditch only\n", top, name, qc_family_name(p.family),
+                p.spacing / u, cli_units_name(u));
+    }
+}
+
 int cli_quilt_sew(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *plan,
                   cli_pattern_opts *base, int join, const char *where)
 {
@@ -97,6 +116,8 @@ int cli_quilt_sew(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *plan,
     qp.join = join;
     if (rc == CLI_OK && qc_quilt(ctx, &q->ps, q->jobs, &qp, &q->res) < 0)
         rc = cli_fail(ctx, where, ctx->status);
+    if (rc == CLI_OK)
+        report_ditch_only(ctx, q, top, base->mm_per_unit);
     return rc;
 }
 

@@ -27,6 +27,21 @@ every_top() {
 }
 check every_top_is_one_line_inside_its_patches every_top
 
+# A patch too small for the spacing is sewn round in the ditch, said once.
+tiny_patches() {
+    "$QC" quilt "$ROOT/tests/data/quilt/tiny-patches.svg" -o t.pat --stats 2>err.txt &&
+        [ "$(pieces t.pat)" -eq 1 ] && [ "$(grep -c 'too small for stipple' err.txt)" -eq 2 ] &&
+        grep -q 'id "tiny" (line 3) is too small for stipple at spacing 0.5 in' err.txt &&
+        grep '^{' err.txt >stats.json && python3 -c '
+import json
+s = json.load(open("stats.json"))
+d = {p["id"]: p.get("ditch_only", False) for p in s["patches"]}
+assert d == {"big": False, "tiny": True, "strip": True}, d
+assert s["quilted"] == 3 and s["jumps"] == 0, s
+' && "$QC" check t.pat --region "$ROOT/tests/data/quilt/tiny-patches.svg" >/dev/null
+}
+check patch_too_small_is_sewn_round_in_the_ditch tiny_patches
+
 plan_families() {
     "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o star.pat --stats \
         2>stats.json && [ "$(pieces star.pat)" -eq 1 ] && python3 -c '

@@ -400,6 +400,52 @@ static void test_patches_apart_should_be_joined_by_a_jump(void)
     qc_patches_free(&ctx, &ps);
 }
 
+/* 1 when some point of the path is within 0.01 mm of q. */
+static int path_visits(const qc_path *path, qc_vec2 q)
+{
+    size_t i;
+
+    for (i = 0; i < path->npt; i++)
+        if (qc_hypot(path->pt[i].x - q.x, path->pt[i].y - q.y) < 0.01)
+            return 1;
+    return 0;
+}
+
+static void test_patch_too_small_should_be_sewn_round_in_the_ditch(void)
+{
+    /* a 5 mm square and a 3 mm strip beside a block, at 0.5 in spacing:
+     * no point fits in either; the line goes round them on their seams */
+    static const char svg[] =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='110mm' height='100mm' "
+        "viewBox='0 0 110 100'><rect id='big' x='0' y='0' width='100' height='100'/>"
+        "<rect id='tiny' x='100' y='0' width='5' height='5'/>"
+        "<rect id='strip' x='100' y='5' width='3' height='95'/></svg>";
+    static const qc_vec2 tiny[4] = {{100, 95}, {105, 95}, {105, 100}, {100, 100}};
+    qc_patches ps;
+    qc_quilt_result res;
+    qc_params p;
+    size_t i;
+
+    read_text(svg, &ps);
+    TEST_ASSERT_EQUAL_size_t(3, ps.n);
+    quilt_all(&ps, QC_FAMILY_STIPPLE, QC_JOIN_DITCH, &p, &res);
+    TEST_ASSERT_EQUAL_size_t(1, qc_path_pieces(&res.path));
+    TEST_ASSERT_EQUAL_size_t(0, res.jumps);
+    TEST_ASSERT_EQUAL_size_t(3, res.norder);
+    TEST_ASSERT_EQUAL_INT(0, res.patch[0].ditch_only);
+    TEST_ASSERT_EQUAL_INT(1, res.patch[1].ditch_only);
+    TEST_ASSERT_EQUAL_INT(1, res.patch[2].ditch_only);
+    TEST_ASSERT_EQUAL_INT(QC_FAMILY_STIPPLE, res.patch[1].family);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 20.0, res.patch[1].length_mm);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 196.0, res.patch[2].length_mm);
+    for (i = 0; i < 4; i++) /* y up: the SVG's top right corner is y 95..100 */
+        TEST_ASSERT_TRUE(path_visits(&res.path, tiny[i]));
+    assert_sewn_inside(&ps, &res.path);
+    assert_ditch_on_seams(&ps, &res.ditch);
+    qc_quilt_result_free(&ctx, &res);
+    qc_patches_free(&ctx, &ps);
+}
+
 static void test_quilt_should_free_everything_when_memory_runs_out(void)
 {
     qc_patches ps;
@@ -510,6 +556,7 @@ int main(void)
     RUN_TEST(test_each_patch_should_get_its_own_family_and_none_stays_empty);
     RUN_TEST(test_same_seed_should_give_the_same_line);
     RUN_TEST(test_patches_apart_should_be_joined_by_a_jump);
+    RUN_TEST(test_patch_too_small_should_be_sewn_round_in_the_ditch);
     RUN_TEST(test_quilt_should_free_everything_when_memory_runs_out);
     RUN_TEST(test_colours_should_parse_as_css_writes_them);
     RUN_TEST(test_reading_a_top_should_survive_running_out_of_memory);

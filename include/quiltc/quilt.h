@@ -106,6 +106,8 @@ typedef struct qc_patch_result {
     double largest_gap_mm; /* qc_generate's measure (0 when skip_gap_stat) */
     size_t pieces;         /* pieces of the pattern as generated */
     size_t order;          /* place in the sewing order, 0-based; SIZE_MAX when unquilted */
+    int ditch_only;        /* 1: too small for its family at its spacing (qc_generate's
+                              QC_EEMPTY), so its outline is sewn in the ditch instead */
 } qc_patch_result;
 
 typedef struct qc_quilt_result {
@@ -137,9 +139,13 @@ typedef struct qc_quilt_result {
  * connected by seams; otherwise, and with QC_JOIN_JUMP, a piece starts
  * (a MOVE: a jump for the stitch plan). The patches must not overlap
  * (qc_patches_overlap). Deterministic. On success *out owns everything
- * (qc_quilt_result_free); on failure it is left empty. Errors: QC_EINVAL
- * (NULL arguments, bad join or seam_tol), QC_EEMPTY (no patch quilted),
- * qc_generate's (the message is prefixed "patch N: "), QC_ENOMEM.
+ * (qc_quilt_result_free); on failure it is left empty. A patch too small
+ * for its family at its spacing (qc_generate says QC_EEMPTY: no point or
+ * ring fits) is not an error: the line goes once round the boundary it
+ * enters by, in the ditch, and the patch is marked ditch_only. Errors:
+ * QC_EINVAL (NULL arguments, bad join or seam_tol), QC_EEMPTY (no patch
+ * quilted), qc_generate's other errors (the message is prefixed
+ * "patch N: "), QC_ENOMEM.
  */
 int qc_quilt(qc_ctx *ctx, const qc_patches *ps, const qc_patch_job *jobs,
              const qc_quilt_params *params, qc_quilt_result *out);

@@ -184,6 +184,80 @@ static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t
     return QC_OK;
 }
 
+/* The position in seam ring order of seam point b of patch i: *ring and
+ * *j with b on the edge bnd[j] -> bnd[j + 1] (or at vertex bnd[j]). 0 when
+ * b lies on none of the patch's rings (it always does: b came from them). */
+static int find_on_ring(const qc__seams *s, size_t i, qc__seam_pt b, size_t *ring, size_t *j)
+{
+    size_t r, k;
+
+    for (r = i ? s->patch_end[i - 1] : 0; r < s->patch_end[i]; r++) {
+        size_t start = r ? s->ring_end[r - 1] : 0, end = s->ring_end[r];
+
+        for (k = start; k < end; k++) {
+            uint32_t u = s->bnd[k], v = s->bnd[k + 1 < end ? k + 1 : start];
+
+            if ((b.u == b.v && u == b.u) || (u == b.u && v == b.v) || (u == b.v && v == b.u)) {
+                *ring = r;
+                *j = k;
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+/* A patch too small for its pattern: once round the ring the line enters
+ * by (from the boundary point nearest entry), in the ditch, back to where
+ * it began. */
+static int sew_ditch_only(quilter *q, size_t i, qc_vec2 entry)
+{
+    const qc__seams *s = &q->seams;
+    qc__seam_pt b = qc__seams_nearest(s, i, entry);
+    size_t r = 0, j = 0, k, start, end, n;
+    double len = 0;
+    qc_vec2 last = b.p;
+    int ok = 0;
+
+    if (!find_on_ring(s, i, b, &r, &j))
+        return qc__fail(q->ctx, QC_EINVAL, "quilt: patch %lu has no seam to sew",
+                        (unsigned long)i + 1);
+    if (q->started) {
+        QC__TRY(qc__seam_dist_from(q->ctx, s, &q->sd, q->at));
+        QC__TRY(travel_to(q, b, &ok));
+    }
+    if (!ok) {
+        q->out->jumps += (size_t)q->started;
+        QC__TRY(qc_path_move_to(q->ctx, &q->out->path, b.p));
+    }
+    QC__TRY(qc_path_move_to(q->ctx, &q->out->ditch, b.p));
+    start = r ? s->ring_end[r - 1] : 0;
+    end = s->ring_end[r];
+    n = end - start;
+    /* from bnd[j + 1] round to bnd[j] (b itself when at a vertex, else
+     * b lies between them and the line closes on it) */
+    for (k = 1; k <= n; k++) {
+        size_t at = start + (j - start + k) % n;
+        qc_vec2 v = s->v[s->bnd[at]];
+
+        len += dist(last, v);
+        last = v;
+        QC__TRY(qc_path_line_to(q->ctx, &q->out->path, v));
+        QC__TRY(qc_path_line_to(q->ctx, &q->out->ditch, v));
+    }
+    if (b.u != b.v) {
+        len += dist(last, b.p);
+        QC__TRY(qc_path_line_to(q->ctx, &q->out->path, b.p));
+        QC__TRY(qc_path_line_to(q->ctx, &q->out->ditch, b.p));
+    }
+    q->out->patch[i].length_mm = len;
+    q->out->patch[i].pieces = 1;
+    q->out->patch[i].ditch_only = 1;
+    q->at = b;
+    q->started = 1;
+    return QC_OK;
+}
+
 static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
 {
     const qc_patch_job *job = &q->jobs[i];
@@ -198,6 +272,16 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
     QC__TRY(qc_params_set(q->ctx, &p, "start-x", entry.x));
     QC__TRY(qc_params_set(q->ctx, &p, "start-y", entry.y));
     rc = qc_generate(q->ctx, &q->ps->p[i].region, &p, NULL, job->motifs, &res);
+    if (rc == QC_EEMPTY) {
+        qc_params resolved;
+
+        QC__TRY(qc_params_resolve(q->ctx, &p, &resolved));
+        pr->family = resolved.family;
+        pr->order = q->out->norder;
+        q->out->order[q->out->norder++] = (uint32_t)i;
+        q->sewn[i] = 1;
+        return sew_ditch_only(q, i, entry);
+    }
     if (rc < 0) {
         char msg[QC_ERRMSG_MAX];
         const qc_patch *pa = &q->ps->p[i];
