@@ -446,23 +446,25 @@ static void test_patch_too_small_should_be_sewn_round_in_the_ditch(void)
     qc_patches_free(&ctx, &ps);
 }
 
-static void test_quilt_should_free_everything_when_memory_runs_out(void)
+/* Sews a top with every allocation failing in turn (every k-th): each
+ * failure is QC_ENOMEM and leaks nothing; one run gets through. */
+static void quilt_under_oom(const char *top, int family, double spacing, size_t step)
 {
     qc_patches ps;
     qc_quilt_result res;
     qc_params p;
-    qc_patch_job jobs[9];
+    qc_patch_job *jobs;
     size_t k, i, ok = 0;
 
-    read_top("tests/data/quilt/nine-patch.svg", &ps);
+    read_top(top, &ps);
+    jobs = calloc(ps.n, sizeof *jobs);
+    TEST_ASSERT_NOT_NULL(jobs);
     memset(&p, 0, sizeof p);
-    qc_params_set(&ctx, &p, "family", QC_FAMILY_ECHO);
-    qc_params_set(&ctx, &p, "spacing", 1.5 * IN);
-    for (i = 0; i < 9; i++) {
+    qc_params_set(&ctx, &p, "family", family);
+    qc_params_set(&ctx, &p, "spacing", spacing);
+    for (i = 0; i < ps.n; i++)
         jobs[i].params = &p;
-        jobs[i].motifs = NULL;
-    }
-    for (k = 1; k < 5000 && !ok; k += 7) {
+    for (k = 1; k < 5000 && !ok; k += step) {
         int rc;
         ta.fail_at = ta.allocs + k;
         rc = qc_quilt(&ctx, &ps, jobs, NULL, &res);
@@ -474,7 +476,15 @@ static void test_quilt_should_free_everything_when_memory_runs_out(void)
             TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
     }
     TEST_ASSERT_TRUE(ok);
+    free(jobs);
     qc_patches_free(&ctx, &ps);
+}
+
+static void test_quilt_should_free_everything_when_memory_runs_out(void)
+{
+    quilt_under_oom("tests/data/quilt/nine-patch.svg", QC_FAMILY_ECHO, 1.5 * IN, 7);
+    /* and where patches are sewn round in the ditch */
+    quilt_under_oom("tests/data/quilt/tiny-patches.svg", QC_FAMILY_ECHO, 0.5 * IN, 1);
 }
 
 static void test_colours_should_parse_as_css_writes_them(void)
