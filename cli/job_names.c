@@ -109,6 +109,34 @@ static const char *motifs_beside(names_ctx *c, const char *list, const char *wha
     return s;
 }
 
+/* A top's plan names motif files as its block does: beside the job. The
+ * plan is the job's own parsed document, so its strings are rewritten in
+ * place (checked for type later, by the plan's reader). */
+static void plan_motifs_beside(names_ctx *c, const block *b)
+{
+    cJSON *rules = (cJSON *)b->plan, *r;
+    char what[64];
+    int k = 0;
+
+    if (!cJSON_IsArray(rules))
+        return;
+    cJSON_ArrayForEach(r, rules) {
+        cJSON *m = cJSON_GetObjectItemCaseSensitive(r, "motif");
+        const char *s;
+
+        snprintf(what, sizeof what, "job: %s.plan[%d].motif", b->where, k++);
+        if (!cJSON_IsString(m))
+            continue;
+        if ((s = motifs_beside(c, m->valuestring, what)) == NULL)
+            return;
+        if (cJSON_SetValuestring(m, s) == NULL) {
+            cli_error("%s: out of memory", what);
+            c->rc = CLI_RUNTIME;
+            return;
+        }
+    }
+}
+
 int cli_job_resolve_names(job *j, const char *file, int allow_outside, cli_job_names *o)
 {
     const char *slash = strrchr(file, '/');
@@ -145,6 +173,8 @@ int cli_job_resolve_names(job *j, const char *file, int allow_outside, cli_job_n
             break;
         snprintf(what, sizeof what, "job: %s.top", b->where);
         if (b->top != NULL && (b->top = beside(&c, b->top, what)) == NULL)
+            break;
+        if (b->plan != NULL && (plan_motifs_beside(&c, b), c.rc != CLI_OK))
             break;
         snprintf(what, sizeof what, "job: %s.motif", b->where);
         if (b->pat.motifs != NULL && (b->pat.motifs = motifs_beside(&c, b->pat.motifs, what)) == NULL)

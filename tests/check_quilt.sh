@@ -172,6 +172,17 @@ assert b[0] < 0.5 and b[2] > 23.5 and b[2] < 24 and b[3] < 12, b
 }
 check job_mixes_a_pieced_top_with_a_block job_top
 
+# A top's plan names its motif files beside the job, as a block does, and
+# may not reach outside the job's folder.
+job_top_plan_motif() {
+    mkdir -p q && cp "$STAR" q/star.svg && "$QC" motifs --svg leaf >q/leaf.svg &&
+        printf '%s' '{"blocks": [{"top": "star.svg", "plan": [{"match": {"id": "centre"}, "family": "branching", "motif": "leaf.svg"}, {"family": "stipple"}]}]}' >q/t.json &&
+        "$QC" job q/t.json -o tm.pat && [ "$(pieces tm.pat)" -eq 1 ] &&
+        printf '%s' '{"blocks": [{"top": "star.svg", "plan": [{"family": "branching", "motif": "../leaf.svg"}]}]}' >q/out.json &&
+        expect_fail 2 'job: blocks\[0\]\.plan\[0\]\.motif' "$QC" job q/out.json -o to.pat && [ ! -e to.pat ]
+}
+check job_top_plan_motifs_are_beside_the_job job_top_plan_motif
+
 job_top_bad_plan() {
     cp "$STAR" star.svg && printf '%s' '{"blocks": [{"top": "star.svg", "plan": [{"colour": "red"}]}]}' >b.json &&
         expect_fail 2 'job: blocks\[0\]\.plan\[0\]\.colour: unknown key' "$QC" job b.json -o bj.pat && [ ! -e bj.pat ]
