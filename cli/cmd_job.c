@@ -84,7 +84,7 @@ static int make_top(qc_ctx *ctx, block *b)
     if (rc == CLI_OK && b->plan != NULL)
         rc = cli_quilt_plan_parse(&plan, b->plan, &b->pat, prefix);
     if (rc == CLI_OK)
-        rc = cli_quilt_sew(ctx, &q, b->top, &plan, &b->pat, QC_JOIN_DITCH, b->label);
+        rc = cli_quilt_sew(ctx, &q, b->top, &plan, &b->pat, NULL, b->label);
     if (rc == CLI_OK)
         rc = cli_quilt_outlines(ctx, &q.ps, &drawn);
     if (rc == CLI_OK) {

@@ -13,7 +13,7 @@
 
 typedef struct quilt_opts {
     cli_pattern_opts pat;
-    const char *top, *plan_file, *format;
+    const char *top, *plan_file, *format, *seam_gap;
     const char *out[CLI_MAX_OUTPUTS];
     size_t nout;
     int join, stats, quiet, tie;
@@ -31,6 +31,8 @@ static void usage(FILE *f)
           "  --format NAME            pat, qli, dxf, hpgl, qcc, iqp, bqm, gcode, svg\n"
           "  --plan PLAN.json         a family and parameters per patch (see README)\n"
           "  --join ditch|jump        travel along seams (default), or jump between patches\n"
+          "  --seam-gap LEN           edges drawn up to LEN apart are one seam (default\n"
+          "                           0.1 mm; up to 10 mm)\n"
           "  --motif LIST             motifs: built-in names and .svg files, comma-separated\n"
           "  --tie N                  tie-off stitches at each start and end (default 3)\n"
           "  --feed MM_PER_MIN        G-code feed rate (default 1500)\n"
@@ -51,6 +53,7 @@ static int parse(int argc, char **argv, quilt_opts *q)
         {"stats", no_argument, NULL, 's'},        {"plan", required_argument, NULL, 'p'},
         {"quiet", no_argument, NULL, 'q'},        {"help", no_argument, NULL, 'h'},
         {"feed", required_argument, NULL, 'F'},   {"join", required_argument, NULL, 'j'},
+        {"seam-gap", required_argument, NULL, 'g'},
     };
     struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
     int c, rc = CLI_OK, help = 0;
@@ -75,6 +78,7 @@ static int parse(int argc, char **argv, quilt_opts *q)
         case 'm': q->pat.motifs = optarg; break;
         case 's': q->stats = 1; break;
         case 'p': q->plan_file = optarg; break;
+        case 'g': q->seam_gap = optarg; break;
         case 'q': q->quiet = 1; break;
         case 'h': help = 1; break;
         case 'j':
@@ -148,6 +152,26 @@ static int output_formats(const quilt_opts *q, int *fmt)
         }
     }
     return cli_outputs_distinct(q->out, q->nout);
+}
+
+/* --seam-gap in the user's units (known once the pattern options are). */
+static int seam_params(const quilt_opts *q, qc_quilt_params *qp)
+{
+    double u = q->pat.mm_per_unit;
+
+    memset(qp, 0, sizeof *qp);
+    qp->join = q->join;
+    if (q->seam_gap == NULL)
+        return CLI_OK;
+    if (cli_parse_length(q->seam_gap, u, &qp->seam_tol) != 0) {
+        cli_error("--seam-gap: '%s' is not a length", q->seam_gap);
+        return CLI_USAGE;
+    }
+    if (!(qp->seam_tol > 0) || qp->seam_tol > QC_QUILT_MAX_SEAM_TOL) {
+        cli_length_range("--seam-gap", qp->seam_tol, 0, QC_QUILT_MAX_SEAM_TOL, u);
+        return CLI_USAGE;
+    }
+    return CLI_OK;
 }
 
 static int load_plan(const quilt_opts *q, quilt_plan *plan)
@@ -242,6 +266,7 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     qc_region drawn = {0};
     qc_plan st = {0};
     qc_stitch_params sp;
+    qc_quilt_params qp;
     qc_io_opts io;
     cli_timer timer;
     int rc = cli_pattern_finish(ctx, &q->pat);
@@ -250,11 +275,13 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     memset(&top, 0, sizeof top);
     cli_timer_start(&timer, ctx);
     ctx->trace = NULL; /* the stages of every patch would repeat: time the whole */
+    if (rc == CLI_OK)
+        rc = seam_params(q, &qp);
     if (rc == CLI_OK && q->plan_file != NULL)
         rc = load_plan(q, &plan);
     cli_timer_mark(&timer, "quilt");
     if (rc == CLI_OK)
-        rc = cli_quilt_sew(ctx, &top, q->top, &plan, &q->pat, q->join, "quilt");
+        rc = cli_quilt_sew(ctx, &top, q->top, &plan, &q->pat, &qp, "quilt");
     if (rc == CLI_OK)
         rc = cli_quilt_outlines(ctx, &top.ps, &drawn);
     if (rc == CLI_OK)

@@ -59,7 +59,7 @@ typedef struct cli_quilt {
  * patch's rule (a rule matching nothing is an error) and quilts. where
  * prefixes messages ("quilt", "job: blocks[2]"). CLI status. */
 int cli_quilt_sew(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *plan,
-                  cli_pattern_opts *base, int join, const char *where);
+                  cli_pattern_opts *base, const qc_quilt_params *qp, const char *where);
 void cli_quilt_free(qc_ctx *ctx, cli_quilt *q);
 /* Every patch outline in one region (to draw). CLI status. */
 int cli_quilt_outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out);

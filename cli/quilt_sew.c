@@ -95,9 +95,8 @@ static void report_ditch_only(qc_ctx *ctx, const cli_quilt *q, const char *top, 
 }
 
 int cli_quilt_sew(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *plan,
-                  cli_pattern_opts *base, int join, const char *where)
+                  cli_pattern_opts *base, const qc_quilt_params *qp, const char *where)
 {
-    qc_quilt_params qp;
     int rc;
 
     memset(q, 0, sizeof *q);
@@ -112,9 +111,7 @@ int cli_quilt_sew(qc_ctx *ctx, cli_quilt *q, const char *top, quilt_plan *plan,
     }
     if (rc == CLI_OK)
         rc = make_jobs(ctx, q, top, plan, base);
-    memset(&qp, 0, sizeof qp);
-    qp.join = join;
-    if (rc == CLI_OK && qc_quilt(ctx, &q->ps, q->jobs, &qp, &q->res) < 0)
+    if (rc == CLI_OK && qc_quilt(ctx, &q->ps, q->jobs, qp, &q->res) < 0)
         rc = cli_fail(ctx, where, ctx->status);
     if (rc == CLI_OK)
         report_ditch_only(ctx, q, top, base->mm_per_unit);

@@ -42,6 +42,17 @@ assert s["quilted"] == 3 and s["jumps"] == 0, s
 }
 check patch_too_small_is_sewn_round_in_the_ditch tiny_patches
 
+# Edges drawn 0.04 mm apart are one seam by default; --seam-gap says how far.
+seam_gap() {
+    printf '%s' "<svg xmlns='http://www.w3.org/2000/svg' width='200mm' height='100mm' viewBox='0 0 200 100'><rect x='0' y='0' width='100' height='100'/><rect x='100.04' y='0.03' width='99.96' height='99.97'/></svg>" >gap.svg &&
+        "$QC" quilt gap.svg -o g1.pat && [ "$(pieces g1.pat)" -eq 1 ] &&
+        "$QC" quilt gap.svg -o g2.pat --seam-gap 0.01mm && [ "$(pieces g2.pat)" -eq 2 ] &&
+        expect_fail 2 '^quiltc: --seam-gap 1 in (25.4 mm) out of range \[0, 0.3937\] in$' \
+            "$QC" quilt gap.svg -o g3.pat --seam-gap 1 && [ ! -e g3.pat ] &&
+        expect_fail 2 "^quiltc: --seam-gap: 'x' is not a length$" "$QC" quilt gap.svg -o g3.pat --seam-gap x
+}
+check seam_gap_joins_edges_drawn_slightly_apart seam_gap
+
 plan_families() {
     "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o star.pat --stats \
         2>stats.json && [ "$(pieces star.pat)" -eq 1 ] && python3 -c '

@@ -480,6 +480,39 @@ static void quilt_under_oom(const char *top, int family, double spacing, size_t 
     qc_patches_free(&ctx, &ps);
 }
 
+static void test_seams_drawn_slightly_apart_should_still_be_one_seam(void)
+{
+    /* the second square drawn 0.04 mm right of and 0.03 mm above the seam,
+     * as an export rounding to 0.1 mm leaves it */
+    static const char svg[] =
+        "<svg xmlns='http://www.w3.org/2000/svg' width='200mm' height='100mm' "
+        "viewBox='0 0 200 100'><rect x='0' y='0' width='100' height='100'/>"
+        "<rect x='100.04' y='0.03' width='99.96' height='99.97'/></svg>";
+    qc_patches ps;
+    qc_quilt_result res;
+    qc_quilt_params qp;
+    qc_patch_job jobs[2];
+    qc_params p;
+
+    read_text(svg, &ps);
+    quilt_all(&ps, QC_FAMILY_STIPPLE, QC_JOIN_DITCH, &p, &res);
+    TEST_ASSERT_EQUAL_size_t(1, qc_path_pieces(&res.path));
+    TEST_ASSERT_EQUAL_size_t(0, res.jumps);
+    assert_sewn_inside(&ps, &res.path);
+    qc_quilt_result_free(&ctx, &res);
+    /* a tolerance below the gap keeps them apart: a jump */
+    memset(&qp, 0, sizeof qp);
+    qp.seam_tol = 0.01;
+    jobs[0].params = jobs[1].params = &p;
+    jobs[0].motifs = jobs[1].motifs = NULL;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_quilt(&ctx, &ps, jobs, &qp, &res));
+    TEST_ASSERT_EQUAL_size_t(1, res.jumps);
+    qc_quilt_result_free(&ctx, &res);
+    qp.seam_tol = QC_QUILT_MAX_SEAM_TOL * 1.01;
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_quilt(&ctx, &ps, jobs, &qp, &res));
+    qc_patches_free(&ctx, &ps);
+}
+
 static void test_quilt_should_free_everything_when_memory_runs_out(void)
 {
     quilt_under_oom("tests/data/quilt/nine-patch.svg", QC_FAMILY_ECHO, 1.5 * IN, 7);
@@ -567,6 +600,7 @@ int main(void)
     RUN_TEST(test_same_seed_should_give_the_same_line);
     RUN_TEST(test_patches_apart_should_be_joined_by_a_jump);
     RUN_TEST(test_patch_too_small_should_be_sewn_round_in_the_ditch);
+    RUN_TEST(test_seams_drawn_slightly_apart_should_still_be_one_seam);
     RUN_TEST(test_quilt_should_free_everything_when_memory_runs_out);
     RUN_TEST(test_colours_should_parse_as_css_writes_them);
     RUN_TEST(test_reading_a_top_should_survive_running_out_of_memory);

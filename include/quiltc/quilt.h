@@ -89,9 +89,16 @@ int qc_patches_outlines(qc_ctx *ctx, const qc_patches *ps, qc_region *out);
 
 enum { QC_JOIN_DITCH = 0, QC_JOIN_JUMP = 1 };
 
+/* Seam tolerance: the default is well under a needle's width and above
+ * the slop of hand-drawn or exported tops (coordinates rounded to 0.1 mm,
+ * two flattenings of one curved seam, 0.05 mm apart). */
+#define QC_QUILT_SEAM_TOL 0.1
+#define QC_QUILT_MAX_SEAM_TOL 10.0
+
 typedef struct qc_quilt_params {
     int join;        /* QC_JOIN_DITCH (default): travel along seams; QC_JOIN_JUMP: jumps */
-    double seam_tol; /* mm; vertices nearer than this are one seam vertex; 0 = 0.01 */
+    double seam_tol; /* mm, in (0, QC_QUILT_MAX_SEAM_TOL]: vertices this near are one seam
+                        vertex, and a vertex this near an edge splits it; 0 = QC_QUILT_SEAM_TOL */
 } qc_quilt_params;
 
 /* What to sew in one patch. */

@@ -15,8 +15,6 @@
 
 #include "quilt_internal.h"
 
-#define DEFAULT_SEAM_TOL 0.01
-
 typedef struct quilter {
     qc_ctx *ctx;
     const qc_patches *ps;
@@ -365,12 +363,12 @@ int qc_quilt(qc_ctx *ctx, const qc_patches *ps, const qc_patch_job *jobs,
     q.jobs = jobs;
     q.out = out;
     q.join = params != NULL ? params->join : QC_JOIN_DITCH;
-    q.seam_tol = params != NULL && params->seam_tol != 0 ? params->seam_tol : DEFAULT_SEAM_TOL;
+    q.seam_tol = params != NULL && params->seam_tol != 0 ? params->seam_tol : QC_QUILT_SEAM_TOL;
     if (q.join != QC_JOIN_DITCH && q.join != QC_JOIN_JUMP)
         return qc__fail(ctx, QC_EINVAL, "quilt: join %d is neither ditch nor jump", q.join);
-    if (!(q.seam_tol > 0) || q.seam_tol > 10)
-        return qc__fail(ctx, QC_EINVAL, "quilt: seam tolerance %g mm must be in (0, 10]",
-                        q.seam_tol);
+    if (!(q.seam_tol > 0) || q.seam_tol > QC_QUILT_MAX_SEAM_TOL)
+        return qc__fail(ctx, QC_EINVAL, "quilt: seam tolerance %g mm must be in (0, %g]",
+                        q.seam_tol, QC_QUILT_MAX_SEAM_TOL);
     rc = run(&q);
     qc__free(ctx, q.hub, q.seams.nv * sizeof *q.hub);
     qc__free(ctx, q.stamp, q.seams.nv * sizeof *q.stamp);
