@@ -226,6 +226,8 @@ static void print_stats(const qc_patches *ps, const qc_quilt_result *res,
             cJSON_AddNumberToObject(p, "order", (double)pr->order + 1);
             cJSON_AddNumberToObject(p, "length_mm", pr->length_mm);
             cJSON_AddNumberToObject(p, "largest_gap_mm", pr->largest_gap_mm);
+            cJSON_AddNumberToObject(p, "farthest_fabric_mm", pr->farthest_fabric_mm);
+            cJSON_AddNumberToObject(p, "seam_bare", pr->seam_bare);
             cJSON_AddNumberToObject(p, "pieces", (double)pr->pieces);
             if (pr->ditch_only)
                 cJSON_AddTrueToObject(p, "ditch_only");

@@ -110,7 +110,11 @@ typedef struct qc_patch_job {
 typedef struct qc_patch_result {
     int family;            /* the family used (resolved); 0 when unquilted */
     double length_mm;      /* the patch's own pattern */
-    double largest_gap_mm; /* qc_generate's measure (0 when skip_gap_stat) */
+    double largest_gap_mm; /* qc_generate's measure (0 when skip_gap_stat; some
+                              families do not measure it) */
+    double farthest_fabric_mm; /* every family: the farthest any fabric of the patch
+                                  lies from its own pattern (0 when skip_gap_stat) */
+    double seam_bare;      /* share of its boundary farther than 1/4 in from it */
     size_t pieces;         /* pieces of the pattern as generated */
     size_t order;          /* place in the sewing order, 0-based; SIZE_MAX when unquilted */
     int ditch_only;        /* 1: too small for its family at its spacing (qc_generate's

@@ -294,6 +294,8 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
     pr->family = res.params.family;
     pr->length_mm = qc_curve_length(&res.path, 0.05);
     pr->largest_gap_mm = res.stats.largest_gap_mm;
+    pr->farthest_fabric_mm = res.stats.farthest_fabric_mm;
+    pr->seam_bare = res.stats.seam_bare;
     pr->pieces = qc_path_pieces(&res.path);
     pr->order = q->out->norder;
     q->out->order[q->out->norder++] = (uint32_t)i;
