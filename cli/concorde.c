@@ -287,38 +287,60 @@ static int have_concorde(void)
     return 0;
 }
 
+/* ctx->tour for qc_generate: concorde's tour; its own line on failure. */
+typedef struct concorde_hook {
+    qc_ctx *ctx;
+    int rc; /* CLI status of the last run */
+} concorde_hook;
+
+static int hook_tour(void *ud, const qc_vec2 *pts, size_t n, double budget_ms, qc_order *order)
+{
+    concorde_hook *h = (concorde_hook *)ud;
+    qc_points view;
+
+    view.v = (qc_vec2 *)pts; /* read only: written out as TSPLIB */
+    view.n = view.cap = n;
+    h->rc = concorde_tour(h->ctx, &view, 0, budget_ms, order);
+    return h->rc == CLI_OK ? QC_OK : QC_EUNSUPPORTED;
+}
+
+/* qc_generate with concorde as the tour (the family decorates once, kept
+ * inside and measured as every other run). */
+static int generate_with_concorde(qc_ctx *ctx, const qc_params *p, const qc_region *region,
+                                  const qc_points *given, const qc_motif_set *motifs,
+                                  qc_result *res, const char *what)
+{
+    concorde_hook h;
+    int rc;
+
+    h.ctx = ctx;
+    h.rc = CLI_OK;
+    ctx->tour = hook_tour;
+    ctx->tour_ud = &h;
+    rc = qc_generate(ctx, region, p, given, motifs, res);
+    ctx->tour = NULL;
+    ctx->tour_ud = NULL;
+    if (rc >= 0)
+        return CLI_OK;
+    return h.rc != CLI_OK ? h.rc : cli_fail(ctx, what, ctx->status);
+}
+
 int cli_concorde_skeleton(qc_ctx *ctx, const qc_params *params, const qc_region *region,
                           const qc_points *given, qc_result *res)
 {
     qc_params p = *params;
-    qc_order tour = {0};
-    int rc;
 
     if (!have_concorde())
         return CLI_RUNTIME;
-    qc_params_set(ctx, &p, "skeleton", QC_SKELETON_MST); /* for the points and root */
-    if (qc_generate(ctx, region, &p, given, NULL, res) < 0)
-        return cli_fail(ctx, "skeleton", ctx->status);
-    rc = concorde_tour(ctx, &res->points, res->points.n ? res->order.i[0] : 0,
-                       res->params.tsp_time_ms, &tour);
-    if (rc == CLI_OK) {
-        qc_order_free(ctx, &res->order);
-        res->order = tour;
-        qc_edges_free(ctx, &res->edges);
-        return CLI_OK;
-    }
-    qc_order_free(ctx, &tour);
-    return rc;
+    qc_params_set(ctx, &p, "skeleton", QC_SKELETON_TSP);
+    return generate_with_concorde(ctx, &p, region, given, NULL, res, "skeleton");
 }
 
 int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region *region,
                           const qc_points *given, const qc_motif_set *motifs, qc_result *res)
 {
-    qc_params p = *params, r;
     const qc_family_desc *fam;
-    qc_skeleton sk;
-    qc_order tour = {0};
-    int rc;
+    qc_params r;
 
     if (qc_params_resolve(ctx, params, &r) < 0)
         return cli_fail(ctx, "generate", ctx->status);
@@ -334,33 +356,5 @@ int cli_concorde_generate(qc_ctx *ctx, const qc_params *params, const qc_region 
     }
     if (!have_concorde())
         return CLI_RUNTIME;
-    /* the built-in tour is replaced: its cheapest, then the family again */
-    qc_params_set(ctx, &p, "tsp", QC_TSP_METHOD_GREEDY);
-    qc_params_set(ctx, &p, "tsp-time", 0);
-    if (qc_generate(ctx, region, &p, given, motifs, res) < 0)
-        return cli_fail(ctx, "generate", ctx->status);
-    rc = concorde_tour(ctx, &res->points, res->order.i[0], r.tsp_time_ms, &tour);
-    if (rc != CLI_OK) {
-        qc_order_free(ctx, &tour);
-        return rc;
-    }
-    qc_order_free(ctx, &res->order);
-    res->order = tour;
-    res->params = r;
-    memset(&sk, 0, sizeof sk);
-    sk.p = res->points.v;
-    sk.n = res->points.n;
-    sk.order = res->order.i;
-    sk.norder = res->order.n;
-    sk.root = res->order.i[0];
-    qc_path_free(ctx, &res->path);
-    memset(&res->stats, 0, sizeof res->stats);
-    if (fam->run(ctx, region, &res->params, &sk, motifs, &res->path, &res->stats) < 0)
-        return cli_fail(ctx, "generate", ctx->status);
-    res->stats.points = res->points.n;
-    res->stats.edges = res->edges.n;
-    res->stats.order = res->order.n;
-    qc_curve_measure(&res->path, 0.05, &res->stats.length_mm, &res->stats.bbox); /* as qc_generate */
-    res->stats.pieces = qc_path_pieces(&res->path);
-    return CLI_OK;
+    return generate_with_concorde(ctx, params, region, given, motifs, res, "generate");
 }

@@ -142,7 +142,11 @@ wanderer_on_concorde() {
         --region square:150 --units mm --spacing 15 --tsp concorde --stats -o w.pat 2>st.json &&
         "$QC" check w.pat >/dev/null && no_leak &&
         "$QC" generate --family wanderer --region square:150 --units mm --spacing 15 -o b.pat &&
-        ! cmp -s w.pat b.pat && grep -q '"order":' st.json
+        ! cmp -s w.pat b.pat && grep -q '"order":' st.json &&
+        TMPDIR=$WORK/tmp PATH=$REAL:$PATH "$QC" generate --family wanderer --region heart:150 \
+            --units mm --spacing 15 --tsp concorde --stats -o h.pat 2>hs.json &&
+        grep -q '"farthest_fabric_mm":[1-9]' hs.json && # measured, as every run is
+        "$QC" check h.pat --region heart:150 --units mm >hc.txt && ! grep -q outside hc.txt
 }
 
 if [ -x "$REAL/concorde" ]; then

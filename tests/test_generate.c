@@ -78,6 +78,71 @@ static void test_walk_starts_nearest_the_start_point(void)
     qc_result_free(&ctx, &r);
 }
 
+/* A caller's tour (ctx->tour): how it was asked, and what it answers. */
+typedef struct hook_log {
+    int calls, mode; /* mode 0: points in reverse; 1: a point twice; 2: fails */
+    size_t n;
+    double budget_ms;
+} hook_log;
+
+static int hook_tour(void *ud, const qc_vec2 *pts, size_t n, double budget_ms, qc_order *order)
+{
+    hook_log *h = (hook_log *)ud;
+    size_t i;
+
+    (void)pts;
+    h->calls++;
+    h->n = n;
+    h->budget_ms = budget_ms;
+    if (h->mode == 2)
+        return QC_EUNSUPPORTED;
+    for (i = 0; i < n; i++)
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_order_push(&ctx, order, (uint32_t)(n - 1 - i)));
+    if (h->mode == 1)
+        order->i[1] = order->i[0];
+    return QC_OK;
+}
+
+/* The tour skeleton asks the caller's tour once, starts it at the root,
+ * and refuses one that is not a permutation; a failure is passed on. */
+static void test_a_callers_tour_is_used_once_and_checked(void)
+{
+    hook_log h;
+    qc_params p;
+    qc_result r;
+    size_t i;
+
+    memset(&h, 0, sizeof h);
+    ctx.tour = hook_tour;
+    ctx.tour_ud = &h;
+    memset(&p, 0, sizeof p);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "family", QC_FAMILY_WANDERER));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "tsp-time", 250.0));
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, qc_generate(&ctx, &block, &p, NULL, NULL, &r),
+                                  qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_INT(1, h.calls);
+    TEST_ASSERT_EQUAL_DOUBLE(250.0, h.budget_ms);
+    TEST_ASSERT_EQUAL_size_t(r.points.n, h.n);
+    TEST_ASSERT_EQUAL_size_t(r.points.n, r.order.n);
+    for (i = 0; i + 1 < r.order.n; i++) /* the reverse order, rotated */
+        TEST_ASSERT_EQUAL_UINT32((r.order.i[i] + r.points.n - 1) % r.points.n, r.order.i[i + 1]);
+    TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, r.stats.farthest_fabric_mm); /* measured as ever */
+    qc_result_free(&ctx, &r);
+
+    h.mode = 1;
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_generate(&ctx, &block, &p, NULL, NULL, &r));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "not a permutation"));
+    TEST_ASSERT_EQUAL_size_t(0, r.path.ncmd);
+    h.mode = 2;
+    TEST_ASSERT_EQUAL_INT(QC_EUNSUPPORTED, qc_generate(&ctx, &block, &p, NULL, NULL, &r));
+    /* tree skeletons never ask */
+    h.calls = 0;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_set(&ctx, &p, "family", QC_FAMILY_VINE));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &block, &p, NULL, NULL, &r));
+    TEST_ASSERT_EQUAL_INT(0, h.calls);
+    qc_result_free(&ctx, &r);
+}
+
 /* Given points are used as they are; an empty set is refused by name. */
 static void test_given_points(void)
 {
@@ -153,6 +218,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_skipping_the_gap_stat_keeps_the_path);
     RUN_TEST(test_walk_starts_nearest_the_start_point);
+    RUN_TEST(test_a_callers_tour_is_used_once_and_checked);
     RUN_TEST(test_given_points);
     RUN_TEST(test_given_points_outside_the_region_are_refused);
     RUN_TEST(test_a_block_smaller_than_the_margin_is_refused);

@@ -86,6 +86,9 @@ typedef void *(*qc_alloc_fn)(void *ud, void *ptr, size_t old_size,
  * The context: caller-owned (stack, static or heap), set up by qc_ctx_init.
  * A context is used by one thread at a time; two contexts share nothing.
  */
+struct qc_vec2;  /* below: the tour hook names them */
+struct qc_order;
+
 typedef struct qc_ctx {
     qc_alloc_fn alloc; /* never NULL after qc_ctx_init */
     void *alloc_ud;
@@ -96,6 +99,15 @@ typedef struct qc_ctx {
      * with a clock can time them. The core itself has no clock. */
     void (*trace)(void *ud, const char *stage);
     void *trace_ud;
+    /* Optional: tours from outside the core (an exact solver the caller can
+     * run, such as Concorde). When set, qc_generate's tour skeletons ask it
+     * instead of qc_tsp, with the params' tsp_time_ms as its budget: it
+     * appends to *order a permutation of pts[0..n) in any rotation (the
+     * core starts it at the root and refuses anything else), or returns a
+     * negative QC_ status, which qc_generate returns. */
+    int (*tour)(void *ud, const struct qc_vec2 *pts, size_t n, double budget_ms,
+                struct qc_order *order);
+    void *tour_ud;
 } qc_ctx;
 
 /*

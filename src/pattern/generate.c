@@ -96,6 +96,30 @@ static uint32_t pick_root(const qc_region *region, const qc_params *p, const qc_
     return qc_nearest_point(pts->v, pts->n, start);
 }
 
+/* A tour from ctx->tour must visit each of the n points once. */
+static int check_permutation(qc_ctx *ctx, const qc_order *o, size_t n)
+{
+    unsigned char *seen;
+    size_t i;
+    int rc = QC_OK;
+
+    if (o->n != n)
+        return qc__fail(ctx, QC_EINVAL, "the caller's tour has %lu points, not %lu",
+                        (unsigned long)o->n, (unsigned long)n);
+    if ((seen = (unsigned char *)qc__alloc_array(ctx, n ? n : 1, 1)) == NULL)
+        return QC_ENOMEM;
+    memset(seen, 0, n);
+    for (i = 0; i < n && rc == QC_OK; i++) {
+        if (o->i[i] >= n || seen[o->i[i]])
+            rc = qc__fail(ctx, QC_EINVAL, "the caller's tour is not a permutation of the "
+                          "%lu points (point %lu)", (unsigned long)n, (unsigned long)o->i[i]);
+        else
+            seen[o->i[i]] = 1;
+    }
+    qc__free(ctx, seen, n ? n : 1);
+    return rc;
+}
+
 static int build_tour(qc_ctx *ctx, const qc_params *p, const qc_points *pts,
                       uint32_t root, qc_order *order)
 {
@@ -104,13 +128,19 @@ static int build_tour(qc_ctx *ctx, const qc_params *p, const qc_points *pts,
     size_t i, at = 0;
     int rc;
 
-    memset(&tp, 0, sizeof tp);
-    tp.method = p->tsp;
-    tp.seed = p->seed;
-    /* the core has no clock: the budget becomes a round count (measured:
-     * 70-150 rounds per ms on 10^3-10^5 uniform points) */
-    tp.perturb_iterations = (uint64_t)(p->tsp_time_ms * 100.0);
-    rc = qc_tsp(ctx, pts->v, pts->n, &tp, &raw);
+    if (ctx->tour != NULL) {
+        rc = ctx->tour(ctx->tour_ud, pts->v, pts->n, p->tsp_time_ms, &raw);
+        if (rc == QC_OK)
+            rc = check_permutation(ctx, &raw, pts->n);
+    } else {
+        memset(&tp, 0, sizeof tp);
+        tp.method = p->tsp;
+        tp.seed = p->seed;
+        /* the core has no clock: the budget becomes a round count (measured:
+         * 70-150 rounds per ms on 10^3-10^5 uniform points) */
+        tp.perturb_iterations = (uint64_t)(p->tsp_time_ms * 100.0);
+        rc = qc_tsp(ctx, pts->v, pts->n, &tp, &raw);
+    }
     if (rc < 0)
         goto out;
     for (i = 0; i < raw.n; i++)
