@@ -1,7 +1,8 @@
 #!/bin/sh
 # Files written by other programs read as they draw them: ezdxf writes a DXF
 # of lightweight polylines with bulges, an arc, a circle, an ellipse and a
-# spline in inches; quiltc's reader must agree with ezdxf's own geometry
+# spline in inches, and splines of fit points only (with and without end
+# tangents); quiltc's reader must agree with ezdxf's own geometry
 # within 0.1 mm (tests/readers/foreign_dxf.py). Prints Unity's summary line.
 BUILD=${BUILD:-build}
 dir=$BUILD/foreign

@@ -6,6 +6,7 @@
  * message naming the line; every failed allocation is survived.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -183,6 +184,83 @@ static void test_dxf_entities_and_units_should_read_as_drawn(void)
     qc_plan_free(&ctx, &pl);
 }
 
+/* The smallest distance from q to the plan's points, in mm. */
+static double nearest(const qc_plan *pl, size_t from, qc_vec2 q)
+{
+    double best = HUGE_VAL;
+    size_t i;
+
+    for (i = from; i < pl->n; i++)
+        best = fmin(best, qc_hypot(pl->p[i].x - q.x, pl->p[i].y - q.y));
+    return best;
+}
+
+static void survive_oom(int format, const char *text, size_t len, size_t want);
+
+/* The x where a DXF whose header is hdr draws LINE (0,0)-(1,0) ends, in mm. */
+static double dxf_line_end(const char *hdr)
+{
+    char doc[512];
+    qc_plan pl;
+    double x;
+
+    snprintf(doc, sizeof doc,
+             "0\nSECTION\n2\nHEADER\n%s0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+             "0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC\n0\nEOF\n", hdr);
+    read_text(QC_FORMAT_DXF, doc, &pl);
+    x = pl.p[pl.n - 1].x;
+    qc_plan_free(&ctx, &pl);
+    return x;
+}
+
+static void test_dxf_units_should_follow_insunits_then_measurement(void)
+{
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, dxf_line_end(""));
+    TEST_ASSERT_EQUAL_DOUBLE(25.4, dxf_line_end("9\n$MEASUREMENT\n70\n0\n"));
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, dxf_line_end("9\n$MEASUREMENT\n70\n1\n"));
+    TEST_ASSERT_EQUAL_DOUBLE(25.4, dxf_line_end("9\n$INSUNITS\n70\n0\n9\n$MEASUREMENT\n70\n0\n"));
+    TEST_ASSERT_EQUAL_DOUBLE(10.0, dxf_line_end("9\n$MEASUREMENT\n70\n0\n9\n$INSUNITS\n70\n5\n"));
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, dxf_line_end("9\n$INSUNITS\n70\n4\n9\n$MEASUREMENT\n70\n0\n"));
+}
+
+static void test_dxf_fit_point_spline_should_pass_its_points(void)
+{
+    /* mm: a curve through four fit points, then one leaving straight up
+     * (start tangent 0,1) and arriving heading +x (end tangent 2,0) */
+    static const char doc[] =
+        "0\nSECTION\n2\nENTITIES\n"
+        "0\nSPLINE\n70\n8\n71\n3\n74\n4\n"
+        "11\n0\n21\n0\n11\n10\n21\n20\n11\n25\n21\n5\n11\n40\n21\n15\n"
+        "0\nSPLINE\n70\n8\n71\n3\n74\n3\n12\n0\n22\n1\n13\n2\n23\n0\n"
+        "11\n100\n21\n0\n11\n110\n21\n10\n11\n120\n21\n0\n"
+        "0\nENDSEC\n0\nEOF\n";
+    static const double fit[7][2] = {{0, 0}, {10, 20}, {25, 5}, {40, 15},
+                                     {100, 0}, {110, 10}, {120, 0}};
+    qc_plan pl;
+    size_t i, second = 0, n;
+
+    read_text(QC_FORMAT_DXF, doc, &pl);
+    n = pl.n;
+    for (i = 1; i < pl.n; i++)
+        if (pl.flags[i] & QC_ST_JUMP)
+            second = i;
+    TEST_ASSERT_TRUE(second > 20 && pl.n - second > 20);
+    for (i = 0; i < 7; i++)
+        TEST_ASSERT_TRUE(nearest(&pl, 0, v2(fit[i][0], fit[i][1])) < 1e-9);
+    assert_point(v2(0, 0), pl.p[0], 1e-9);
+    assert_point(v2(100, 0), pl.p[second], 1e-9);
+    assert_point(v2(120, 0), pl.p[pl.n - 1], 1e-9);
+    /* the tangents: straight up out of (100, 0), level into (120, 0) (the
+     * first stitch is a chord, 0.4 mm long; without them, 45 degrees) */
+    TEST_ASSERT_DOUBLE_WITHIN(0.06, 0.0, (pl.p[second + 1].x - 100) / (pl.p[second + 1].y));
+    TEST_ASSERT_DOUBLE_WITHIN(0.06, 0.0, pl.p[pl.n - 2].y / (120 - pl.p[pl.n - 2].x));
+    /* no tangents: no curvature at the ends, so it leaves (0, 0) towards
+     * the chord's side and is no straight line */
+    TEST_ASSERT_TRUE(nearest(&pl, 0, v2(5, 10)) > 0.5);
+    qc_plan_free(&ctx, &pl);
+    survive_oom(QC_FORMAT_DXF, doc, sizeof doc - 1, n);
+}
+
 static void test_hpgl_relative_moves_and_pen_should_read_as_drawn(void)
 {
     qc_plan pl;
@@ -279,6 +357,10 @@ static void test_malformed_files_should_fail_naming_the_line(void)
             QC_EFORMAT, "without EOF");
     REFUSES(QC_FORMAT_DXF, "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n9\n0\nENDSEC\n0\nEOF\n",
             QC_EFORMAT, "$INSUNITS");
+    REFUSES(QC_FORMAT_DXF, "0\nSECTION\n2\nENTITIES\n0\nSPLINE\n71\n3\n11\n1\n21\n1\n0\nENDSEC\n0\nEOF\n",
+            QC_EFORMAT, "two or more fit points");
+    REFUSES(QC_FORMAT_DXF, "0\nSECTION\n2\nHEADER\n9\n$MEASUREMENT\n70\n2\n0\nENDSEC\n0\nEOF\n",
+            QC_EFORMAT, "$MEASUREMENT");
     REFUSES(QC_FORMAT_IQP, "StitchV2        \0\0\0\0\0\0\0\0\7\0\0\0\100\0\0\0", QC_EFORMAT,
             "longer than the file");
     REFUSES(QC_FORMAT_IQP, "StitchV1", QC_EFORMAT, "StitchV2");
@@ -358,6 +440,8 @@ int main(void)
     RUN_TEST(test_every_writer_should_read_back_within_its_resolution);
     RUN_TEST(test_qli_arcs_and_needle_should_read_as_drawn);
     RUN_TEST(test_dxf_entities_and_units_should_read_as_drawn);
+    RUN_TEST(test_dxf_fit_point_spline_should_pass_its_points);
+    RUN_TEST(test_dxf_units_should_follow_insunits_then_measurement);
     RUN_TEST(test_hpgl_relative_moves_and_pen_should_read_as_drawn);
     RUN_TEST(test_gcode_units_arcs_and_pen_up_should_read_as_drawn);
     RUN_TEST(test_qcc_and_iqp_should_read_as_drawn);

@@ -3,10 +3,14 @@
  * the ENTITIES section: POLYLINE with its VERTEX list, LWPOLYLINE (bulges
  * are arcs), LINE, ARC, CIRCLE, ELLIPSE and SPLINE (control points, knots,
  * weights). Each entity is a piece, joined to the one before without a jump
- * when it starts where that one ended. Units come from $INSUNITS (0,
- * unitless, is taken as mm). Entities with no stitch line (TEXT, POINT,
- * HATCH, DIMENSION, ...) are skipped, BLOCKS too; INSERT (a block
- * reference) and fit-point-only splines are refused rather than misread.
+ * when it starts where that one ended. Units come from $INSUNITS; a
+ * drawing without them (0, unitless) is in inches or mm as its
+ * $MEASUREMENT says (0 imperial, 1 metric: AutoCAD's own fallback), else
+ * in mm. A SPLINE of fit points only is the cubic through them that CAD
+ * programs draw (chord-length parameters, its end tangents when given,
+ * else no curvature at the ends). Entities with no stitch line (TEXT,
+ * POINT, HATCH, DIMENSION, ...) are skipped, BLOCKS too; INSERT (a block
+ * reference) is refused rather than misread.
  */
 #include <math.h>
 #include <string.h>
@@ -27,6 +31,8 @@ typedef struct dxf {
     const char *val;
     size_t nval;
     double unit;        /* mm per drawing unit */
+    double insunits_mm; /* mm per unit from $INSUNITS; 0: unitless or not given */
+    int measurement;    /* $MEASUREMENT: 0 imperial, 1 metric, -1 not given */
     /* the entity being read */
     char type[16];
     double g[100];      /* last value of each single group code < 100 */
@@ -38,6 +44,8 @@ typedef struct dxf {
     size_t nk, k_cap;
     double *w;          /* spline weights (group 41, before or after the points) */
     size_t nw, w_cap;
+    dxf_vert *fit;      /* spline fit points (groups 11/21) */
+    size_t nfit, fit_cap;
     int mirrored;       /* extrusion z < 0 (group 230) */
     int in_polyline;    /* between POLYLINE and SEQEND */
     int poly_mirrored;
@@ -232,6 +240,96 @@ static qc_vec2 de_boor(const dxf *d, int p, size_t span, double u, double *tmp)
     return mm(d, tmp[3 * p] / tmp[3 * p + 2], tmp[3 * p + 1] / tmp[3 * p + 2]);
 }
 
+/* Second derivatives m[0..n] of the cubic spline through (s[i], y[i]):
+ * its first derivative at an end is d0 / d1 where has0 / has1, else its
+ * second derivative there is 0. Thomas' algorithm; c is scratch. */
+static void spline_moments(const double *s, const double *y, size_t n, int has0, double d0,
+                           int has1, double d1, double *m, double *c)
+{
+    size_t i;
+    double b0 = has0 ? (s[1] - s[0]) / 3 : 1, r0 = has0 ? (y[1] - y[0]) / (s[1] - s[0]) - d0 : 0;
+
+    /* row i: h[i-1] m[i-1] / 6 + (h[i-1] + h[i]) m[i] / 3 + h[i] m[i+1] / 6 = r[i] */
+    c[0] = has0 ? (s[1] - s[0]) / 6 / b0 : 0;
+    m[0] = r0 / b0;
+    for (i = 1; i <= n; i++) {
+        double hl = s[i] - s[i - 1], hr = i < n ? s[i + 1] - s[i] : 0, a = hl / 6, b, r;
+
+        if (i < n) {
+            b = (hl + hr) / 3;
+            r = (y[i + 1] - y[i]) / hr - (y[i] - y[i - 1]) / hl;
+        } else if (has1) {
+            b = hl / 3;
+            r = d1 - (y[n] - y[n - 1]) / hl;
+        } else {
+            a = 0;
+            b = 1;
+            r = 0;
+        }
+        b -= a * c[i - 1];
+        c[i] = i < n ? hr / 6 / b : 0;
+        m[i] = (r - a * m[i - 1]) / b;
+    }
+    for (i = n; i-- > 0;)
+        m[i] -= c[i] * m[i + 1];
+}
+
+/* A SPLINE given by fit points only: the cubic through them, in chord
+ * length, as CAD programs draw it (their end tangents, groups 12/22 and
+ * 13/23, when given; else zero curvature at the ends). */
+static int emit_fit_spline(dxf *d)
+{
+    size_t n = 0, i, k, steps;
+    double *buf, *s, *x, *y, *mx, *my, *c, t0x = d->g[12], t0y = d->g[22];
+    double t1x = d->g[13], t1y = d->g[23], l0 = sqrt(t0x * t0x + t0y * t0y);
+    double l1 = sqrt(t1x * t1x + t1y * t1y);
+    int has0 = d->has[12] && l0 > 0, has1 = d->has[13] && l1 > 0, rc = QC_OK;
+
+    if (d->nfit < 2)
+        return bad(d, "a SPLINE needs control points, or two or more fit points");
+    if ((buf = (double *)qc__alloc_array(d->r.ctx, d->nfit, 7 * sizeof *buf)) == NULL)
+        return QC_ENOMEM;
+    s = buf;
+    x = s + d->nfit;
+    y = x + d->nfit;
+    mx = y + d->nfit;
+    my = mx + d->nfit;
+    c = my + d->nfit;
+    for (i = 0; i < d->nfit; i++) { /* repeated points add nothing */
+        double h = n ? sqrt((d->fit[i].x - x[n - 1]) * (d->fit[i].x - x[n - 1]) +
+                            (d->fit[i].y - y[n - 1]) * (d->fit[i].y - y[n - 1]))
+                     : 0;
+
+        if (n && !(h > 0))
+            continue;
+        s[n] = n ? s[n - 1] + h : 0;
+        x[n] = d->fit[i].x;
+        y[n++] = d->fit[i].y;
+    }
+    if (n < 2) {
+        qc__free(d->r.ctx, buf, d->nfit * 7 * sizeof *buf);
+        return start_at(d, mm(d, x[0], y[0]));
+    }
+    n--;
+    spline_moments(s, x, n, has0, t0x / l0, has1, t1x / l1, mx, c);
+    spline_moments(s, y, n, has0, t0y / l0, has1, t1y / l1, my, c);
+    rc = start_at(d, mm(d, x[0], y[0]));
+    for (i = 0; i < n && rc == QC_OK; i++) {
+        double h = s[i + 1] - s[i], st = ceil(h * d->unit / DXF_STEP_MM) + 8;
+
+        steps = st > DXF_MAX_SAMPLES ? (size_t)DXF_MAX_SAMPLES : (size_t)st;
+        for (k = 1; k <= steps && rc == QC_OK; k++) {
+            double b = (double)k / (double)steps, a = 1 - b, e = h * h / 6;
+            double px = a * x[i] + b * x[i + 1] + ((a * a * a - a) * mx[i] + (b * b * b - b) * mx[i + 1]) * e;
+            double py = a * y[i] + b * y[i + 1] + ((a * a * a - a) * my[i] + (b * b * b - b) * my[i + 1]) * e;
+
+            rc = qc__reader_sew(&d->r, mm(d, px, py));
+        }
+    }
+    qc__free(d->r.ctx, buf, d->nfit * 7 * sizeof *buf);
+    return rc;
+}
+
 static int emit_spline(dxf *d)
 {
     int p = d->has[71] && d->g[71] >= 1 && d->g[71] <= 11 ? (int)d->g[71] : d->has[71] ? 0 : 3;
@@ -239,7 +337,7 @@ static int emit_spline(dxf *d)
     size_t k, n, span;
 
     if (d->nv == 0)
-        return bad(d, "a SPLINE with fit points only is not supported (convert it to control points)");
+        return emit_fit_spline(d);
     if (p < 1 || p > 11 || d->nk != d->nv + (size_t)p + 1)
         return bad(d, "a SPLINE needs degree 1..11 and control points + degree + 1 knots");
     for (k = 1; k < d->nk; k++)
@@ -353,6 +451,13 @@ static int entity_group(dxf *d)
         d->v[d->nv - 1].y = v;
     } else if (lw && d->code == 42 && d->nv > 0) {
         d->v[d->nv - 1].bulge = v;
+    } else if (sp && d->code == 11) {
+        QC__TRY(QC__RESERVE(d->r.ctx, d->fit, d->fit_cap, d->nfit + 1));
+        d->fit[d->nfit].x = v;
+        d->fit[d->nfit].y = 0;
+        d->fit[d->nfit++].bulge = 0;
+    } else if (sp && d->code == 21 && d->nfit > 0) {
+        d->fit[d->nfit - 1].y = v;
     } else if (sp && d->code == 40) {
         QC__TRY(QC__RESERVE(d->r.ctx, d->knots, d->k_cap, d->nk + 1));
         d->knots[d->nk++] = v;
@@ -383,11 +488,12 @@ static void begin_entity(dxf *d)
             d->nv = 0;
     d->nk = 0;
     d->nw = 0;
+    d->nfit = 0;
 }
 
 static int header_units(dxf *d)
 {
-    static const double per_unit[] = {1, 25.4, 304.8, 0, 1, 10, 1000};
+    static const double per_unit[] = {0, 25.4, 304.8, 0, 1, 10, 1000};
     double v;
 
     if (next_group(d) != 1 || d->code != 70)
@@ -395,8 +501,27 @@ static int header_units(dxf *d)
     QC__TRY(number(d, &v));
     if (v != floor(v) || v < 0 || v > 6 || v == 3)
         return bad(d, "$INSUNITS other than unitless, in, ft, mm, cm or m");
-    d->unit = per_unit[(int)v];
+    d->insunits_mm = per_unit[(int)v];
     return QC_OK;
+}
+
+static int header_measurement(dxf *d)
+{
+    double v;
+
+    if (next_group(d) != 1 || d->code != 70)
+        return bad(d, "$MEASUREMENT without its value (group 70)");
+    QC__TRY(number(d, &v));
+    if (v != 0 && v != 1)
+        return bad(d, "$MEASUREMENT other than 0 (imperial) or 1 (metric)");
+    d->measurement = (int)v;
+    return QC_OK;
+}
+
+/* The drawing's unit once the header is read (it may name either first). */
+static void settle_units(dxf *d)
+{
+    d->unit = d->insunits_mm > 0 ? d->insunits_mm : d->measurement == 0 ? 25.4 : 1.0;
 }
 
 static int read_all(dxf *d)
@@ -413,6 +538,8 @@ static int read_all(dxf *d)
             if (next_group(d) != 1 || d->code != 2)
                 return bad(d, "a SECTION without its name (group 2)");
             section = is(d, "HEADER") ? 1 : is(d, "ENTITIES") ? 2 : 3;
+            if (section == 2)
+                settle_units(d);
         } else if (d->code == 0 && is(d, "ENDSEC")) {
             if (section == 2 && d->in_polyline)
                 return bad(d, "a POLYLINE without its SEQEND");
@@ -421,6 +548,8 @@ static int read_all(dxf *d)
             return QC_OK;
         } else if (section == 1 && d->code == 9 && is(d, "$INSUNITS")) {
             QC__TRY(header_units(d));
+        } else if (section == 1 && d->code == 9 && is(d, "$MEASUREMENT")) {
+            QC__TRY(header_measurement(d));
         } else if (section == 2 && d->code == 0) {
             begin_entity(d);
             in_entity = 1;
@@ -442,6 +571,7 @@ int qc__read_dxf(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
     qc__reader_init(&d.r, ctx, out, "dxf");
     qc__lines_init(&d.it, buf, len);
     d.unit = 1;
+    d.measurement = -1;
     rc = read_all(&d);
     if (d.v)
         qc__free(ctx, d.v, d.v_cap * sizeof *d.v);
@@ -449,6 +579,8 @@ int qc__read_dxf(qc_ctx *ctx, const char *buf, size_t len, qc_plan *out)
         qc__free(ctx, d.knots, d.k_cap * sizeof *d.knots);
     if (d.w)
         qc__free(ctx, d.w, d.w_cap * sizeof *d.w);
+    if (d.fit)
+        qc__free(ctx, d.fit, d.fit_cap * sizeof *d.fit);
     if (rc == QC_OK)
         rc = qc__reader_finish(&d.r);
     return rc;

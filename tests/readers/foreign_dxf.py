@@ -35,8 +35,17 @@ def main():
     msp.add_ellipse((4, 4), major_axis=(1, 0.3), ratio=0.5)
     msp.add_open_spline([(0, 6), (1, 7), (2, 5.5), (3, 7), (4, 6)], degree=3)
     msp.add_rational_spline([(5, 6), (6, 7), (7, 5.5), (8, 7)], [1, 3, 0.5, 1], degree=2)
+    # fit points only, as CAD programs store a curve drawn through points:
+    # without end tangents, and with them
+    msp.add_spline([(0, 9), (1, 10), (2.5, 8.5), (3, 10), (4.5, 9)])
+    tangent = msp.add_spline([(5, 9), (6, 10.5), (7.5, 8.5), (9, 9.5)])
+    tangent.dxf.start_tangent = (0, 1, 0)
+    tangent.dxf.end_tangent = (1, -1, 0)
     src = f"{d}/foreign.dxf"
     doc.saveas(src)
+    fit_only = sum(1 for e in msp.query("SPLINE") if e.fit_point_count() and not e.control_point_count())
+    if fit_only != 2:
+        sys.exit(f"ezdxf wrote {fit_only} fit-point-only splines, not 2")
     mm = 25.4
     ref = []
     for e in msp:
