@@ -70,6 +70,10 @@ int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region
 /* The same, but an SVG is read as a quilt top: every patch's rings in one
  * region (not normalized: patches share seams), moved to the origin. */
 int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out);
+/* The same, and the top's patches moved alike in *ps (none for a shape
+ * spec; free with qc_patches_free). */
+int cli_load_top_patches(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out,
+                         qc_patches *ps);
 
 /* Monotonic milliseconds. */
 double cli_now_ms(void);

@@ -226,16 +226,53 @@ static int crossings(qc_ctx *ctx, const check_opts *o, const qc_plan *p, tally *
     return CLI_OK;
 }
 
+/* How a line names a patch: its id, else its element number and line. */
+static void patch_name(const qc_patch *p, size_t i, char *buf, size_t size)
+{
+    if (p->id[0] != '\0')
+        snprintf(buf, size, "patch %lu (id \"%s\")", (unsigned long)i + 1, p->id);
+    else
+        snprintf(buf, size, "patch %lu (line %lu)", (unsigned long)i + 1, p->line);
+}
+
+/* A top's figures patch by patch: the farthest any of its fabric lies
+ * from a stitch (whichever patch's) and its largest unquilted gap. */
+static int per_patch(qc_ctx *ctx, const check_opts *o, const qc_plan *p, const qc_order *ends,
+                     const qc_patches *ps, double mpu)
+{
+    size_t i;
+    char name[160];
+
+    for (i = 0; i < ps->n; i++) {
+        qc_fabric f;
+        double gap;
+        int rc = qc_fabric_measure(ctx, &ps->p[i].region, p->p, p->n, ends->i, ends->n, 0.5, 0,
+                                   NULL, &f);
+
+        if (rc < 0)
+            return rc;
+        gap = qc_largest_gap(ctx, &ps->p[i].region, p->p, p->n, 0.5, NULL);
+        if (gap < 0)
+            return (int)gap;
+        patch_name(&ps->p[i], i, name, sizeof name);
+        printf("%s: farthest fabric %.1f mm (%.3f %s), largest gap %.1f mm radius\n", name,
+               f.farthest_mm, f.farthest_mm / mpu, o->units, gap);
+    }
+    return QC_OK;
+}
+
 /* Outside (segments sampled along their length, 0.02 in tolerance), the
- * farthest fabric from a stitch and the largest empty circle. */
+ * farthest fabric from a stitch and the largest empty circle; for a top
+ * of several patches, each patch's too. */
 static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, tally *t)
 {
     qc_region r;
+    qc_patches ps;
     qc_order ends = {0};
     qc_fabric f;
     size_t i, outside = 0;
     double gap = 0, worst = 0, mpu = cli_units_mm(o->units);
-    int rc = cli_load_top(ctx, o->region, mpu, &r);
+    int rc = cli_load_top_patches(ctx, o->region, mpu, &r, &ps);
 
     if (rc != CLI_OK)
         return rc;
@@ -249,19 +286,24 @@ static int against_region(qc_ctx *ctx, const check_opts *o, const qc_plan *p, ta
         rc = qc_fabric_measure(ctx, &r, p->p, p->n, ends.i, ends.n, 0.5, 0, NULL, &f);
     if (rc == QC_OK)
         gap = qc_largest_gap(ctx, &r, p->p, p->n, 0.5, NULL);
-    qc_region_free(ctx, &r);
-    qc_order_free(ctx, &ends);
     if (rc == QC_OK && gap < 0)
         rc = (int)gap;
+    if (rc == QC_OK) {
+        if (outside > 0)
+            finding(t, "%.0f segments outside the region, up to %.3f mm beyond it (0.02 in "
+                    "allowed)", (double)outside, worst);
+        printf("farthest fabric from a stitch: %.1f mm (%.3f %s)\n", f.farthest_mm,
+               f.farthest_mm / mpu, o->units);
+        printf("seam farther than 1/4 in from a stitch: %.1f%%\n", 100.0 * f.seam_bare);
+        printf("largest unquilted gap: %.1f mm radius\n", gap);
+        if (ps.n > 1)
+            rc = per_patch(ctx, o, p, &ends, &ps, mpu);
+    }
+    qc_region_free(ctx, &r);
+    qc_patches_free(ctx, &ps);
+    qc_order_free(ctx, &ends);
     if (rc < 0)
         return cli_fail(ctx, o->file, rc);
-    if (outside > 0)
-        finding(t, "%.0f segments outside the region, up to %.3f mm beyond it (0.02 in allowed)",
-                (double)outside, worst);
-    printf("farthest fabric from a stitch: %.1f mm (%.3f %s)\n", f.farthest_mm,
-           f.farthest_mm / mpu, o->units);
-    printf("seam farther than 1/4 in from a stitch: %.1f%%\n", 100.0 * f.seam_bare);
-    printf("largest unquilted gap: %.1f mm radius\n", gap);
     return CLI_OK;
 }
 

@@ -78,35 +78,49 @@ int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region
 /* A quilt top's patches (or a block outline) for checking a pattern
  * against: every patch's rings in one region, not normalized, since
  * patches share seams; the even-odd inside test still holds because
- * patches do not overlap. Moved to the origin as quiltc quilt moves it. */
-int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
+ * patches do not overlap. Moved to the origin as quiltc quilt moves it,
+ * and with ps != NULL the patches themselves, moved alike (none for a
+ * shape spec). */
+int cli_load_top_patches(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out,
+                         qc_patches *ps)
 {
-    qc_patches ps;
+    qc_patches own;
+    qc_patches *top = ps != NULL ? ps : &own;
     qc_bbox box;
     char *buf;
     size_t len, i, k;
     int rc;
 
+    memset(top, 0, sizeof *top);
     if (!looks_like_file(spec))
         return cli_load_region(ctx, spec, mm_per_unit, out);
     memset(out, 0, sizeof *out);
     if (cli_read_file(spec, MAX_SVG_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    rc = qc_io_read_svg_patches(ctx, buf, len, NULL, &ps);
+    rc = qc_io_read_svg_patches(ctx, buf, len, NULL, top);
     free(buf);
-    for (i = 0; rc == QC_OK && i < ps.n; i++)
-        for (k = 0; rc == QC_OK && k < ps.p[i].region.nrings; k++) {
-            const qc_region *r = &ps.p[i].region;
+    for (i = 0; rc == QC_OK && i < top->n; i++)
+        for (k = 0; rc == QC_OK && k < top->p[i].region.nrings; k++) {
+            const qc_region *r = &top->p[i].region;
             size_t s = k ? r->ring_end[k - 1] : 0;
             rc = qc_region_add_ring(ctx, out, r->v + s, r->ring_end[k] - s);
         }
-    qc_patches_free(ctx, &ps);
     if (rc < 0) {
         cli_error("%s: %s", spec, qc_errmsg(ctx));
         qc_region_free(ctx, out);
+        qc_patches_free(ctx, top);
         return CLI_RUNTIME;
     }
     box = qc_region_bbox(out);
     qc_region_translate(out, -box.min.x, -box.min.y);
+    for (i = 0; i < top->n; i++)
+        qc_region_translate(&top->p[i].region, -box.min.x, -box.min.y);
+    if (ps == NULL)
+        qc_patches_free(ctx, &own);
     return CLI_OK;
+}
+
+int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
+{
+    return cli_load_top_patches(ctx, spec, mm_per_unit, out, NULL);
 }

@@ -53,6 +53,19 @@ seam_gap() {
 }
 check seam_gap_joins_edges_drawn_slightly_apart seam_gap
 
+# check against a top gives every patch's own figures, by id.
+check_per_patch() {
+    "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o pp.pat &&
+        "$QC" check pp.pat --region "$STAR" --units in >out.txt &&
+        [ "$(grep -c '^patch [0-9]* (id "[a-z-]*"): farthest fabric [0-9.]* mm ([0-9.]* in), largest gap [0-9.]* mm radius$' out.txt)" -eq 17 ] &&
+        grep -q '^patch 1 (id "centre"): ' out.txt && python3 -c '
+import re
+v = [float(m) for m in re.findall(r"farthest fabric (?:from a stitch: )?([0-9.]+) mm", open("out.txt").read())]
+assert len(v) == 18 and max(v[1:]) == v[0], v  # the top is as far as its farthest patch
+'
+}
+check check_gives_each_patch_its_figures check_per_patch
+
 plan_families() {
     "$QC" quilt "$STAR" --plan "$ROOT/examples/sawtooth-star.json" -o star.pat --stats \
         2>stats.json && [ "$(pieces star.pat)" -eq 1 ] && python3 -c '
