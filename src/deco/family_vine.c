@@ -1,9 +1,111 @@
 /*
  * The vine (paper §4.3): the skeleton's visiting order smoothed by a
- * centripetal Catmull-Rom spline. A tree walk runs down and back each
- * branch; a tour closes on itself.
+ * centripetal Catmull-Rom spline. A tour closes on itself. A tree walk
+ * runs down and back each branch: every visit of a point is moved a little
+ * off the branch, into the wedge the walk turns through there (counter-
+ * clockwise from where it came from to where it goes: the side the walk
+ * keeps, children being taken counter-clockwise), so the two passes of a
+ * branch run side by side, one either side, and the vine traces the tree's
+ * outline instead of sewing each branch twice over itself and crossing it.
  */
+#include <math.h>
+
 #include "internal.h"
+
+/* Each pass keeps this far to its side of the branch, times d. */
+#define SIDE 0.12
+/* A narrow wedge's point lies at most this many sides out (a miter limit),
+ * and at most this share of the shorter branch at it. */
+#define MITER 2.5
+#define SHORT 0.4
+/* A branch longer than this, times d, gets a point beside its middle too:
+ * without it the spline between two far ends can swing across the branch
+ * into the other pass. */
+#define LONG 0.75
+
+static double heading(qc_vec2 from, qc_vec2 to)
+{
+    return qc_atan2(to.y - from.y, to.x - from.x);
+}
+
+/* v moved into the wedge counter-clockwise from v->u to v->w (u == w: a
+ * tip): a convex wedge by one point on its bisector, far enough to keep h
+ * from both branches; a reflex one by points h from v at most a quarter
+ * turn apart, round it like a round join (a tip gets a round cap, so the
+ * spline meets no point head on and curls); the first `most` of them. */
+static int side_points(qc_ctx *ctx, qc_vec2 u, qc_vec2 v, qc_vec2 w, double h, int most,
+                       qc_points *pts)
+{
+    double a = heading(v, u), t = heading(v, w) - a, dist, step;
+    double shorter = fmin(qc_hypot(u.x - v.x, u.y - v.y), qc_hypot(w.x - v.x, w.y - v.y));
+    int k, m;
+
+    while (t <= 0.0)
+        t += 2.0 * QC_PI;
+    while (t > 2.0 * QC_PI)
+        t -= 2.0 * QC_PI;
+    if (t < QC_PI) {
+        m = 1;
+        dist = fmin(h / qc_sin(0.5 * t), MITER * h);
+    } else {
+        m = (int)ceil(t / (0.5 * QC_PI) - 1e-9) - 1;
+        dist = h;
+    }
+    dist = fmin(dist, SHORT * shorter);
+    step = t / (double)(m + 1);
+    for (k = 1; k <= m && k <= most; k++) {
+        qc_vec2 q;
+        q.x = v.x + dist * qc_cos(a + step * (double)k);
+        q.y = v.y + dist * qc_sin(a + step * (double)k);
+        QC__TRY(qc_points_push(ctx, pts, q));
+    }
+    return QC_OK;
+}
+
+/* The walk's points, each moved to the side its pass keeps; a closed walk
+ * (back at the root) wraps round and ends on its first point, an open one
+ * keeps its two ends. */
+/* The point h beside the middle of the branch from a to b, on the side a
+ * pass from a to b keeps (its right), if the branch is longer than len. */
+static int beside_middle(qc_ctx *ctx, qc_vec2 a, qc_vec2 b, double h, double len, qc_points *pts)
+{
+    double dx = b.x - a.x, dy = b.y - a.y, l = qc_hypot(dx, dy);
+    qc_vec2 q;
+
+    if (!(l > len))
+        return QC_OK;
+    q.x = 0.5 * (a.x + b.x) + h * dy / l;
+    q.y = 0.5 * (a.y + b.y) - h * dx / l;
+    return qc_points_push(ctx, pts, q);
+}
+
+static int walk_sides(qc_ctx *ctx, const qc_skeleton *skel, double h, double len,
+                      qc_points *pts)
+{
+    const qc_vec2 *p = skel->p;
+    const uint32_t *o = skel->order;
+    size_t n = skel->norder, i;
+    int closed = n > 2 && o[0] == o[n - 1];
+
+    for (i = 0; i < n; i++) {
+        size_t a = i, b = i;
+
+        if (i > 0 && i + 1 < n) {
+            a = i - 1;
+            b = i + 1;
+        } else if (closed) {
+            a = i > 0 ? i - 1 : n - 2;
+            b = i + 1 < n ? i + 1 : 1;
+        }
+        if (a != b)
+            QC__TRY(side_points(ctx, p[o[a]], p[o[i]], p[o[b]], h, i + 1 < n ? 4 : 1, pts));
+        else
+            QC__TRY(qc_points_push(ctx, pts, p[o[i]]));
+        if (i + 1 < n)
+            QC__TRY(beside_middle(ctx, p[o[i]], p[o[i + 1]], h, len, pts));
+    }
+    return QC_OK;
+}
 
 int qc_deco_vine(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                  const qc_skeleton *skel, const qc_motif_set *motifs, qc_path *out,
@@ -14,13 +116,15 @@ int qc_deco_vine(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     int rc = QC_OK;
 
     (void)region;
-    (void)params;
     (void)motifs;
     (void)stats;
     if (skel->norder == 0)
         return qc__fail(ctx, QC_EEMPTY, "the vine needs at least one point");
-    for (i = 0; i < skel->norder && rc == QC_OK; i++)
-        rc = qc_points_push(ctx, &pts, skel->p[skel->order[i]]);
+    if (skel->edges != NULL && skel->norder > 1)
+        rc = walk_sides(ctx, skel, SIDE * params->spacing, LONG * params->spacing, &pts);
+    else
+        for (i = 0; i < skel->norder && rc == QC_OK; i++)
+            rc = qc_points_push(ctx, &pts, skel->p[skel->order[i]]);
     if (rc == QC_OK && pts.n == 1) /* a lone point: a tiny stitch in place */
         rc = qc_path_move_to(ctx, out, pts.v[0]);
     else if (rc == QC_OK)
@@ -30,5 +134,5 @@ int qc_deco_vine(qc_ctx *ctx, const qc_region *region, const qc_params *params,
 }
 
 const qc_family_desc qc__family_vine = {
-    QC_FAMILY_VINE, "vine", "the skeleton's walk smoothed into one vine (paper §4.3)",
-    QC_FAMILY_NEEDS_POINTS, 0, qc_deco_vine, NULL};
+    QC_FAMILY_VINE, "vine", "the skeleton's walk smoothed into one vine, down and back each "
+    "branch side by side (paper §4.3)", QC_FAMILY_NEEDS_POINTS, 0, qc_deco_vine, NULL};
