@@ -7,6 +7,8 @@
  * keeps, children being taken counter-clockwise), so the two passes of a
  * branch run side by side, one either side, and the vine traces the tree's
  * outline instead of sewing each branch twice over itself and crossing it.
+ * An open walk (to an end point) takes the end's branch out of that order,
+ * so it is smoothed through its points as they are.
  */
 #include <math.h>
 
@@ -62,9 +64,6 @@ static int side_points(qc_ctx *ctx, qc_vec2 u, qc_vec2 v, qc_vec2 w, double h, i
     return QC_OK;
 }
 
-/* The walk's points, each moved to the side its pass keeps; a closed walk
- * (back at the root) wraps round and ends on its first point, an open one
- * keeps its two ends. */
 /* The point h beside the middle of the branch from a to b, on the side a
  * pass from a to b keeps (its right), if the branch is longer than len. */
 static int beside_middle(qc_ctx *ctx, qc_vec2 a, qc_vec2 b, double h, double len, qc_points *pts)
@@ -79,28 +78,19 @@ static int beside_middle(qc_ctx *ctx, qc_vec2 a, qc_vec2 b, double h, double len
     return qc_points_push(ctx, pts, q);
 }
 
+/* The closed walk's points, each moved to the side its pass keeps,
+ * wrapping round at the root and ending on the first point. */
 static int walk_sides(qc_ctx *ctx, const qc_skeleton *skel, double h, double len,
                       qc_points *pts)
 {
     const qc_vec2 *p = skel->p;
     const uint32_t *o = skel->order;
     size_t n = skel->norder, i;
-    int closed = n > 2 && o[0] == o[n - 1];
 
     for (i = 0; i < n; i++) {
-        size_t a = i, b = i;
+        size_t a = i > 0 ? i - 1 : n - 2, b = i + 1 < n ? i + 1 : 1;
 
-        if (i > 0 && i + 1 < n) {
-            a = i - 1;
-            b = i + 1;
-        } else if (closed) {
-            a = i > 0 ? i - 1 : n - 2;
-            b = i + 1 < n ? i + 1 : 1;
-        }
-        if (a != b)
-            QC__TRY(side_points(ctx, p[o[a]], p[o[i]], p[o[b]], h, i + 1 < n ? 4 : 1, pts));
-        else
-            QC__TRY(qc_points_push(ctx, pts, p[o[i]]));
+        QC__TRY(side_points(ctx, p[o[a]], p[o[i]], p[o[b]], h, i + 1 < n ? 4 : 1, pts));
         if (i + 1 < n)
             QC__TRY(beside_middle(ctx, p[o[i]], p[o[i + 1]], h, len, pts));
     }
@@ -120,7 +110,7 @@ int qc_deco_vine(qc_ctx *ctx, const qc_region *region, const qc_params *params,
     (void)stats;
     if (skel->norder == 0)
         return qc__fail(ctx, QC_EEMPTY, "the vine needs at least one point");
-    if (skel->edges != NULL && skel->norder > 1)
+    if (skel->edges != NULL && skel->norder > 2 && skel->order[0] == skel->order[skel->norder - 1])
         rc = walk_sides(ctx, skel, SIDE * params->spacing, LONG * params->spacing, &pts);
     else
         for (i = 0; i < skel->norder && rc == QC_OK; i++)
