@@ -289,4 +289,29 @@ typedef struct qc__join_info {
 QC__HIDDEN int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o,
                               qc_points *out, qc__join_info *info);
 
+/* ---- offset contours joined into one path (shared_contour.c: echo, spiral) ---- */
+
+typedef struct qc__contour {
+    qc__sdf sdf;
+    qc__rings rings;  /* outermost level first */
+    double l0;        /* the outermost level: the margin (at least 0.001 d) */
+    double vmax;      /* the deepest grid node's distance from the boundary */
+    qc_vec2 at_max;   /* and where it lies */
+} qc__contour;
+
+/* The rings margin + k d (equal_area: rings d sqrt(n) in from the deepest
+ * point, each enclosing pi d^2 less than the next on a disc). Messages name
+ * who. Errors: QC_EEMPTY (no outline, no ring fits), QC_ERANGE (d),
+ * QC_ELIMIT (d too fine for the grid, too many equal-area rings),
+ * QC_ENOMEM. On failure *c holds nothing. */
+QC__HIDDEN int qc__contour_build(qc_ctx *ctx, const qc_region *region, double d, double margin,
+                                 int equal_area, const char *who, qc__contour *c);
+/* The rings joined (qc__rings_join, spiral mode or not) from the ring point
+ * nearest start and appended to *out as one polyline (all or nothing);
+ * stats: largest gap (unless params->skip_gap_stat), joins unfixed. */
+QC__HIDDEN int qc__contour_sew(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                               const qc__contour *c, qc_vec2 start, int spiral, qc_path *out,
+                               qc_stats *stats);
+QC__HIDDEN void qc__contour_free(qc_ctx *ctx, qc__contour *c);
+
 #endif
