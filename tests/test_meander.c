@@ -576,10 +576,73 @@ static void meander_should_take_its_parameters_from_the_table(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Issue 17's strips and a star point: the sashing and the border at
+ * d = 0.6 in (before the medial seeds the curve stayed a small loop at one
+ * end: 29 d and 47 d of bare fabric) and a 30 degree star point (4.45 d
+ * from its tip), two seeds each: no crossing, nothing outside, the
+ * farthest fabric and the tip's reach (qc_fabric_measure, as
+ * test_coverage measures) within today's bounds. */
+static void meander_should_grow_along_strips_and_into_star_points(void)
+{
+    static const double sashing[] = {0, 0, 20, 0, 20, 1.5, 0, 1.5};
+    static const double border[] = {0, 0, 30, 0, 30, 0.75, 0, 0.75};
+    static const double star[] = {0, 0, 3, 0, 1.5, 5.598076}; /* apex 30 deg */
+    static const uint64_t seeds[] = {1, 2};
+    const char *const name[3] = {"sashing 1.5x20", "border 0.75x30", "star point 30"};
+    int k, e;
+
+    for (k = 0; k < 3; k++)
+        for (e = 0; e < 2; e++) {
+            qc_region r;
+            qc_result res, again;
+            qc_points flat = {0};
+            qc_order ends = {0};
+            qc_fabric fab;
+            double d = 0.6 * IN, corner[8], tip;
+            measures m;
+            char msg[120];
+
+            memset(&r, 0, sizeof r);
+            ring(&r, k == 0 ? sashing : k == 1 ? border : star, k == 2 ? 3 : 4);
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+            TEST_ASSERT_TRUE(r.nv <= 8);
+            TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, seeds[e], NULL, 0, &res));
+            TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, seeds[e], NULL, 0, &again));
+            TEST_ASSERT_TRUE_MESSAGE(same_path(&res.path, &again.path), name[k]);
+            m = measure(&r, &res.path, d);
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &res.path, 0.01, &flat, &ends));
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_fabric_measure(&ctx, &r, flat.v, flat.n, ends.i, ends.n,
+                                                           d / 10, 0, corner, &fab));
+            tip = 0.0;
+            if (k == 2) { /* the apex: the vertex of the smallest angle */
+                size_t i;
+                for (i = 0; i < r.nv; i++)
+                    if (qc_region_corner_angle(&r, i) < 40.0)
+                        tip = corner[i] / d;
+            }
+            snprintf(msg, sizeof msg, "%s seed %u: crossings %lu, farthest %.2f d, tip %.2f d, "
+                     "outside %.2f mm", name[k], (unsigned)seeds[e], (unsigned long)m.crossings,
+                     fab.farthest_mm / d, tip, m.outside);
+            printf("%s\n", msg);
+            TEST_ASSERT_EQUAL_size_t_MESSAGE(0, m.crossings, msg);
+            TEST_ASSERT_TRUE_MESSAGE(m.outside < 0.02 * IN, msg);
+            /* today's figures: strips 0.56-0.90 d, the tip 1.2-1.8 d (goals 0.65 d, 1.6 d) */
+            TEST_ASSERT_TRUE_MESSAGE(fab.farthest_mm / d <= (k == 2 ? 2.0 : 1.0), msg);
+            TEST_ASSERT_TRUE_MESSAGE(tip <= 2.0, msg);
+            qc_points_free(&ctx, &flat);
+            qc_order_free(&ctx, &ends);
+            qc_result_free(&ctx, &res);
+            qc_result_free(&ctx, &again);
+            qc_region_free(&ctx, &r);
+        }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(meander_should_meet_the_goals_on_every_shape);
+    RUN_TEST(meander_should_grow_along_strips_and_into_star_points);
     RUN_TEST(meander_should_be_more_even_than_stipple);
     RUN_TEST(meander_should_give_the_same_bytes_for_the_same_seed);
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);
