@@ -44,6 +44,15 @@ QC__HIDDEN int qc__meander_seed(qc_ctx *ctx, const qc_region *region, const qc__
 QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o);
 
 /*
+ * Sends the evolved curve c (open: its ends stay) into every convex corner
+ * of region sharper than 100 degrees that it leaves further than issue 16's
+ * reach: a narrow tongue from its nearest segment down the bisector, kept
+ * only where it stays inside (s) and crosses nothing. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_reach(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
+                                 double d, int open, qc_points *c);
+
+/*
  * Appends to out the Catmull-Rom spline through pts[0..n) (closed != 0
  * joins the last point to the first), every span that would make the
  * flattened path cross itself, or (sdf not NULL) stray outside sdf's
