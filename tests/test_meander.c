@@ -639,6 +639,40 @@ static void meander_should_grow_along_strips_and_into_star_points(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Out of memory at every allocation in turn (the seed on the medial axis,
+ * the tongues, the smoothing's checks): QC_ENOMEM and nothing leaked, or
+ * the pattern; once no allocation fails, the same bytes as without. */
+static void meander_should_fail_cleanly_out_of_memory(void)
+{
+    static const double star[] = {0, 0, 3, 0, 1.5, 5.598076};
+    qc_region r;
+    qc_result want, got;
+    size_t k, live, runs = 0;
+    int rc = QC_ENOMEM;
+
+    memset(&r, 0, sizeof r);
+    ring(&r, star, 3);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, 0.6 * IN, 1, NULL, 0, &want));
+    live = ta.live_blocks;
+    for (k = 1; rc != QC_OK; k++, runs++) {
+        ta.fail_at = ta.allocs + k;
+        rc = run(&r, 0.6 * IN, 1, NULL, 0, &got);
+        ta.fail_at = 0;
+        TEST_ASSERT_TRUE(rc == QC_OK || rc == QC_ENOMEM);
+        if (rc == QC_OK) {
+            TEST_ASSERT_TRUE(same_path(&want.path, &got.path));
+            qc_result_free(&ctx, &got);
+        }
+        TEST_ASSERT_EQUAL_size_t(live, ta.live_blocks);
+    }
+    printf("out of memory: %lu allocations, each failed once\n", (unsigned long)runs);
+    TEST_ASSERT_TRUE(runs > 50);
+    qc_result_free(&ctx, &want);
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -650,5 +684,6 @@ int main(void)
     RUN_TEST(meander_should_take_its_parameters_from_the_table);
     RUN_TEST(meander_should_fit_a_patch_smaller_than_d);
     RUN_TEST(meander_should_tile_edge_to_edge);
+    RUN_TEST(meander_should_fail_cleanly_out_of_memory);
     return UNITY_END();
 }
