@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "pieced.h"
 #include "quiltc.h"
 #include "testalloc.h"
 #include "testgeom.h"
@@ -639,6 +640,69 @@ static void meander_should_grow_along_strips_and_into_star_points(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Issue 16's corner goals on its pieced corpus (test_coverage measures
+ * every family the same way): the nearest stitch to every 90, 45, 36 and
+ * 31 degree corner within 0.9, 1.3, 1.5 and 1.6 d, at d = 0.35 and 0.6 in,
+ * seeds 1 and 2 (before the tongues: 3.03 d at 45, 4.45 d at 31); and no
+ * crossing anywhere. */
+static void meander_should_reach_into_the_corners_of_pieced_shapes(void)
+{
+    static const double lo[4] = {80, 41, 34, 25}, hi[4] = {100, 50, 41, 34};
+    static const double goal[4] = {0.9, 1.3, 1.5, 1.6}, spacing[2] = {0.35, 0.6};
+    size_t nshapes, k, i;
+    const pieced_shape *shapes = pieced_shapes(&nshapes);
+    double worst[4] = {0, 0, 0, 0};
+    int s, e, b;
+
+    for (k = 0; k < nshapes; k++) {
+        qc_region r;
+        TEST_ASSERT_EQUAL_INT(QC_OK, pieced_build(&ctx, k, &r));
+        for (s = 0; s < 2; s++)
+            for (e = 1; e <= 2; e++) {
+                qc_result res;
+                qc_points flat = {0};
+                qc_order ends = {0};
+                qc_fabric fab;
+                double d = spacing[s] * IN, *corner = malloc(r.nv * sizeof *corner);
+                size_t c = 0, from = 0;
+                char msg[160];
+
+                TEST_ASSERT_NOT_NULL(corner);
+                TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, (uint64_t)e, NULL, 0, &res));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &res.path, 0.01, &flat, &ends));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_fabric_measure(&ctx, &r, flat.v, flat.n, ends.i,
+                                                               ends.n, d / 10, 0, corner, &fab));
+                for (i = 0; i < ends.n; i++) {
+                    size_t n = 0;
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v + from,
+                                                                        ends.i[i] - from, 0, &n));
+                    c += n;
+                    from = ends.i[i];
+                }
+                snprintf(msg, sizeof msg, "%s d %.2f in seed %d", shapes[k].name, spacing[s], e);
+                TEST_ASSERT_EQUAL_size_t_MESSAGE(0, c, msg);
+                for (i = 0; i < r.nv; i++) {
+                    double a = qc_region_corner_angle(&r, i);
+                    for (b = 0; b < 4; b++)
+                        if (a >= lo[b] && a < hi[b]) {
+                            worst[b] = fmax(worst[b], corner[i] / d);
+                            snprintf(msg, sizeof msg, "%s d %.2f in seed %d: %.0f deg corner %.2f d",
+                                     shapes[k].name, spacing[s], e, a, corner[i] / d);
+                            TEST_ASSERT_TRUE_MESSAGE(corner[i] / d <= goal[b], msg);
+                        }
+                }
+                free(corner);
+                qc_points_free(&ctx, &flat);
+                qc_order_free(&ctx, &ends);
+                qc_result_free(&ctx, &res);
+            }
+        qc_region_free(&ctx, &r);
+    }
+    printf("corner reach, worst: 90 %.2f d, 45 %.2f d, 36 %.2f d, 31 %.2f d\n", worst[0], worst[1],
+           worst[2], worst[3]);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Out of memory at every allocation in turn (the seed on the medial axis,
  * the tongues, the smoothing's checks): QC_ENOMEM and nothing leaked, or
  * the pattern; once no allocation fails, the same bytes as without. */
@@ -678,6 +742,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(meander_should_meet_the_goals_on_every_shape);
     RUN_TEST(meander_should_grow_along_strips_and_into_star_points);
+    RUN_TEST(meander_should_reach_into_the_corners_of_pieced_shapes);
     RUN_TEST(meander_should_be_more_even_than_stipple);
     RUN_TEST(meander_should_give_the_same_bytes_for_the_same_seed);
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);
