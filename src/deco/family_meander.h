@@ -44,6 +44,15 @@ QC__HIDDEN int qc__meander_seed(qc_ctx *ctx, const qc_region *region, const qc__
 QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o);
 
 /*
+ * Eases the vertices of c (open: its ends stay) that turn tighter than turn
+ * (mm): each moves halfway to its neighbours' midpoint, in passes kept only
+ * while c stays d/20 inside s's region and does not cross itself.
+ * Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn,
+                                const qc__sdf *s, double d);
+
+/*
  * Sends the evolved curve c (open: its ends stay) into every convex corner
  * of region sharper than 100 degrees that it leaves further than issue 16's
  * reach: a narrow tongue from its nearest segment down the bisector, kept

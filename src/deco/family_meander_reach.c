@@ -22,7 +22,7 @@
 #define ARC_STEPS 6      /* segments of the tip's half circle */
 #define WORTH 0.25       /* a tongue must come this much nearer the corner, times d */
 #define MAX_TONGUE 24    /* points in one tongue */
-#define MARGIN 0.85      /* corners beyond this share of the goal get a tongue */
+#define MARGIN 0.75      /* corners beyond this share of the goal get a tongue */
 
 /* Issue 16's corner reach, times d, for an interior angle in degrees:
  * 90: 0.9, 45: 1.3, 36: 1.5, 31: 1.6, straight between. */
