@@ -732,6 +732,7 @@ static void meander_should_fail_cleanly_out_of_memory(void)
     }
     printf("out of memory: %lu allocations, each failed once\n", (unsigned long)runs);
     TEST_ASSERT_TRUE(runs > 50);
+    TEST_ASSERT_FALSE(ta.size_mismatch); /* every block freed with the size it was made */
     qc_result_free(&ctx, &want);
     qc_region_free(&ctx, &r);
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
