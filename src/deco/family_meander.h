@@ -1,6 +1,6 @@
 /*
- * The meander's curve evolution (family_meander_grow.c), shared with family_meander.c
- * and the tests.
+ * The meander's seed curve (family_meander_seed.c) and curve evolution
+ * (family_meander_grow.c), shared with family_meander.c and the tests.
  */
 #ifndef QC_FAMILY_MEANDER_H
 #define QC_FAMILY_MEANDER_H
@@ -30,6 +30,46 @@ typedef struct qc__grow_opts {
  * vertex count. Deterministic for a seed. Errors: QC_ENOMEM (c is then
  * left valid, as it was after some round).
  */
+/*
+ * The curve the evolution starts from, into *c (emptied first): the outline
+ * of a spanning tree over Poisson points of region (and, with axis, points
+ * on its medial axis), closed, or with ports (a tile) open from ports[0] to
+ * ports[1]; it does not cross itself. s is region's distance field.
+ * Errors: QC_EEMPTY (no inside), QC_ENOMEM, and the sampler's.
+ */
+QC__HIDDEN int qc__meander_seed(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
+                                const qc_params *prm, const qc_vec2 *ports, int axis,
+                                qc_points *c);
+
 QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o);
+
+/*
+ * Eases the vertices of c (open: its ends stay) that turn tighter than turn
+ * (mm): each moves halfway to its neighbours' midpoint, in passes kept only
+ * while c stays d/20 inside s's region and does not cross itself.
+ * Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn,
+                                const qc__sdf *s, double d);
+
+/*
+ * Sends the evolved curve c (open: its ends stay) into every convex corner
+ * of region sharper than 100 degrees that it leaves further than issue 16's
+ * reach: a narrow tongue from its nearest segment down the bisector, kept
+ * only where it stays inside (s) and crosses nothing. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_reach(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
+                                 double d, int open, qc_points *c);
+
+/*
+ * Appends to out the Catmull-Rom spline through pts[0..n) (closed != 0
+ * joins the last point to the first), every span that would make the
+ * flattened path cross itself, or (sdf not NULL) stray outside sdf's
+ * region, drawn flatter, down to its chord: if the polyline does not cross
+ * itself, neither does the path. d (mm) sizes the search grid. Errors:
+ * QC_ENOMEM, and qc_curve_catmull_rom's.
+ */
+QC__HIDDEN int qc__meander_smooth(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed,
+                                  double d, const qc__sdf *sdf, qc_path *out);
 
 #endif

@@ -396,9 +396,9 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         }
         g->q[i].x = p.x + m.x;
         g->q[i].y = p.y + m.y;
-        /* the boundary is a wall for what is inside (the field changes by
-         * at most the move, give or take its grid's interpolation) */
-        if (v >= 0.0 && v - cap < WALL * o->clear + 2.0 * o->sdf->h)
+        /* the boundary is a wall (checked where the vertex lands: across a
+         * cusp the field at its old place says nothing) */
+        if (qc__sdf_at(o->sdf, g->q[i]) < WALL * o->clear + 2.0 * o->sdf->h)
             g->q[i] = keep_inside(g, o, g->q[i]);
     }
 }
@@ -434,7 +434,9 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
         len = qc_hypot(b.x - a.x, b.y - a.y);
         if (len > hi && (may_grow || len > 2.0 * hi)) {
             qc_vec2 mid = QC__V2(0.5 * (a.x + b.x), 0.5 * (a.y + b.y));
-            if (qc__sdf_at(o->sdf, mid) > 0.0) /* a jump between pieces stays one segment */
+            double v = qc__sdf_at(o->sdf, mid);
+            if (v > 2.0 * o->sdf->h || (v > -2.0 * o->sdf->h && qc__sdf_exact(o->sdf, mid, NULL) > 0.0))
+                /* a jump between pieces stays one segment */
                 g->p[m++] = mid;
         }
     }
