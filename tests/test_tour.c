@@ -513,26 +513,27 @@ typedef struct instance {
     double or3opt;  /* bound on the default's gap (Or-3opt + n/2 kicks), % */
 } instance;
 
-/* Bounds about 1.5x the measured gaps (2-opt+Or-opt / +20000 rounds /
- * the default, Or-3opt with its kicks: berlin52 0, kroA100 0.1, ch150 0.6,
- * a280 1.0, pcb442 1.0, rat783 1.6, pr1002 2.0, u1060 2.4, pcb1173 2.2,
- * d1291 4.3, nrw1379 1.2, fl1577 5.2):
+/* Bounds about 1.5x the measured gaps (2-opt+Or-opt / +20000 rounds):
  * berlin52 0/0, kroA100 0.5/0, ch150 3.2/0.2, a280 4.2/0.9, pcb442
  * 2.5/0.3, rat783 3.8/0.6, pr1002 4.2/0.7, u1060 4.1/0.6, pcb1173 3.7/1.0,
  * d1291 7.1/0.5, nrw1379 2.6/0.4, fl1577 12.1/0.2 (clusters of drill
  * holes: the neighbour lists cannot reach across), pr2392 5.9/1.5, pcb3038
- * 3.9/1.1; the large ones without kicks. */
+ * 3.9/1.1; the large ones without kicks. The default (Or-3opt and its
+ * kicks) measured berlin52 0, kroA100 0.1, ch150 1.8, a280 2.0, pcb442 1.3,
+ * rat783 1.8, pr1002 2.4, u1060 2.3, pcb1173 2.9, d1291 3.1, nrw1379 1.4,
+ * fl1577 7.9 (5.4 with seed 1): its bounds sit below Or-opt's gaps where
+ * they can. */
 static const instance instances[] = {
-    {"berlin52", 7542, 3, 1, 1},       {"kroA100", 21282, 3, 1, 1},
-    {"ch150", 6528, 5, 1, 1.5},        {"a280", 2579, 7, 2, 2},
-    {"pcb442", 50778, 5, 1.5, 2},      {"rat783", 8806, 6, 1.5, 2.5},
-    {"pr1002", 259045, 7, 2, 3},       {"u1060", 224094, 7, 2, 3.5},
-    {"pcb1173", 56892, 6, 2, 3.5},     {"d1291", 50801, 10, 2, 6.5},
-    {"nrw1379", 56638, 5, 1.5, 2},     {"fl1577", 22249, 15, 3, 8},
-    {"pr2392", 378032, 8, 3, 5},       {"pcb3038", 137694, 6, 3, 5},
-    {"fnl4461", 182566, 6, 0, 5},      {"rl5915", 565530, 7, 0, 5},
-    {"usa13509", 19982859, 6, 0, 5},   {"brd14051", 469385, 6, 0, 5},
-    {"d15112", 1573084, 6, 0, 5},      {"d18512", 645238, 6, 0, 5},
+    {"berlin52", 7542, 3, 1, 1},       {"kroA100", 21282, 3, 1, 0.5},
+    {"ch150", 6528, 5, 1, 2.7},        {"a280", 2579, 7, 2, 3},
+    {"pcb442", 50778, 5, 1.5, 2},      {"rat783", 8806, 6, 1.5, 2.7},
+    {"pr1002", 259045, 7, 2, 3.6},     {"u1060", 224094, 7, 2, 3.5},
+    {"pcb1173", 56892, 6, 2, 4},       {"d1291", 50801, 10, 2, 4.7},
+    {"nrw1379", 56638, 5, 1.5, 2.1},   {"fl1577", 22249, 15, 3, 11},
+    {"pr2392", 378032, 8, 3, 4},       {"pcb3038", 137694, 6, 3, 3},
+    {"fnl4461", 182566, 6, 0, 3},      {"rl5915", 565530, 7, 0, 4},
+    {"usa13509", 19982859, 6, 0, 3},   {"brd14051", 469385, 6, 0, 3},
+    {"d15112", 1573084, 6, 0, 3},      {"d18512", 645238, 6, 0, 3},
 };
 
 void tsp_should_come_near_the_tsplib_optima(void)
@@ -596,23 +597,23 @@ static double tsplib_gap(const char *name, double opt, int method, uint64_t roun
 }
 
 /* The Or-3opt move and its kicks reach what Or-opt (the old default) does
- * not: a280 within 2% of the optimum (Or-opt: 4.2%), pcb442 within 1.5%
- * (Or-opt: 2.5%). */
+ * not: a280 within 3% of the optimum (Or-opt: 4.2%; the default 2.0%),
+ * pcb442 within 2% (Or-opt: 2.5%; the default 1.3%). */
 void or3opt_should_come_nearer_than_oropt_could(void)
 {
     double old = tsplib_gap("a280", 2579, QC_TSP_METHOD_OROPT, 0);
 
     if (old < 0)
         TEST_IGNORE_MESSAGE("no a280 in " TSPLIB_DIR);
-    TEST_ASSERT_GREATER_THAN_DOUBLE(2.0, old);
-    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(2.0, tsplib_gap("a280", 2579, QC_TSP_METHOD_DEFAULT, 0));
-    TEST_ASSERT_GREATER_THAN_DOUBLE(1.5, tsplib_gap("pcb442", 50778, QC_TSP_METHOD_OROPT, 0));
-    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(1.5, tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(3.0, old);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(3.0, tsplib_gap("a280", 2579, QC_TSP_METHOD_DEFAULT, 0));
+    TEST_ASSERT_GREATER_THAN_DOUBLE(2.0, tsplib_gap("pcb442", 50778, QC_TSP_METHOD_OROPT, 0));
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(2.0, tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0));
 }
 
 /* The budget: more rounds never lengthen the tour and keep shortening it
- * (pcb442: 1.0% with the default's kicks, 0.3% after 20000 more); a time
- * budget is a fixed round count, never a clock. */
+ * (pcb442: 1.34% with the default's kicks, 0.30% after 2000 more, 0.28%
+ * after 20000); a time budget is a fixed round count, never a clock. */
 void tsp_budget_should_keep_paying(void)
 {
     double g0 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0);

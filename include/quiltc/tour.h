@@ -42,13 +42,15 @@ typedef enum qc_tsp_method {
     QC_TSP_METHOD_GREEDY,      /* greedy-edge construction only */
     QC_TSP_METHOD_2OPT,        /* + 2-opt with neighbour lists, don't-look bits */
     QC_TSP_METHOD_OROPT,       /* + Or-opt */
-    QC_TSP_METHOD_OR3OPT       /* + Or-3opt (sequential 3-opt segment moves), then
-                                  QC_TSP_OR3OPT_KICKS(n) kicks */
+    QC_TSP_METHOD_OR3OPT       /* + Or-3opt (sequential 3-opt segment moves),
+                                  QC_TSP_OR3OPT_KICKS(n) kicks and Or-3opt again;
+                                  perturbation rounds then search with Or-3opt */
 } qc_tsp_method;
 
 /* The kicks Or-3opt always spends on n points, before perturb_iterations:
- * a segment-local double bridge re-optimised around its ends, per point. */
-#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) / 2)
+ * each a segment-local double bridge re-optimised around its ends by
+ * 2-opt and Or-opt, kept if shorter. */
+#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 3 / 5)
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
