@@ -3,8 +3,10 @@
  * don't-look bits (a FIFO of active points), Or-opt (segments of 1-3
  * points moved next to a candidate, either way round), and the
  * perturbation: a random segment swap (a local double bridge) followed by
- * local search from its ends, undone unless the tour got shorter. Every
- * change is a reversal of positions, so an undo replays the log backwards.
+ * local search from its ends, undone unless the tour got shorter (or, for
+ * Or-3opt, stays within a slack of the best: the walk ends back at the
+ * best). Every change is a reversal of positions, so an undo replays the
+ * log backwards.
  */
 #include <string.h>
 
@@ -320,30 +322,62 @@ static int kick(qc__tsp *s, qc_rng *rng, double *delta)
     return QC_OK;
 }
 
+/* Reverts the logged reversals down to entry keep (the log holds every
+ * reversal since the best tour so far). */
+static void undo_to(qc__tsp *s, size_t keep)
+{
+    while (s->nlog > keep) {
+        s->nlog--;
+        reverse_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
+    }
+}
+
+/* How much longer than the best, in average edges, a budget's walk may
+ * go on from (Or-3opt rounds only; Or-opt keeps only shorter tours): on
+ * TSPLIB up to 2000 points after 100 rounds per point, 0.2 gave 0.31%
+ * above the optima, 0 gave 0.39% and 0.5 gave 0.37%. */
+#define ACCEPT_SLACK 0.2
+
 int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed)
 {
     qc_rng rng;
     uint64_t r;
+    uint32_t i;
+    double over = 0.0, slack = 0.0; /* the current tour's excess over the best */
+    size_t log_max = 2 * (size_t)s->m + 1024;
     int rc = QC_OK;
 
-    if (s->m < 8)
+    if (s->m < 8 || rounds == 0)
         return QC_OK;
     qc_rng_seed(&rng, seed);
+    if (level == QC__TSP_LEVEL_OR3OPT) {
+        for (i = 0; i < s->m; i++)
+            slack += qc__tsp_dist(s, s->t[i], qc__tsp_next(s, s->t[i]));
+        slack *= ACCEPT_SLACK / s->m;
+    }
     s->logging = 1;
+    s->nlog = 0;
     for (r = 0; r < rounds && rc == QC_OK; r++) {
         double delta = 0.0;
+        size_t mark = s->nlog;
 
-        s->nlog = 0;
         rc = kick(s, &rng, &delta);
         if (rc == QC_OK)
             rc = qc__tsp_local_search(s, level, &delta);
-        if (rc == QC_OK && delta < -s->eps)
-            continue;
-        while (s->nlog > 0) { /* undo */
-            s->nlog--;
-            reverse_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
+        if (rc == QC_OK && over + delta < -s->eps) { /* a new best */
+            over = 0.0;
+            s->nlog = 0;
+        } else if (rc == QC_OK && slack > 0.0 && over + delta <= slack) {
+            over += delta; /* a little longer: walk on from it */
+        } else {
+            undo_to(s, mark);
+        }
+        if (s->nlog > log_max) {
+            undo_to(s, 0);
+            over = 0.0;
         }
     }
+    undo_to(s, 0);
     s->logging = 0;
     return rc;
 }
