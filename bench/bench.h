@@ -9,6 +9,8 @@
 void bench_graph(void);
 void bench_lattice(void);
 void bench_tour(void);
+/* The TSPLIB part of bench_tour alone (issue 21's table). */
+void bench_tsplib(void);
 void bench_pebbling(void);
 void bench_families(void);
 void bench_meander(void);

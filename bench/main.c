@@ -1,6 +1,6 @@
 /* quiltc-bench: each stage's timings, briefly (the machine is shared).
  * With arguments, only the sections named (graph lattice tour pebbling
- * families), e.g. `build/bench/quiltc-bench lattice`. */
+ * families tsplib ...), e.g. `build/bench/quiltc-bench lattice`. */
 #include <string.h>
 
 #include "bench.h"
@@ -9,7 +9,8 @@ static const struct {
     const char *name;
     void (*run)(void);
 } sections[] = {{"graph", bench_graph},       {"lattice", bench_lattice},
-                {"tour", bench_tour},         {"pebbling", bench_pebbling},
+                {"tour", bench_tour},         {"tsplib", bench_tsplib},
+                {"pebbling", bench_pebbling},
                 {"families", bench_families}, {"meander", bench_meander},
                 {"quilt", bench_quilt}};
 

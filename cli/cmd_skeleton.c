@@ -23,7 +23,8 @@ static void usage(FILE *f)
           "Writes the sampled points with their spanning tree walk or TSP tour.\n"
           "  -o, --output FILE        .json (default, - for stdout) or .svg (repeatable)\n"
           "  --path mst|tsp           tree walk (default) or closed tour\n"
-          "  --tsp greedy|2opt|oropt|concorde   tour method (concorde: program on PATH)\n",
+          "  --tsp greedy|2opt|oropt|or3opt|concorde   tour method (default or3opt;\n"
+          "                           concorde: program on PATH)\n",
           f);
     cli_pattern_help(f, 1u << QC_FAMILY_VINE);
 }

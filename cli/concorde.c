@@ -283,7 +283,7 @@ static int have_concorde(void)
     if (on_path("concorde", prog, sizeof prog))
         return 1;
     cli_error("--tsp concorde: no 'concorde' program on PATH (build it from "
-              "https://www.math.uwaterloo.ca/tsp/concorde.html, or use --tsp oropt)");
+              "https://www.math.uwaterloo.ca/tsp/concorde.html, or use --tsp or3opt)");
     return 0;
 }
 

@@ -447,6 +447,8 @@ static void test_graph_and_tour_should_survive_every_failed_allocation(void)
     oom_loop("qc_tsp 2opt", op_tsp);
     tsp_method = QC_TSP_METHOD_OROPT;
     oom_loop("qc_tsp oropt", op_tsp);
+    tsp_method = QC_TSP_METHOD_OR3OPT;
+    oom_loop("qc_tsp or3opt", op_tsp);
 }
 
 static int op_curves(oom_run *r)

@@ -211,7 +211,7 @@ static void skeleton_choices_should_be_the_stage_enums(void)
         {"points", "poisson", QC_SAMPLE_POISSON},   {"points", "given", QC_POINTS_GIVEN},
         {"mst", "delaunay", QC_MST_MODE_DELAUNAY},  {"mst", "complete", QC_MST_MODE_COMPLETE},
         {"tsp", "greedy", QC_TSP_METHOD_GREEDY},    {"tsp", "2opt", QC_TSP_METHOD_2OPT},
-        {"tsp", "oropt", QC_TSP_METHOD_OROPT}};
+        {"tsp", "oropt", QC_TSP_METHOD_OROPT},      {"tsp", "or3opt", QC_TSP_METHOD_OR3OPT}};
     qc_params p, r;
     size_t i;
 
@@ -222,7 +222,7 @@ static void skeleton_choices_should_be_the_stage_enums(void)
     memset(&p, 0, sizeof p);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_params_resolve(&ctx, &p, &r));
     TEST_ASSERT_EQUAL_INT(QC_MST_MODE_DELAUNAY, r.mst);
-    TEST_ASSERT_EQUAL_INT(QC_TSP_METHOD_OROPT, r.tsp);
+    TEST_ASSERT_EQUAL_INT(QC_TSP_METHOD_OR3OPT, r.tsp);
     TEST_ASSERT_EQUAL_INT(QC_SAMPLE_POISSON, r.points);
 }
 

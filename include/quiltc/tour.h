@@ -36,28 +36,47 @@ int qc_tree_walk_to(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_edge *edge
 /* Index of the point nearest q (lowest index on ties); 0 for n == 0. */
 uint32_t qc_nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);
 
-/* Also the `tsp` parameter's values (qc_params.tsp, choices 1..3). */
+/* Also the `tsp` parameter's values (qc_params.tsp, choices 1..4). */
 typedef enum qc_tsp_method {
-    QC_TSP_METHOD_DEFAULT = 0, /* Or-opt */
+    QC_TSP_METHOD_DEFAULT = 0, /* Or-3opt */
     QC_TSP_METHOD_GREEDY,      /* greedy-edge construction only */
     QC_TSP_METHOD_2OPT,        /* + 2-opt with neighbour lists, don't-look bits */
-    QC_TSP_METHOD_OROPT        /* + Or-opt */
+    QC_TSP_METHOD_OROPT,       /* + Or-opt */
+    QC_TSP_METHOD_OR3OPT       /* + Or-3opt (sequential 3-opt segment moves),
+                                  QC_TSP_OR3OPT_KICKS(n) kicks and Or-3opt again;
+                                  perturbation rounds then search with Or-3opt */
 } qc_tsp_method;
+
+/* The kicks Or-3opt always spends on n points, before perturb_iterations:
+ * each a segment-local double bridge re-optimised around its ends by
+ * 2-opt and Or-opt, kept if shorter. */
+#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 3 / 5)
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
     int neighbours;      /* candidate list size; 0 = 10 */
     uint64_t seed;       /* for the perturbation phase */
-    uint64_t perturb_iterations; /* Or-opt perturbation rounds after local
-                                    search; the core has no clock, so the CLI
-                                    turns --tsp-time into rounds */
+    uint64_t perturb_iterations; /* extra perturbation rounds (kicks) after
+                                    local search; the core has no clock, so
+                                    a time budget becomes rounds through
+                                    qc_tsp_rounds_for_ms */
 } qc_tsp_params;
+
+/*
+ * The perturbation rounds standing for a budget of ms milliseconds: a
+ * fixed work count (QC_TSP_ROUNDS_PER_MS per ms, measured on TSPLIB
+ * instances of 10^3-10^4 points on a 2020s desktop core), never a clock,
+ * so a tour's bytes do not depend on the machine's speed. 0 for ms <= 0 or
+ * NaN; at most 2^62.
+ */
+#define QC_TSP_ROUNDS_PER_MS 100
+uint64_t qc_tsp_rounds_for_ms(double ms);
 
 /*
  * A closed tour through all n points: out receives n indices (appended),
  * starting at index 0; the closing edge back to the start is implicit.
  * With method >= 2OPT no two edges cross properly (collinear input may
- * still overlap along its line). Perturbation runs with OROPT only;
+ * still overlap along its line). Perturbation runs with OROPT and OR3OPT;
  * neighbours is capped at 32. n <= 3 is returned in index order.
  * Errors: QC_EINVAL (unknown method, negative neighbours, NULL arrays),
  * QC_ERANGE (NaN/inf or beyond 1e150), QC_ELIMIT (above 2^28 points),

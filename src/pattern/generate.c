@@ -136,9 +136,8 @@ static int build_tour(qc_ctx *ctx, const qc_params *p, const qc_points *pts,
         memset(&tp, 0, sizeof tp);
         tp.method = p->tsp;
         tp.seed = p->seed;
-        /* the core has no clock: the budget becomes a round count (measured:
-         * 70-150 rounds per ms on 10^3-10^5 uniform points) */
-        tp.perturb_iterations = (uint64_t)(p->tsp_time_ms * 100.0);
+        /* the core has no clock: the budget becomes a round count */
+        tp.perturb_iterations = qc_tsp_rounds_for_ms(p->tsp_time_ms);
         rc = qc_tsp(ctx, pts->v, pts->n, &tp, &raw);
     }
     if (rc < 0)

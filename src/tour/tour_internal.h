@@ -110,13 +110,25 @@ static inline uint32_t qc__tsp_prev(const qc__tsp *s, uint32_t a)
  * the shorter side. QC_OK or QC_ENOMEM (logging only). */
 QC__HIDDEN int qc__tsp_move2(qc__tsp *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d);
 
+/* Clears a's don't-look bit (queues it). */
+QC__HIDDEN void qc__tsp_push(qc__tsp *s, uint32_t a);
 /* Makes room for the queue; queues every point in tour order. */
 QC__HIDDEN void qc__tsp_queue_all(qc__tsp *s);
-/* 2-opt (and Or-opt when oropt) from the queue until it empties; adds the
- * applied gains (negative) to *delta. QC_OK or QC_ENOMEM. */
-QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int oropt, double *delta);
-/* rounds of kick + local search, each kept only if shorter. */
-QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, uint64_t rounds, uint64_t seed);
+/* Whether a move reversing between a and c costs too much (huge tours). */
+QC__HIDDEN int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c);
+
+/* How far the local search goes: each level adds a move. */
+enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT };
+
+/* Local search from the queue until it empties, with the moves of level;
+ * adds the applied gains (negative) to *delta. QC_OK or QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int level, double *delta);
+/* The best Or-3opt move at a (tsp_or3opt.c); applies it, queues its ends
+ * and returns 1, or 0 when none shortens the tour. *rc gets QC_ENOMEM
+ * when the undo log cannot grow. */
+QC__HIDDEN int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc);
+/* rounds of kick + local search at level, each kept only if shorter. */
+QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed);
 
 /* Removes every proper crossing, decided exactly on the caller's points, by
  * 2-opt moves (each shortens the tour, so it ends) (tsp_uncross.c). */

@@ -1,7 +1,8 @@
 /*
- * The built-in TSP (paper §4.2, issue 3): greedy-edge construction over
- * k-nearest-neighbour candidates, 2-opt with neighbour lists and don't-look
- * bits, Or-opt, optional perturbation rounds, and a final pass removing
+ * The built-in TSP (paper §4.2, issues 3 and 21): greedy-edge construction
+ * over k-nearest-neighbour candidates, 2-opt with neighbour lists and
+ * don't-look bits, Or-opt, Or-3opt (tsp_or3opt.c), perturbation rounds
+ * (the default's own plus the caller's budget), and a final pass removing
  * every proper crossing by exact predicates. Works on the distinct points;
  * copies of a point follow their first copy in the tour (zero-length
  * edges cross nothing).
@@ -73,6 +74,7 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     qc_ctx *ctx = s->ctx;
     uint32_t m, i;
     double delta = 0.0;
+    uint64_t extra, seed;
 
     QC__TRY(qc__tsp_prepare(s));
     m = s->m;
@@ -105,14 +107,27 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
                         (unsigned long)m);
     memset(s->inq, 0, m);
     qc__tsp_queue_all(s);
-    QC__TRY(qc__tsp_local_search(s, 0, &delta));
+    QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_2OPT, &delta));
     QC__TRY(qc__tsp_uncross(s));
     if (method == QC_TSP_METHOD_2OPT)
         return QC_OK;
+    extra = params ? params->perturb_iterations : 0;
+    seed = params ? params->seed : 0;
     qc__tsp_queue_all(s);
-    QC__TRY(qc__tsp_local_search(s, 1, &delta));
-    QC__TRY(qc__tsp_perturb(s, params ? params->perturb_iterations : 0,
-                            params ? params->seed : 0));
+    if (method == QC_TSP_METHOD_OROPT) {
+        QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OROPT, &delta));
+        QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, extra, seed));
+        return qc__tsp_uncross(s);
+    }
+    QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
+    /* The default's own kicks re-optimise with Or-opt only, then one Or-3opt
+     * pass: on TSPLIB, at equal time, 0.6n such kicks beat 0.35n searched
+     * with Or-3opt (2.0% against 2.24% above the optima). A longer budget
+     * searches with Or-3opt: after 100 rounds per point 0.36% against 0.58%. */
+    QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, QC_TSP_OR3OPT_KICKS(m), seed));
+    qc__tsp_queue_all(s);
+    QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
+    QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OR3OPT, extra, seed ^ UINT64_C(0x9e3779b97f4a7c15)));
     return qc__tsp_uncross(s);
 }
 
@@ -120,7 +135,7 @@ int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
            qc_order *out)
 {
     int method = params && params->method != QC_TSP_METHOD_DEFAULT ? params->method
-                                                                   : QC_TSP_METHOD_OROPT;
+                                                                   : QC_TSP_METHOD_OR3OPT;
     int neighbours = params ? params->neighbours : 0;
     qc__tsp s;
     size_t i;
@@ -128,7 +143,7 @@ int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
 
     if (out == NULL)
         return qc__fail(ctx, QC_EINVAL, "tsp: NULL output");
-    if (method < QC_TSP_METHOD_GREEDY || method > QC_TSP_METHOD_OROPT)
+    if (method < QC_TSP_METHOD_GREEDY || method > QC_TSP_METHOD_OR3OPT)
         return qc__fail(ctx, QC_EINVAL, "tsp: unknown method %d", method);
     if (neighbours < 0)
         return qc__fail(ctx, QC_EINVAL, "tsp: %d neighbours", neighbours);
@@ -150,6 +165,15 @@ int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
         emit(&s, out);
     release(&s);
     return rc;
+}
+
+uint64_t qc_tsp_rounds_for_ms(double ms)
+{
+    double r = ms * QC_TSP_ROUNDS_PER_MS;
+
+    if (!(r > 0.0))
+        return 0;
+    return r >= 4611686018427387904.0 ? (uint64_t)1 << 62 : (uint64_t)r;
 }
 
 double qc_tour_length(const qc_vec2 *p, const uint32_t *order, size_t m, int closed)

@@ -3,8 +3,10 @@
  * don't-look bits (a FIFO of active points), Or-opt (segments of 1-3
  * points moved next to a candidate, either way round), and the
  * perturbation: a random segment swap (a local double bridge) followed by
- * local search from its ends, undone unless the tour got shorter. Every
- * change is a reversal of positions, so an undo replays the log backwards.
+ * local search from its ends, undone unless the tour got shorter (or, for
+ * Or-3opt, stays within a slack of the best: the walk ends back at the
+ * best). Every change is a reversal of positions, so an undo replays the
+ * log backwards.
  */
 #include <string.h>
 
@@ -72,7 +74,7 @@ int qc__tsp_move2(qc__tsp *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
 
 /* ---- the queue of points whose don't-look bit is off ---- */
 
-static void push(qc__tsp *s, uint32_t a)
+void qc__tsp_push(qc__tsp *s, uint32_t a)
 {
     size_t at;
 
@@ -99,7 +101,7 @@ void qc__tsp_queue_all(qc__tsp *s)
     uint32_t i;
 
     for (i = 0; i < s->m; i++)
-        push(s, s->t[i]);
+        qc__tsp_push(s, s->t[i]);
 }
 
 /* ---- 2-opt ---- */
@@ -110,7 +112,7 @@ void qc__tsp_queue_all(qc__tsp *s)
 #define MAX_REVERSAL 50000
 
 /* Whether reversing between a and c (either side) costs too much. */
-static int too_far(const qc__tsp *s, uint32_t a, uint32_t c)
+int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
 {
     uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
     return d > MAX_REVERSAL && s->m - d > MAX_REVERSAL;
@@ -136,7 +138,7 @@ static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
             if (dac >= dab)
                 break;
             d = dir ? qc__tsp_prev(s, c) : qc__tsp_next(s, c);
-            if (c == b || d == a || too_far(s, a, c))
+            if (c == b || d == a || qc__tsp_too_far(s, a, c))
                 continue;
             g = dac + qc__tsp_dist(s, b, d) - dab - qc__tsp_dist(s, c, d);
             if (g < best) {
@@ -150,10 +152,10 @@ static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
         return 0;
     *rc = qc__tsp_move2(s, a, bb, bc, bd);
     *delta += best;
-    push(s, a);
-    push(s, bb);
-    push(s, bc);
-    push(s, bd);
+    qc__tsp_push(s, a);
+    qc__tsp_push(s, bb);
+    qc__tsp_push(s, bc);
+    qc__tsp_push(s, bd);
     return 1;
 }
 
@@ -195,7 +197,7 @@ static void or_segment(const qc__tsp *s, uint32_t first, uint32_t len, or_move *
 
             if (dce >= g1)
                 break;
-            if (in_segment(s, first, len, c) || too_far(s, e, c))
+            if (in_segment(s, first, len, c) || qc__tsp_too_far(s, e, c))
                 continue;
             /* c, e ... o, next(c) */
             x = qc__tsp_next(s, c);
@@ -260,27 +262,29 @@ static int try_oropt(qc__tsp *s, uint32_t a, double *delta, int *rc)
     nx = qc__tsp_next(s, s2);
     *rc = or_apply(s, &bm);
     *delta += bm.gain;
-    push(s, s1);
-    push(s, s2);
-    push(s, p);
-    push(s, nx);
-    push(s, bm.x);
-    push(s, bm.y);
+    qc__tsp_push(s, s1);
+    qc__tsp_push(s, s2);
+    qc__tsp_push(s, p);
+    qc__tsp_push(s, nx);
+    qc__tsp_push(s, bm.x);
+    qc__tsp_push(s, bm.y);
     return 1;
 }
 
-int qc__tsp_local_search(qc__tsp *s, int oropt, double *delta)
+int qc__tsp_local_search(qc__tsp *s, int level, double *delta)
 {
     uint32_t a;
     int rc = QC_OK;
 
     if (s->m < 5)
-        oropt = 0;
+        level = QC__TSP_LEVEL_2OPT;
     while (rc == QC_OK && pop(s, &a)) {
         if (try_2opt(s, a, delta, &rc))
             continue;
-        if (oropt)
-            try_oropt(s, a, delta, &rc);
+        if (level >= QC__TSP_LEVEL_OROPT && try_oropt(s, a, delta, &rc))
+            continue;
+        if (level >= QC__TSP_LEVEL_OR3OPT)
+            qc__tsp_try_or3opt(s, a, delta, &rc);
     }
     if (rc < 0) { /* leave the queue empty */
         while (pop(s, &a))
@@ -309,39 +313,71 @@ static int kick(qc__tsp *s, qc_rng *rng, double *delta)
     QC__TRY(reverse_logged(s, ib1, l1 + l2));
     QC__TRY(reverse_logged(s, ib1, l2));
     QC__TRY(reverse_logged(s, (ib1 + l2) % m, l1));
-    push(s, a);
-    push(s, b1);
-    push(s, b2);
-    push(s, c1);
-    push(s, c2);
-    push(s, d);
+    qc__tsp_push(s, a);
+    qc__tsp_push(s, b1);
+    qc__tsp_push(s, b2);
+    qc__tsp_push(s, c1);
+    qc__tsp_push(s, c2);
+    qc__tsp_push(s, d);
     return QC_OK;
 }
 
-int qc__tsp_perturb(qc__tsp *s, uint64_t rounds, uint64_t seed)
+/* Reverts the logged reversals down to entry keep (the log holds every
+ * reversal since the best tour so far). */
+static void undo_to(qc__tsp *s, size_t keep)
+{
+    while (s->nlog > keep) {
+        s->nlog--;
+        reverse_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
+    }
+}
+
+/* How much longer than the best, in average edges, a budget's walk may
+ * go on from (Or-3opt rounds only; Or-opt keeps only shorter tours): on
+ * TSPLIB up to 2000 points after 100 rounds per point, 0.2 gave 0.31%
+ * above the optima, 0 gave 0.39% and 0.5 gave 0.37%. */
+#define ACCEPT_SLACK 0.2
+
+int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed)
 {
     qc_rng rng;
     uint64_t r;
+    uint32_t i;
+    double over = 0.0, slack = 0.0; /* the current tour's excess over the best */
+    size_t log_max = 2 * (size_t)s->m + 1024;
     int rc = QC_OK;
 
-    if (s->m < 8)
+    if (s->m < 8 || rounds == 0)
         return QC_OK;
     qc_rng_seed(&rng, seed);
+    if (level == QC__TSP_LEVEL_OR3OPT) {
+        for (i = 0; i < s->m; i++)
+            slack += qc__tsp_dist(s, s->t[i], qc__tsp_next(s, s->t[i]));
+        slack *= ACCEPT_SLACK / s->m;
+    }
     s->logging = 1;
+    s->nlog = 0;
     for (r = 0; r < rounds && rc == QC_OK; r++) {
         double delta = 0.0;
+        size_t mark = s->nlog;
 
-        s->nlog = 0;
         rc = kick(s, &rng, &delta);
         if (rc == QC_OK)
-            rc = qc__tsp_local_search(s, 1, &delta);
-        if (rc == QC_OK && delta < -s->eps)
-            continue;
-        while (s->nlog > 0) { /* undo */
-            s->nlog--;
-            reverse_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
+            rc = qc__tsp_local_search(s, level, &delta);
+        if (rc == QC_OK && over + delta < -s->eps) { /* a new best */
+            over = 0.0;
+            s->nlog = 0;
+        } else if (rc == QC_OK && slack > 0.0 && over + delta <= slack) {
+            over += delta; /* a little longer: walk on from it */
+        } else {
+            undo_to(s, mark);
+        }
+        if (s->nlog > log_max) {
+            undo_to(s, 0);
+            over = 0.0;
         }
     }
+    undo_to(s, 0);
     s->logging = 0;
     return rc;
 }

@@ -1,0 +1,176 @@
+/*
+ * Or-3opt: the sequential 3-opt moves reachable over the neighbour lists
+ * (t1 t2 removed, t2 joined to a candidate t3, t3 t4 removed, t4 joined to a
+ * candidate t5, t5 t6 removed, t6 joined back to t1), each partial sum
+ * kept positive so the lists prune the search. These are the segment moves
+ * 2-opt and Or-opt miss: a segment of any length moved elsewhere, reversed
+ * or not, and two adjacent segments swapped. Each move is applied as two or
+ * three 2-opt moves (qc__tsp_move2), so the undo log sees only reversals.
+ */
+#include <string.h>
+
+#include "tour_internal.h"
+
+enum { KIND_2OPT, KIND_SWAP, KIND_BOTH_REVERSED, KIND_TWO_2OPT };
+
+typedef struct move3 {
+    uint32_t t1, t2, t3, t4, t5, t6;
+    int kind;
+    double gain; /* change of length, negative */
+} move3;
+
+/* The point after a walking in direction dir (0: along the array, 1: back). */
+static uint32_t succ(const qc__tsp *s, uint32_t a, int dir)
+{
+    return dir ? qc__tsp_prev(s, a) : qc__tsp_next(s, a);
+}
+
+static uint32_t pred(const qc__tsp *s, uint32_t a, int dir)
+{
+    return dir ? qc__tsp_next(s, a) : qc__tsp_prev(s, a);
+}
+
+/* Steps from a to x walking in direction dir. */
+static uint32_t steps(const qc__tsp *s, uint32_t a, uint32_t x, int dir)
+{
+    uint32_t pa = s->pos[a], px = s->pos[x];
+
+    if (dir)
+        return pa >= px ? pa - px : pa + s->m - px;
+    return px >= pa ? px - pa : px + s->m - pa;
+}
+
+/* Whether x lies on the path from a to b (both included) walking in dir. */
+static int on_path(const qc__tsp *s, uint32_t a, uint32_t b, uint32_t x, int dir)
+{
+    return steps(s, a, x, dir) <= steps(s, a, b, dir);
+}
+
+static void offer(move3 *bm, double gain, int kind, const uint32_t t[7])
+{
+    if (gain >= bm->gain)
+        return;
+    bm->gain = gain;
+    bm->kind = kind;
+    bm->t1 = t[1], bm->t2 = t[2], bm->t3 = t[3];
+    bm->t4 = t[4], bm->t5 = t[5], bm->t6 = t[6];
+}
+
+/* The third exchange: t5 among t4's candidates, t6 beside it. g2 is the
+ * gain so far with (t4, t5) not yet added; side 0 when t4 = succ(t3). */
+static void close_3opt(const qc__tsp *s, uint32_t t[7], double g2, int side, int dir,
+                       move3 *bm)
+{
+    const uint32_t *nb = s->nb + (size_t)t[4] * s->k;
+    unsigned j;
+
+    for (j = 0; j < s->k; j++) {
+        double g = g2 - qc__tsp_dist(s, t[4], nb[j]);
+        int k;
+
+        if (g <= s->eps)
+            break;
+        t[5] = nb[j];
+        if (t[5] == t[1] || (side == 1 && t[5] == t[3]))
+            continue;
+        if (side == 0) { /* t5 must lie on t2 .. t3: both ways round */
+            if (!on_path(s, t[2], t[3], t[5], dir))
+                continue;
+            for (k = 0; k < 2; k++) {
+                if (k == 0 && t[5] == t[3])
+                    continue;
+                if (k == 1 && t[5] == t[2])
+                    continue;
+                t[6] = k == 0 ? succ(s, t[5], dir) : pred(s, t[5], dir);
+                if (qc__tsp_too_far(s, t[3], t[6]) || qc__tsp_too_far(s, t[2], t[5]))
+                    continue;
+                offer(bm, qc__tsp_dist(s, t[6], t[1]) - g - qc__tsp_dist(s, t[5], t[6]),
+                      k == 0 ? KIND_SWAP : KIND_BOTH_REVERSED, t);
+            }
+        } else { /* t5 on t2 .. t4 takes its successor, beyond t3 its predecessor */
+            t[6] = on_path(s, t[2], t[4], t[5], dir) ? succ(s, t[5], dir) : pred(s, t[5], dir);
+            if (qc__tsp_too_far(s, t[4], t[6]))
+                continue;
+            offer(bm, qc__tsp_dist(s, t[6], t[1]) - g - qc__tsp_dist(s, t[5], t[6]),
+                  KIND_TWO_2OPT, t);
+        }
+    }
+}
+
+static void search(const qc__tsp *s, uint32_t a, int dir, move3 *bm)
+{
+    uint32_t t[7];
+    const uint32_t *nb;
+    double d12;
+    unsigned j;
+    int side;
+
+    t[0] = 0;
+    t[1] = a;
+    t[2] = succ(s, a, dir);
+    d12 = qc__tsp_dist(s, t[1], t[2]);
+    nb = s->nb + (size_t)t[2] * s->k;
+    for (j = 0; j < s->k; j++) {
+        double g1 = d12 - qc__tsp_dist(s, t[2], nb[j]);
+
+        if (g1 <= s->eps)
+            break;
+        t[3] = nb[j];
+        if (t[3] == t[1] || qc__tsp_too_far(s, t[2], t[3]))
+            continue;
+        for (side = 0; side < 2; side++) {
+            double d34;
+
+            t[4] = side ? pred(s, t[3], dir) : succ(s, t[3], dir);
+            if (t[4] == (side ? t[2] : t[1]))
+                continue;
+            d34 = qc__tsp_dist(s, t[3], t[4]);
+            if (side == 1) /* closing (t4, t1) here is a 2-opt move */
+                offer(bm, qc__tsp_dist(s, t[4], t[1]) - g1 - d34, KIND_2OPT, t);
+            close_3opt(s, t, g1 + d34, side, dir, bm);
+        }
+    }
+}
+
+static int apply(qc__tsp *s, const move3 *mv)
+{
+    switch (mv->kind) {
+    case KIND_2OPT:
+        return qc__tsp_move2(s, mv->t1, mv->t2, mv->t4, mv->t3);
+    case KIND_SWAP: /* t1 [t2..t5][t6..t3] t4 -> t1 [t6..t3][t2..t5] t4 */
+        QC__TRY(qc__tsp_move2(s, mv->t1, mv->t2, mv->t3, mv->t4));
+        QC__TRY(qc__tsp_move2(s, mv->t1, mv->t3, mv->t6, mv->t5));
+        return qc__tsp_move2(s, mv->t3, mv->t5, mv->t2, mv->t4);
+    case KIND_BOTH_REVERSED: /* t1 [t2..t6][t5..t3] t4 -> t1 [t6..t2][t3..t5] t4 */
+        QC__TRY(qc__tsp_move2(s, mv->t1, mv->t2, mv->t6, mv->t5));
+        return qc__tsp_move2(s, mv->t2, mv->t5, mv->t3, mv->t4);
+    default: /* a 2-opt move, then one more from the edge it made at t1 */
+        QC__TRY(qc__tsp_move2(s, mv->t1, mv->t2, mv->t4, mv->t3));
+        return qc__tsp_move2(s, mv->t1, mv->t4, mv->t6, mv->t5);
+    }
+}
+
+int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
+{
+    move3 bm;
+    int dir;
+
+    memset(&bm, 0, sizeof bm);
+    bm.gain = -s->eps;
+    bm.kind = -1;
+    for (dir = 0; dir < 2; dir++)
+        search(s, a, dir, &bm);
+    if (bm.kind < 0)
+        return 0;
+    *rc = apply(s, &bm);
+    *delta += bm.gain;
+    qc__tsp_push(s, bm.t1);
+    qc__tsp_push(s, bm.t2);
+    qc__tsp_push(s, bm.t3);
+    qc__tsp_push(s, bm.t4);
+    if (bm.kind != KIND_2OPT) {
+        qc__tsp_push(s, bm.t5);
+        qc__tsp_push(s, bm.t6);
+    }
+    return 1;
+}
