@@ -25,8 +25,7 @@ static int read_svg(qc_ctx *ctx, const char *path, qc_region *out)
 
     if (cli_read_file(path, MAX_SVG_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    memset(&opts, 0, sizeof opts);
-    opts.max_bytes = MAX_SVG_BYTES;
+    cli_svg_opts(&opts, path, MAX_SVG_BYTES);
     rc = qc_io_read_svg_region(ctx, buf, len, &opts, out);
     free(buf);
     if (rc == QC_OK)
@@ -82,6 +81,7 @@ int cli_load_region(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region
 int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *out)
 {
     qc_patches ps;
+    qc_svg_opts opts;
     qc_bbox box;
     char *buf;
     size_t len, i, k;
@@ -92,7 +92,8 @@ int cli_load_top(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_region *o
     memset(out, 0, sizeof *out);
     if (cli_read_file(spec, MAX_SVG_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    rc = qc_io_read_svg_patches(ctx, buf, len, NULL, &ps);
+    cli_svg_opts(&opts, spec, MAX_SVG_BYTES);
+    rc = qc_io_read_svg_patches(ctx, buf, len, &opts, &ps);
     free(buf);
     for (i = 0; rc == QC_OK && i < ps.n; i++)
         for (k = 0; rc == QC_OK && k < ps.p[i].region.nrings; k++) {
