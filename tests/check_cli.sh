@@ -298,6 +298,20 @@ PY
 }
 check svg_preview_converts_back_to_the_same_stitches svg_preview_round_trip
 
+# An Inkscape-style file: the clone is read as drawn, and what the reader
+# cannot honour is one warning line each on stderr (the pattern is still
+# written), from generate and from convert alike.
+svg_warnings_are_one_line_each() {
+    printf '%s' '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" viewBox="0 0 100 100"><defs><rect id="r" width="80" height="80"/></defs><use href="#r" x="10" y="10" clip-path="url(#c)"/><text>hi</text></svg>' > w.svg &&
+        "$QC" generate -q --region w.svg --units mm -o w.pat 2> err.txt && [ -s w.pat ] &&
+        [ "$(wc -l < err.txt)" -eq 2 ] &&
+        grep -q "w.svg: warning: svg line 1, <use> (element 4): clip-path url(#c) is not applied" err.txt &&
+        grep -q "w.svg: warning: svg line 1, <text> (element 5): text is not read" err.txt &&
+        "$QC" convert w.svg w2.pat 2> err2.txt && [ "$(wc -l < err2.txt)" -eq 2 ] &&
+        grep -q "N2G01X3.543Y3.543" w2.pat || { cat err.txt err2.txt; head -3 w2.pat; return 1; }
+}
+check svg_warnings_are_one_line_each svg_warnings_are_one_line_each
+
 # Errors: the status, one stderr line naming the value, and no file left behind.
 fails_cleanly() {
     d=$(mktemp -d "$WORK/err.XXXXXX") && cd "$d" || return 1

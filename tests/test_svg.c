@@ -1149,21 +1149,24 @@ static void unhonoured_constructs_should_warn_naming_the_element(void)
             "<text x=\"1\" y=\"1\">label</text>\n"
             "<image id=\"photo\" width=\"5\" height=\"5\"/>\n"
             "<use href=\"#nowhere\"/>\n"
-            "<use id=\"ext\" href=\"other.svg#a\"/>");
+            "<use id=\"ext\" href=\"other.svg#a\"/>\n"
+            "<symbol id=\"s\"><rect x=\"40\" width=\"1\" height=\"1\"/></symbol><use href=\"#s\" width=\"5\"/>");
 
     TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
-    TEST_ASSERT_EQUAL_size_t(2, r.nrings); /* read unclipped, and said so */
-    TEST_ASSERT_EQUAL_size_t(6, warned.n);
+    TEST_ASSERT_EQUAL_size_t(3, r.nrings); /* read unclipped, and said so */
+    TEST_ASSERT_EQUAL_size_t(7, warned.n);
     TEST_ASSERT_TRUE(warned_about("svg line 2, <rect id=\"clipped\">", "clip-path url(#c) is not applied", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 3, <g> (element 5)", "mask url(#m) is not applied", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 4, <text> (element 7)", "text is not read", "Object to Path"));
     TEST_ASSERT_TRUE(warned_about("svg line 5, <image id=\"photo\">", "images are not read", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 6, <use>", "\"#nowhere\" names no element", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 7, <use id=\"ext\">", "not in this file", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 8, <symbol id=\"s\"> (cloned by the <use> of line 8)",
+                                  "width and height are not applied", NULL));
     qc_region_free(&ctx, &r);
     /* without a callback the same file reads the same, silently */
     TEST_ASSERT_EQUAL_INT(QC_OK, region_of(svg, &r));
-    TEST_ASSERT_EQUAL_size_t(2, r.nrings);
+    TEST_ASSERT_EQUAL_size_t(3, r.nrings);
     qc_region_free(&ctx, &r);
     /* a flood of warnings stops at 50, then says how many more */
     n += (size_t)snprintf(many + n, sizeof many - n, "%s",
@@ -1396,6 +1399,8 @@ static void files_should_read_with_the_expected_status(void)
         {"tests/bad/svg/no_closed_shape.svg", QC_EEMPTY, QC_OK, "no closed shape"},
         {"tests/bad/svg/not_svg.svg", QC_EFORMAT, QC_EFORMAT, "root element is <html>"},
         {"tests/bad/svg/unclosed.svg", QC_EFORMAT, QC_EFORMAT, "</svg> does not close <g> of line 2"},
+        {"tests/bad/svg/use_bomb.svg", QC_ELIMIT, QC_ELIMIT, "svg line 6: more than 20000 <use> clones"},
+        {"tests/bad/svg/use_cycle.svg", QC_EFORMAT, QC_EFORMAT, "svg line 4: <use> href \"#b\" clones an element that contains the use"},
     };
     size_t k;
 

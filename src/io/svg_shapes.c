@@ -56,6 +56,7 @@ typedef struct walker {
     size_t use_depth, use_count, use_elements, use_bytes;
     size_t use_src[QC__SVG_USE_MAX_DEPTH];
     unsigned long use_line; /* the outermost <use>'s line while cloning */
+    int use_sized[QC__SVG_USE_MAX_DEPTH]; /* that use gave width or height */
     qc__xml *sub_x[QC__SVG_USE_MAX_DEPTH];
     frame *sub_st[QC__SVG_USE_MAX_DEPTH];
 } walker;
@@ -637,6 +638,8 @@ static int use_element(walker *k, const frame *f)
     t.f = y;
     base.m = qc__svg_mat_mul(f->m, t);
     base.skip = 0;
+    k->use_sized[k->use_depth] = qc__xml_attr_get(k->x, "width") != NULL ||
+                                 qc__xml_attr_get(k->x, "height") != NULL;
     return clone(k, &base, src);
 }
 
@@ -741,6 +744,9 @@ static int open_element(walker *k)
             f->m = qc__svg_mat_mul(f->m, local);
         }
         if (name_is(k, "svg") || name_is(k, "symbol")) {
+            if (source && k->use_sized[k->use_depth - 1])
+                warn_el(k, "the <use>'s width and height are not applied: the %s keeps its own "
+                           "size", k->elem);
             QC__TRY(qc__svg_nested_viewport(&k->w, k->x, k->vp_w, k->vp_h, &local));
             f->m = qc__svg_mat_mul(f->m, local);
         }
