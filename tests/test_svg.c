@@ -1143,7 +1143,7 @@ static void unhonoured_constructs_should_warn_naming_the_element(void)
     size_t n = 0;
     int i;
     const char *svg =
-        DOC("<clipPath id=\"c\"><rect width=\"5\" height=\"5\"/></clipPath>\n"
+        DOC("<clipPath id=\"c\"><circle r=\"5\"/></clipPath>\n"
             "<rect id=\"clipped\" clip-path=\"url(#c)\" width=\"10\" height=\"10\"/>\n"
             "<g mask=\"url(#m)\"><rect x=\"20\" width=\"10\" height=\"10\"/></g>\n"
             "<text x=\"1\" y=\"1\">label</text>\n"
@@ -1155,7 +1155,7 @@ static void unhonoured_constructs_should_warn_naming_the_element(void)
     TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
     TEST_ASSERT_EQUAL_size_t(3, r.nrings); /* read unclipped, and said so */
     TEST_ASSERT_EQUAL_size_t(7, warned.n);
-    TEST_ASSERT_TRUE(warned_about("svg line 2, <rect id=\"clipped\">", "clip-path url(#c) is not applied", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 2, <rect id=\"clipped\">", "clip-path url(#c) is not applied (only a clip of one convex shape", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 3, <g> (element 5)", "mask url(#m) is not applied", NULL));
     TEST_ASSERT_TRUE(warned_about("svg line 4, <text> (element 7)", "text is not read", "Object to Path"));
     TEST_ASSERT_TRUE(warned_about("svg line 5, <image id=\"photo\">", "images are not read", NULL));
@@ -1181,6 +1181,48 @@ static void unhonoured_constructs_should_warn_naming_the_element(void)
     TEST_ASSERT_EQUAL_size_t(51, warned.n);
     TEST_ASSERT_EQUAL_STRING("svg: 10 more warnings not shown", warned.line[50]);
     qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void clip_path_should_cut_where_exact(void)
+{
+    qc_region r;
+    qc_path p;
+    const char *svg =
+        DOC("<style>.clipped { clip-path: url('#c') }</style>\n"
+            "<defs><clipPath id=\"c\"><rect width=\"5\" height=\"5\"/></clipPath></defs>\n"
+            "<rect clip-path=\"url(#c)\" width=\"10\" height=\"10\"/>\n"          /* cut to 5x5 */
+            "<rect clip-path=\"url(#c)\" x=\"50\" width=\"10\" height=\"10\"/>\n" /* clipped away */
+            "<circle clip-path=\"url(#c)\" cx=\"2\" cy=\"2\" r=\"1\"/>\n"         /* wholly inside */
+            "<polygon class=\"clipped\" transform=\"translate(20,0)\" points=\"-5,1 3,1 3,3 -5,3\"/>\n"
+            "<path clip-path=\"url(#c)\" d=\"M1 1h8v8h-2v-6h-6z\"/>\n");          /* concave: said */
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(4, r.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 25, fabs(ring_area(&r, 0)));
+    expect_point(0, 100, r.v[0], 1e-12);
+    TEST_ASSERT_DOUBLE_WITHIN(0.1, 3.14159265, fabs(ring_area(&r, 1)));
+    /* the clip is in the polygon's own user space: x 20..23 of 15..23 */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 6, fabs(ring_area(&r, 2)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 28, fabs(ring_area(&r, 3))); /* unclipped */
+    TEST_ASSERT_EQUAL_size_t(1, warned.n);
+    TEST_ASSERT_TRUE(warned_about("svg line 7, <path> (element 10)",
+                                  "not applied to a curved or concave shape", NULL));
+    {
+        qc_region one = r;
+        qc_bbox b;
+
+        one.nrings = 1;
+        one.nv = r.ring_end[0];
+        b = qc_region_bbox(&one);
+        expect_point(0, 95, b.min, 1e-12);
+        expect_point(5, 100, b.max, 1e-12);
+    }
+    qc_region_free(&ctx, &r);
+    /* the path reader sees the same cut */
+    TEST_ASSERT_EQUAL_INT(QC_OK, path_of(svg, &p));
+    TEST_ASSERT_EQUAL_size_t(4, qc_path_pieces(&p));
+    qc_path_free(&ctx, &p);
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
@@ -1210,13 +1252,16 @@ static void clones_and_sheets_should_survive_out_of_memory(void)
         DOC("<style>.a{fill:red} #b{display:none} rect{fill-rule:evenodd}</style>"
             "<defs><rect id=\"r\" class=\"a\" width=\"10\" height=\"10\"/>"
             "<g id=\"g\"><use href=\"#r\"/><use href=\"#r\" x=\"20\"/></g></defs>"
-            "<use href=\"#g\"/><use href=\"#g\" y=\"40\"/><rect id=\"b\" width=\"5\" height=\"5\"/>");
+            "<use href=\"#g\"/><use href=\"#g\" y=\"40\"/><rect id=\"b\" width=\"5\" height=\"5\"/>"
+            "<clipPath id=\"c\"><rect x=\"60\" width=\"5\" height=\"5\"/></clipPath>"
+            "<rect clip-path=\"url(#c)\" x=\"59\" width=\"3\" height=\"3\"/>");
     qc_region ref, r;
     size_t k;
     int rc;
 
     TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_of(svg, &ref), qc_errmsg(&ctx));
-    TEST_ASSERT_EQUAL_size_t(4, ref.nrings);
+    TEST_ASSERT_EQUAL_size_t(5, ref.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 6, fabs(ring_area(&ref, 4)));
     for (k = 1;; k++) {
         ta.fail_at = k;
         ta.allocs = 0;
@@ -1518,6 +1563,7 @@ int main(void)
     RUN_TEST(style_sheets_and_classes_should_cascade);
     RUN_TEST(hidden_layers_should_be_left_out);
     RUN_TEST(unhonoured_constructs_should_warn_naming_the_element);
+    RUN_TEST(clip_path_should_cut_where_exact);
     RUN_TEST(preview_origin_should_undo_the_margin);
     RUN_TEST(clones_and_sheets_should_survive_out_of_memory);
     return UNITY_END();

@@ -274,6 +274,26 @@ QC__HIDDEN void qc__svg_index_free(qc__svg_index *ix);
 QC__HIDDEN const qc__svg_id *qc__svg_index_find(const qc__svg_index *ix, const char *id,
                                                 size_t n);
 
+/* ---- clip-path where exact (svg_clip.c) ---- */
+
+typedef struct qc__svg_clip {
+    qc_vec2 *v;      /* a convex polygon, mm, no closing repeat */
+    size_t n, cap;
+    int sign;        /* +1 counter-clockwise, -1 clockwise */
+} qc__svg_clip;
+
+/* From a clipPath's shapes (nshapes of them, in mm): *ok when they are one
+ * closed convex polygon of straight edges. Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__svg_clip_make(qc_ctx *ctx, const qc_path *shapes, size_t nshapes,
+                                 qc__svg_clip *c, int *ok);
+QC__HIDDEN void qc__svg_clip_free(qc_ctx *ctx, qc__svg_clip *c);
+/* 1 when every point of shape (control points too) is inside c or on its
+ * edge, -1 when all lie beyond one edge, 0 when it crosses. */
+QC__HIDDEN int qc__svg_clip_where(const qc__svg_clip *c, const qc_path *shape);
+/* Cuts shape to c when it is one closed convex polygon (*done; an empty
+ * result empties shape); otherwise leaves it and *done = 0. */
+QC__HIDDEN int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *done);
+
 /* ---- document walk (svg_shapes.c) ---- */
 
 /* Budget of <use> clones against hostile files (a "billion laughs" of

@@ -12,8 +12,10 @@
  * back. fill, fill-rule, stroke-dasharray and visibility are inherited. A
  * property comes from the style attribute, else the <style> sheets' rules
  * (highest specificity, then the last), else the attribute of its name.
- * What is not honoured (clip-path, mask, text, images, unresolved clones)
- * is a warning naming the element.
+ * A shape's clip-path is applied where exact (svg_clip.c: one convex
+ * straight-edged clip; the shape inside, outside or itself convex); what
+ * is not honoured (other clips, clip-path on groups, mask, text, images,
+ * unresolved clones) is a warning naming the element.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -59,6 +61,12 @@ typedef struct walker {
     int use_sized[QC__SVG_USE_MAX_DEPTH]; /* that use gave width or height */
     qc__xml *sub_x[QC__SVG_USE_MAX_DEPTH];
     frame *sub_st[QC__SVG_USE_MAX_DEPTH];
+    /* clip-path: a clipPath's shapes are collected, not emitted */
+    int collecting;
+    size_t collect_depth; /* the clone level of the clipPath being read */
+    qc_path clip_shapes;
+    size_t nclip_shapes;
+    qc__svg_clip clip;
 } walker;
 
 static int name_is(const walker *k, const char *name)
@@ -103,6 +111,13 @@ static int property(const walker *k, int p, const char **val, size_t *vlen)
 static int value_is(const char *v, size_t n, const char *w)
 {
     return n == strlen(w) && memcmp(v, w, n) == 0;
+}
+
+static int value_is_attr(const walker *k, const char *name, const char *w)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(k->x, name);
+
+    return a != NULL && value_is(a->value, a->value_len, w);
 }
 
 /* ---- transform lists ---- */
@@ -436,8 +451,12 @@ static const char *attr_value(const walker *k, const char *name)
     return a != NULL ? a->value : NULL;
 }
 
-/* Maps the shape to mm and hands it over. */
-static int emit(walker *k, const frame *f, int closed)
+static void warn_el(walker *k, const char *fmt, ...) QC__PRINTF(2, 3);
+
+/* Maps the shape to mm, clips it when clip is set (clip_name: the
+ * clip-path value, for a warning) and hands it over. */
+static int emit(walker *k, const frame *f, int closed, const qc__svg_clip *clip,
+                const char *clip_name, size_t clip_len)
 {
     qc__svg_elem el;
     size_t i;
@@ -458,6 +477,23 @@ static int emit(walker *k, const frame *f, int closed)
                             k->w.line, k->w.elem, p.x, p.y, QC__SVG_MAX_MM);
         k->shape.pt[i] = p;
     }
+    if (k->collecting) {
+        k->nclip_shapes++;
+        return qc_path_append(k->ctx, &k->clip_shapes, &k->shape, 0);
+    }
+    if (clip != NULL) {
+        int where = qc__svg_clip_where(clip, &k->shape), done = 1;
+
+        if (where < 0)
+            return QC_OK; /* wholly clipped away */
+        if (where == 0)
+            QC__TRY(qc__svg_clip_cut(k->ctx, clip, &k->shape, &done));
+        if (!done)
+            warn_el(k, "clip-path %.*s is not applied to a curved or concave shape: read "
+                       "unclipped", (int)(clip_len > 60 ? 60 : clip_len), clip_name);
+        if (k->shape.ncmd == 0)
+            return QC_OK;
+    }
     el.index = k->shapes;
     el.line = k->w.line;
     el.id = attr_value(k, "id");
@@ -475,7 +511,6 @@ static int emit(walker *k, const frame *f, int closed)
 /* A warning about the current element: "svg line L, <path id="a">: ..."
  * (without an id, its number among the document's elements; in a clone,
  * the line of the <use> that made it). */
-static void warn_el(walker *k, const char *fmt, ...) QC__PRINTF(2, 3);
 static void warn_el(walker *k, const char *fmt, ...)
 {
     char what[200];
@@ -643,6 +678,73 @@ static int use_element(walker *k, const frame *f)
     return clone(k, &base, src);
 }
 
+/* The fragment of a url(#id) reference ("url(#c)", quotes allowed): 1 and *id. */
+static int url_fragment(const char *v, size_t n, const char **id, size_t *len)
+{
+    size_t i, e;
+
+    if (n < 6 || memcmp(v, "url(", 4) != 0 || v[n - 1] != ')')
+        return 0;
+    i = 4;
+    e = n - 1;
+    while (i < e && (qc__is_space(v[i]) || v[i] == '"' || v[i] == '\''))
+        i++;
+    while (e > i && (qc__is_space(v[e - 1]) || v[e - 1] == '"' || v[e - 1] == '\''))
+        e--;
+    if (e - i < 2 || v[i] != '#')
+        return 0;
+    *id = v + i + 1;
+    *len = e - i - 1;
+    return 1;
+}
+
+/* Reads the clipPath that clip-path v[0..vn) names into k->clip, in the
+ * frame f of the clipped shape (userSpaceOnUse): *ok when it can be applied
+ * exactly; otherwise a warning and the shape is read unclipped. */
+static int collect_clip(walker *k, const frame *f, const char *v, size_t vn, int *ok)
+{
+    const qc__svg_id *src = NULL;
+    const char *id;
+    size_t idn, i;
+    frame base = *f;
+    char elem[sizeof k->elem];
+    qc__svg_where w = k->w;
+    qc__css_match css = k->css;
+    int rc, cycle = 0;
+
+    *ok = 0;
+    if (url_fragment(v, vn, &id, &idn))
+        src = qc__svg_index_find(k->ix, id, idn);
+    for (i = 0; src != NULL && i < k->use_depth; i++)
+        cycle |= k->use_src[i] == src->at;
+    if (src == NULL || cycle || k->use_depth >= QC__SVG_USE_MAX_DEPTH) {
+        warn_el(k, "clip-path %.*s is not applied (%s): read unclipped", (int)(vn > 60 ? 60 : vn),
+                v, src == NULL ? "it names no element" : "clips nested too deep");
+        return QC_OK;
+    }
+    if (++k->use_count > QC__SVG_USE_MAX_COUNT)
+        return qc__fail(k->ctx, QC_ELIMIT, "svg line %lu: more than %d <use> clones and clip "
+                        "paths (a budget against hostile files)", k->w.line, QC__SVG_USE_MAX_COUNT);
+    memcpy(elem, k->elem, sizeof elem);
+    base.skip = 0;
+    base.hidden = 0;
+    k->clip_shapes.ncmd = k->clip_shapes.npt = 0;
+    k->nclip_shapes = 0;
+    k->collecting++;
+    k->collect_depth = k->use_depth + 1;
+    rc = clone(k, &base, src);
+    k->collecting--;
+    memcpy(k->elem, elem, sizeof elem);
+    k->w = w;
+    k->css = css;
+    QC__TRY(rc);
+    QC__TRY(qc__svg_clip_make(k->ctx, &k->clip_shapes, k->nclip_shapes, &k->clip, ok));
+    if (!*ok)
+        warn_el(k, "clip-path %.*s is not applied (only a clip of one convex shape with straight "
+                   "edges is): read unclipped", (int)(vn > 60 ? 60 : vn), v);
+    return QC_OK;
+}
+
 /* Style the element inherits or sets: fill, fill-rule, dashes, visibility. */
 static void inherit_style(walker *k, frame *f)
 {
@@ -679,6 +781,8 @@ static void warn_unapplied(walker *k, const frame *f)
         const char *v;
         size_t vn;
 
+        if (i == 0 && is_shape(k) && !k->collecting)
+            continue; /* a shape's clip is applied where exact, else warned about there */
         if (property(k, props[i], &v, &vn) && vn > 0 && !value_is(v, vn, "none") &&
             !value_is(v, vn, "inherit") && !f->hidden)
             warn_el(k, "%s %.*s is not applied: read unclipped", qc__css_prop_name[props[i]],
@@ -696,6 +800,7 @@ static int open_element(walker *k)
     qc__svg_mat local;
     int closed, root = d == 1 && k->use_depth == 0;
     int source = d == 1 && k->use_depth > 0; /* a clone's source element */
+    int clip_source = source && k->collecting && k->use_depth == k->collect_depth;
 
     memcpy(k->elem, k->x->local, ln);
     k->elem[ln] = '\0';
@@ -725,7 +830,9 @@ static int open_element(walker *k)
         QC__TRY(qc__svg_root_viewport(&k->w, k->x, &f->m, &k->vp_w, &k->vp_h));
     } else if (parent->skip || !k->x->svg ||
                !(is_container(k) || is_shape(k) || name_is(k, "use") ||
-                 (source && name_is(k, "symbol")))) {
+                 (source && !clip_source && name_is(k, "symbol")) || clip_source) ||
+               (clip_source && (!name_is(k, "clipPath") ||
+                                value_is_attr(k, "clipPathUnits", "objectBoundingBox")))) {
         f->skip = 1;
         if (!parent->skip && k->x->svg && unread_kind(k) != NULL) {
             qc__css_match_element(&k->ix->css, k->elem, ln, attr_value(k, "id"),
@@ -772,12 +879,24 @@ static int open_element(walker *k)
     if (!is_shape(k))
         return QC_OK;
     f->skip = 1; /* children of a shape draw nothing */
-    k->shapes++;
+    if (!k->collecting)
+        k->shapes++;
     if (f->hidden)
         return QC_OK;
+    if (!k->collecting && property(k, QC__CSS_CLIP_PATH, &v, &vn) && vn > 0 &&
+        !value_is(v, vn, "none") && !value_is(v, vn, "inherit")) {
+        int ok;
+
+        QC__TRY(collect_clip(k, f, v, vn, &ok));
+        /* v points into the tokenizer's attributes or the style sheet, both
+         * still those of this element */
+        k->shape.ncmd = k->shape.npt = 0;
+        QC__TRY(build_shape(k, &closed));
+        return emit(k, f, closed, ok ? &k->clip : NULL, v, vn);
+    }
     k->shape.ncmd = k->shape.npt = 0;
     QC__TRY(build_shape(k, &closed));
-    return emit(k, f, closed);
+    return emit(k, f, closed, NULL, NULL, 0);
 }
 
 int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_warner *warn,
@@ -824,6 +943,8 @@ int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_warner *warn,
         qc__free(ctx, k.sub_st[i], (QC__XML_MAX_DEPTH + 1) * sizeof *k.sub_st[i]);
     }
     qc__svg_index_free(&ix);
+    qc_path_free(ctx, &k.clip_shapes);
+    qc__svg_clip_free(ctx, &k.clip);
     if (rc >= 0)
         qc__svg_warn_done(warn);
     return rc;
