@@ -297,33 +297,40 @@ void qc__css_free(qc__css *c)
     c->text_len = c->text_cap = c->nchunk = c->chunk_cap = c->n = c->cap = 0;
 }
 
-/* Adds the rules of selector (kind, name) to m, the last ones when more
- * than fit. */
-static void match_key(const qc__css *c, char kind, const char *name, size_t len,
-                      qc__css_match *m)
+/* The first rule whose selector sorts after (kind, name) when after is
+ * set, else the first not before it. */
+static size_t bound(const qc__css *c, char kind, const char *name, size_t len, int after)
 {
-    size_t lo = 0, hi = c->n, k;
+    size_t lo = 0, hi = c->n;
 
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
         const qc__css_rule *r = &c->rule[mid];
+        int d = key_cmp(r->kind, r->name, r->name_len, kind, name, len);
 
-        if (key_cmp(r->kind, r->name, r->name_len, kind, name, len) < 0)
+        if (d < 0 || (after && d == 0))
             lo = mid + 1;
         else
             hi = mid;
     }
-    for (k = lo; k < c->n; k++) {
-        const qc__css_rule *r = &c->rule[k];
+    return lo;
+}
 
-        if (key_cmp(r->kind, r->name, r->name_len, kind, name, len) != 0)
-            break;
-        if (m->n < QC__CSS_MAX_MATCH) {
-            m->r[m->n++] = r;
-        } else {
+/* Adds the rules of selector (kind, name) to m; when more than fit, the
+ * last ones (they win ties), dropping the oldest. */
+static void match_key(const qc__css *c, char kind, const char *name, size_t len,
+                      qc__css_match *m)
+{
+    size_t lo = bound(c, kind, name, len, 0), hi = bound(c, kind, name, len, 1), k;
+
+    if (hi - lo > QC__CSS_MAX_MATCH)
+        lo = hi - QC__CSS_MAX_MATCH;
+    for (k = lo; k < hi; k++) {
+        if (m->n == QC__CSS_MAX_MATCH) {
             memmove(m->r, m->r + 1, (QC__CSS_MAX_MATCH - 1) * sizeof m->r[0]);
-            m->r[QC__CSS_MAX_MATCH - 1] = r;
+            m->n--;
         }
+        m->r[m->n++] = &c->rule[k];
     }
 }
 
