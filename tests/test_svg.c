@@ -1226,6 +1226,31 @@ static void clip_path_should_cut_where_exact(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+static void group_and_nested_clips_should_intersect(void)
+{
+    qc_region r;
+    const char *svg =
+        DOC("<clipPath id=\"c2\"><rect x=\"30\" width=\"5\" height=\"50\"/></clipPath>"
+            "<clipPath id=\"c3\" transform=\"translate(0,1)\"><polygon points=\"0,0 100,0 100,2 0,2\"/></clipPath>"
+            "<g clip-path=\"url(#c2)\"><rect x=\"28\" width=\"10\" height=\"10\"/>"   /* 5 x 10 */
+            "<rect clip-path=\"url(#c3)\" x=\"28\" y=\"20\" width=\"10\" height=\"10\"/>" /* away */
+            "<rect clip-path=\"url(#c3)\" x=\"28\" width=\"10\" height=\"10\"/></g>"  /* 5 x 2 */
+            "<rect x=\"28\" y=\"60\" width=\"10\" height=\"10\"/>"                    /* after the group: whole */
+            "<defs><rect id=\"sq\" width=\"10\" height=\"10\"/></defs>"
+            "<use href=\"#sq\" clip-path=\"url(#c2)\" x=\"31\" y=\"30\"/>");          /* 4 x 10 */
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(0, warned.n);
+    TEST_ASSERT_EQUAL_size_t(4, r.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 50, fabs(ring_area(&r, 0)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 10, fabs(ring_area(&r, 1)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 100, fabs(ring_area(&r, 2)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 40, fabs(ring_area(&r, 3)));
+    expect_point(30, 99, r.v[r.ring_end[0]], 1e-12); /* c3 moved down 1 */
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 static void preview_origin_should_undo_the_margin(void)
 {
     qc_region r;
@@ -1564,6 +1589,7 @@ int main(void)
     RUN_TEST(hidden_layers_should_be_left_out);
     RUN_TEST(unhonoured_constructs_should_warn_naming_the_element);
     RUN_TEST(clip_path_should_cut_where_exact);
+    RUN_TEST(group_and_nested_clips_should_intersect);
     RUN_TEST(preview_origin_should_undo_the_margin);
     RUN_TEST(clones_and_sheets_should_survive_out_of_memory);
     return UNITY_END();

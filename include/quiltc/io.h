@@ -126,12 +126,12 @@ typedef struct qc_svg_opts {
  * pt, px, <use> clones (href or xlink:href, x/y, nested; a budget of depth,
  * count and bytes refuses hostile files with QC_ELIMIT), CSS from <style>
  * (selectors .class, #id, type and *) and class attributes, display:none and
- * visibility:hidden (inherited: Inkscape's hidden layers), a shape's
- * clip-path where exact (a clip of one convex straight-edged shape; the
- * shape inside it, beyond it, or convex itself). What it cannot honour
- * (other clips, clip-path on groups, mask, text, images, other selectors, a
- * missing or external clone source) goes to opts->warn, naming the element;
- * a clone cycle is QC_EFORMAT.
+ * visibility:hidden (inherited: Inkscape's hidden layers), clip-path on
+ * shapes, groups and uses where exact (a clip of one convex straight-edged
+ * shape, nested clips intersected; each shape inside, beyond, or convex
+ * itself). What it cannot honour (other clips, mask, text, images, other
+ * selectors, a missing or external clone source) goes to opts->warn, naming
+ * the element; a clone cycle is QC_EFORMAT.
  * Not normalized: call qc_region_normalize. Errors: QC_EFORMAT
  * (malformed XML or path data; the message says where), QC_EEMPTY (no
  * closed shape), QC_ERANGE (NaN/inf/huge numbers), QC_ELIMIT (too large),

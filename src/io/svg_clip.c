@@ -99,6 +99,8 @@ int qc__svg_clip_where(const qc__svg_clip *c, const qc_path *shape)
     size_t i, k;
     int inside = 1;
 
+    if (c->n == 0)
+        return -1; /* an empty clip lets nothing through */
     for (i = 0; i < c->n; i++) {
         size_t out = 0;
 
@@ -112,26 +114,22 @@ int qc__svg_clip_where(const qc__svg_clip *c, const qc_path *shape)
     return inside;
 }
 
-int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *done)
+/* Sutherland-Hodgman: the convex polygon (*a)[0..*na) cut by each edge of
+ * c in turn (exact for two convex polygons); fewer than 3 vertices left is
+ * empty (*na = 0). */
+static int cut_polygon(qc_ctx *ctx, const qc__svg_clip *c, qc_vec2 **a, size_t *na, size_t *acap)
 {
-    qc_vec2 *a = NULL, *b = NULL;
-    size_t na = 0, nb = 0, acap = 0, bcap = 0, i, k;
-    int poly, rc = QC_OK;
+    qc_vec2 *b = NULL;
+    size_t nb = 0, bcap = 0, i, k;
+    int rc = QC_OK;
 
-    *done = 0;
-    QC__TRY(polygon_of(ctx, shape, &a, &na, &acap, &poly));
-    if (!poly || convex_sign(a, na) == 0) {
-        qc__free(ctx, a, acap * sizeof *a);
-        return QC_OK;
-    }
-    /* Sutherland-Hodgman: a against each clip edge in turn, into b */
-    for (i = 0; i < c->n && na > 0; i++) {
-        rc = qc__reserve(ctx, (void **)&b, &bcap, 2 * na, sizeof *b);
+    for (i = 0; i < c->n && *na > 0; i++) {
+        rc = qc__reserve(ctx, (void **)&b, &bcap, 2 * *na, sizeof *b);
         if (rc < 0)
             break;
         nb = 0;
-        for (k = 0; k < na; k++) {
-            qc_vec2 p = a[k], q = a[(k + 1) % na];
+        for (k = 0; k < *na; k++) {
+            qc_vec2 p = (*a)[k], q = (*a)[(k + 1) % *na];
             double sp = side(c, i, p), sq = side(c, i, q);
 
             if (sp >= 0)
@@ -143,27 +141,56 @@ int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *do
             }
         }
         {
-            qc_vec2 *tv = a;
-            size_t tc = acap;
+            qc_vec2 *tv = *a;
+            size_t tc = *acap;
 
-            a = b;
-            acap = bcap;
-            na = nb;
+            *a = b;
+            *acap = bcap;
+            *na = nb;
             b = tv;
             bcap = tc;
         }
     }
+    qc__free(ctx, b, bcap * sizeof *b);
+    if (*na < 3)
+        *na = 0;
+    return rc;
+}
+
+int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *done)
+{
+    qc_vec2 *a = NULL;
+    size_t na = 0, acap = 0, k;
+    int poly, rc;
+
+    *done = 0;
+    QC__TRY(polygon_of(ctx, shape, &a, &na, &acap, &poly));
+    if (!poly || convex_sign(a, na) == 0) {
+        qc__free(ctx, a, acap * sizeof *a);
+        return QC_OK;
+    }
+    rc = cut_polygon(ctx, c, &a, &na, &acap);
     if (rc == QC_OK) {
         shape->ncmd = shape->npt = 0;
         for (k = 0; k < na && rc == QC_OK; k++)
             rc = k == 0 ? qc_path_move_to(ctx, shape, a[0]) : qc_path_line_to(ctx, shape, a[k]);
         if (rc == QC_OK && na > 0)
             rc = qc_path_line_to(ctx, shape, a[0]);
-        if (rc == QC_OK && na < 3)
-            shape->ncmd = shape->npt = 0; /* nothing left inside */
         *done = rc == QC_OK;
     }
     qc__free(ctx, a, acap * sizeof *a);
-    qc__free(ctx, b, bcap * sizeof *b);
     return rc;
+}
+
+int qc__svg_clip_meet(qc_ctx *ctx, const qc__svg_clip *a, const qc__svg_clip *b,
+                      qc__svg_clip *out)
+{
+    out->n = 0;
+    out->sign = a->sign;
+    if (a->n == 0 || b->n == 0)
+        return QC_OK; /* nothing passes either */
+    QC__TRY(qc__reserve(ctx, (void **)&out->v, &out->cap, a->n, sizeof *out->v));
+    memcpy(out->v, a->v, a->n * sizeof *a->v);
+    out->n = a->n;
+    return cut_polygon(ctx, b, &out->v, &out->n, &out->cap);
 }

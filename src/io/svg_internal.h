@@ -277,9 +277,10 @@ QC__HIDDEN const qc__svg_id *qc__svg_index_find(const qc__svg_index *ix, const c
 /* ---- clip-path where exact (svg_clip.c) ---- */
 
 typedef struct qc__svg_clip {
-    qc_vec2 *v;      /* a convex polygon, mm, no closing repeat */
+    qc_vec2 *v;      /* a convex polygon, mm, no closing repeat; n = 0: empty */
     size_t n, cap;
     int sign;        /* +1 counter-clockwise, -1 clockwise */
+    size_t level, depth; /* the element that set it: clone level and depth */
 } qc__svg_clip;
 
 /* From a clipPath's shapes (nshapes of them, in mm): *ok when they are one
@@ -293,6 +294,9 @@ QC__HIDDEN int qc__svg_clip_where(const qc__svg_clip *c, const qc_path *shape);
 /* Cuts shape to c when it is one closed convex polygon (*done; an empty
  * result empties shape); otherwise leaves it and *done = 0. */
 QC__HIDDEN int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *done);
+/* out = a inside b (convex; n = 0 when they do not meet: an empty clip). */
+QC__HIDDEN int qc__svg_clip_meet(qc_ctx *ctx, const qc__svg_clip *a, const qc__svg_clip *b,
+                                 qc__svg_clip *out);
 
 /* ---- document walk (svg_shapes.c) ---- */
 

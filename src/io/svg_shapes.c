@@ -12,10 +12,10 @@
  * back. fill, fill-rule, stroke-dasharray and visibility are inherited. A
  * property comes from the style attribute, else the <style> sheets' rules
  * (highest specificity, then the last), else the attribute of its name.
- * A shape's clip-path is applied where exact (svg_clip.c: one convex
- * straight-edged clip; the shape inside, outside or itself convex); what
- * is not honoured (other clips, clip-path on groups, mask, text, images,
- * unresolved clones) is a warning naming the element.
+ * clip-path (on a shape, group or use; nested clips intersect) is applied
+ * where exact (svg_clip.c: one convex straight-edged clip; the shape inside,
+ * beyond or itself convex); what is not honoured (other clips, mask, text,
+ * images, unresolved clones) is a warning naming the element.
  */
 #include <math.h>
 #include <stdarg.h>
@@ -33,6 +33,7 @@ typedef struct frame {
     int fill_rgb;  /* fill is a colour, in fill (inherited) */
     uint32_t fill;
     int hidden;    /* visibility:hidden or collapse (inherited; children may undo it) */
+    size_t clip;   /* 1 + the walker's clip in force (its own or a group's), or 0 */
     int skip;      /* this element and its subtree draw nothing */
 } frame;
 
@@ -66,7 +67,9 @@ typedef struct walker {
     size_t collect_depth; /* the clone level of the clipPath being read */
     qc_path clip_shapes;
     size_t nclip_shapes;
-    qc__svg_clip clip;
+    qc__svg_clip clip; /* the clipPath just read */
+    qc__svg_clip *clips; /* the clips in force, a stack in document order */
+    size_t nclips, clips_hw, clips_cap; /* hw: entries ever used (their v kept) */
 } walker;
 
 static int name_is(const walker *k, const char *name)
@@ -453,11 +456,10 @@ static const char *attr_value(const walker *k, const char *name)
 
 static void warn_el(walker *k, const char *fmt, ...) QC__PRINTF(2, 3);
 
-/* Maps the shape to mm, clips it when clip is set (clip_name: the
- * clip-path value, for a warning) and hands it over. */
-static int emit(walker *k, const frame *f, int closed, const qc__svg_clip *clip,
-                const char *clip_name, size_t clip_len)
+/* Maps the shape to mm, clips it to the clip in force and hands it over. */
+static int emit(walker *k, const frame *f, int closed)
 {
+    const qc__svg_clip *clip = f->clip > 0 ? &k->clips[f->clip - 1] : NULL;
     qc__svg_elem el;
     size_t i;
 
@@ -489,8 +491,8 @@ static int emit(walker *k, const frame *f, int closed, const qc__svg_clip *clip,
         if (where == 0)
             QC__TRY(qc__svg_clip_cut(k->ctx, clip, &k->shape, &done));
         if (!done)
-            warn_el(k, "clip-path %.*s is not applied to a curved or concave shape: read "
-                       "unclipped", (int)(clip_len > 60 ? 60 : clip_len), clip_name);
+            warn_el(k, "its clip-path (or its group's) is not applied to a curved or concave "
+                       "shape: read unclipped");
         if (k->shape.ncmd == 0)
             return QC_OK;
     }
@@ -728,6 +730,7 @@ static int collect_clip(walker *k, const frame *f, const char *v, size_t vn, int
     memcpy(elem, k->elem, sizeof elem);
     base.skip = 0;
     base.hidden = 0;
+    base.clip = 0; /* the clip's own shapes are not clipped */
     k->clip_shapes.ncmd = k->clip_shapes.npt = 0;
     k->nclip_shapes = 0;
     k->collecting++;
@@ -742,6 +745,49 @@ static int collect_clip(walker *k, const frame *f, const char *v, size_t vn, int
     if (!*ok)
         warn_el(k, "clip-path %.*s is not applied (only a clip of one convex shape with straight "
                    "edges is): read unclipped", (int)(vn > 60 ? 60 : vn), v);
+    return QC_OK;
+}
+
+/* Drops the clips of elements that have closed: those set at a deeper
+ * clone level, or at this level at depth d or deeper. */
+static void pop_clips(walker *k, size_t d)
+{
+    while (k->nclips > 0) {
+        const qc__svg_clip *c = &k->clips[k->nclips - 1];
+
+        if (c->level < k->use_depth || (c->level == k->use_depth && c->depth < d))
+            break;
+        k->nclips--;
+    }
+}
+
+/* The element's clip-path v[0..vn): where it can be applied exactly, the
+ * clip in force becomes it (within the inherited one) for the element and
+ * its descendants. */
+static int push_clip(walker *k, frame *f, size_t d, const char *v, size_t vn)
+{
+    qc__svg_clip *e;
+    int ok;
+
+    QC__TRY(collect_clip(k, f, v, vn, &ok));
+    if (!ok)
+        return QC_OK;
+    if (k->nclips == k->clips_hw) {
+        QC__TRY(QC__RESERVE(k->ctx, k->clips, k->clips_cap, k->clips_hw + 1));
+        memset(&k->clips[k->clips_hw++], 0, sizeof *k->clips);
+    }
+    e = &k->clips[k->nclips];
+    if (f->clip > 0) {
+        QC__TRY(qc__svg_clip_meet(k->ctx, &k->clip, &k->clips[f->clip - 1], e));
+    } else {
+        QC__TRY(QC__RESERVE(k->ctx, e->v, e->cap, k->clip.n));
+        memcpy(e->v, k->clip.v, k->clip.n * sizeof *e->v);
+        e->n = k->clip.n;
+        e->sign = k->clip.sign;
+    }
+    e->level = k->use_depth;
+    e->depth = d;
+    f->clip = ++k->nclips;
     return QC_OK;
 }
 
@@ -781,8 +827,8 @@ static void warn_unapplied(walker *k, const frame *f)
         const char *v;
         size_t vn;
 
-        if (i == 0 && is_shape(k) && !k->collecting)
-            continue; /* a shape's clip is applied where exact, else warned about there */
+        if (i == 0 && !k->collecting)
+            continue; /* applied where exact, else warned about, by push_clip and emit */
         if (property(k, props[i], &v, &vn) && vn > 0 && !value_is(v, vn, "none") &&
             !value_is(v, vn, "inherit") && !f->hidden)
             warn_el(k, "%s %.*s is not applied: read unclipped", qc__css_prop_name[props[i]],
@@ -802,6 +848,7 @@ static int open_element(walker *k)
     int source = d == 1 && k->use_depth > 0; /* a clone's source element */
     int clip_source = source && k->collecting && k->use_depth == k->collect_depth;
 
+    pop_clips(k, d);
     memcpy(k->elem, k->x->local, ln);
     k->elem[ln] = '\0';
     k->w.line = qc__xml_line_at(k->x, k->x->at);
@@ -825,6 +872,7 @@ static int open_element(walker *k)
         f->dashed = 0;
         f->in_region = 0;
         f->hidden = 0;
+        f->clip = 0;
         f->fill_rgb = 1; /* SVG's initial fill is black */
         f->fill = 0;
         QC__TRY(qc__svg_root_viewport(&k->w, k->x, &f->m, &k->vp_w, &k->vp_h));
@@ -872,6 +920,10 @@ static int open_element(walker *k)
             f->in_region = 1;
     }
     warn_unapplied(k, f);
+    if (!k->collecting && !(is_shape(k) && f->hidden) &&
+        property(k, QC__CSS_CLIP_PATH, &v, &vn) && vn > 0 && !value_is(v, vn, "none") &&
+        !value_is(v, vn, "inherit"))
+        QC__TRY(push_clip(k, f, d, v, vn));
     if (name_is(k, "use")) {
         f->skip = 1; /* a use's children draw nothing; its source does */
         return use_element(k, f);
@@ -883,20 +935,9 @@ static int open_element(walker *k)
         k->shapes++;
     if (f->hidden)
         return QC_OK;
-    if (!k->collecting && property(k, QC__CSS_CLIP_PATH, &v, &vn) && vn > 0 &&
-        !value_is(v, vn, "none") && !value_is(v, vn, "inherit")) {
-        int ok;
-
-        QC__TRY(collect_clip(k, f, v, vn, &ok));
-        /* v points into the tokenizer's attributes or the style sheet, both
-         * still those of this element */
-        k->shape.ncmd = k->shape.npt = 0;
-        QC__TRY(build_shape(k, &closed));
-        return emit(k, f, closed, ok ? &k->clip : NULL, v, vn);
-    }
     k->shape.ncmd = k->shape.npt = 0;
     QC__TRY(build_shape(k, &closed));
-    return emit(k, f, closed, NULL, NULL, 0);
+    return emit(k, f, closed);
 }
 
 int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_warner *warn,
@@ -945,6 +986,9 @@ int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_warner *warn,
     qc__svg_index_free(&ix);
     qc_path_free(ctx, &k.clip_shapes);
     qc__svg_clip_free(ctx, &k.clip);
+    for (i = 0; i < k.clips_hw; i++)
+        qc__svg_clip_free(ctx, &k.clips[i]);
+    qc__free(ctx, k.clips, k.clips_cap * sizeof *k.clips);
     if (rc >= 0)
         qc__svg_warn_done(warn);
     return rc;
