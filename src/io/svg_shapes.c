@@ -836,15 +836,107 @@ static void warn_unapplied(walker *k, const frame *f)
     }
 }
 
+/* The root <svg>: in the SVG namespace; SVG's initial style; the viewport. */
+static int open_root(walker *k, frame *f)
+{
+    if (!k->x->svg && name_is(k, "svg"))
+        return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element <svg> is not in "
+                        "the SVG namespace (xmlns=\"http://www.w3.org/2000/svg\")", k->w.line);
+    if (!k->x->svg || !name_is(k, "svg"))
+        return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element is <%.*s>, not <svg>",
+                        k->w.line, (int)(k->x->name_len > 40 ? 40 : k->x->name_len), k->x->name);
+    f->skip = 0;
+    f->evenodd = 0;
+    f->unfilled = 0;
+    f->dashed = 0;
+    f->in_region = 0;
+    f->hidden = 0;
+    f->clip = 0;
+    f->fill_rgb = 1; /* SVG's initial fill is black */
+    f->fill = 0;
+    return qc__svg_root_viewport(&k->w, k->x, &f->m, &k->vp_w, &k->vp_h);
+}
+
+/* Whether the element (not the root) draws nothing, with its subtree:
+ * under a skipped parent, foreign, not a kind that draws, or a clip
+ * source that is not a usable clipPath. */
+static int not_drawn(const walker *k, const frame *parent, int source, int clip_source)
+{
+    if (parent->skip || !k->x->svg)
+        return 1;
+    if (clip_source)
+        return !name_is(k, "clipPath") || value_is_attr(k, "clipPathUnits", "objectBoundingBox");
+    return !(is_container(k) || is_shape(k) || name_is(k, "use") ||
+             (source && name_is(k, "symbol")));
+}
+
+/* A visible element quiltc does not read (text, image) is worth a warning. */
+static void warn_unread(walker *k, frame *f, const frame *parent, size_t ln)
+{
+    const char *v;
+    size_t vn;
+
+    if (parent->skip || !k->x->svg || unread_kind(k) == NULL)
+        return;
+    qc__css_match_element(&k->ix->css, k->elem, ln, attr_value(k, "id"), attr_value(k, "class"),
+                          &k->css);
+    inherit_style(k, f);
+    if (!(property(k, QC__CSS_DISPLAY, &v, &vn) && value_is(v, vn, "none")) && !f->hidden)
+        warn_el(k, "%s", unread_kind(k));
+}
+
+/* A drawn element's own coordinates: transform, or a nested viewport. */
+static int enter_element(walker *k, frame *f, int source)
+{
+    const qc__xml_attr *t = qc__xml_attr_get(k->x, "transform");
+    qc__svg_mat local;
+
+    if (name_is(k, "svg") || name_is(k, "symbol")) {
+        if (source && k->use_sized[k->use_depth - 1])
+            warn_el(k, "the <use>'s width and height are not applied: the %s keeps its own "
+                       "size", k->elem);
+        QC__TRY(qc__svg_nested_viewport(&k->w, k->x, k->vp_w, k->vp_h, &local));
+        f->m = qc__svg_mat_mul(f->m, local);
+    } else if (t != NULL) {
+        QC__TRY(transform(k, t->value, t->value_len, &local));
+        f->m = qc__svg_mat_mul(f->m, local);
+    }
+    return QC_OK;
+}
+
+/* Style, layers and clip of a drawn element; 1 in *gone when display:none. */
+static int style_element(walker *k, frame *f, size_t d, size_t ln, int *gone)
+{
+    const qc__xml_attr *id = qc__xml_attr_get(k->x, "id");
+    const char *v;
+    size_t vn;
+
+    qc__css_match_element(&k->ix->css, k->elem, ln, attr_value(k, "id"), attr_value(k, "class"),
+                          &k->css);
+    *gone = property(k, QC__CSS_DISPLAY, &v, &vn) && value_is(v, vn, "none");
+    if (*gone) {
+        f->skip = 1;
+        return QC_OK;
+    }
+    inherit_style(k, f);
+    if (id != NULL && (value_is(id->value, id->value_len, "region") ||
+                       value_is(id->value, id->value_len, "ditch")))
+        f->in_region = 1;
+    warn_unapplied(k, f);
+    if (!k->collecting && !(is_shape(k) && f->hidden) &&
+        property(k, QC__CSS_CLIP_PATH, &v, &vn) && vn > 0 && !value_is(v, vn, "none") &&
+        !value_is(v, vn, "inherit"))
+        QC__TRY(push_clip(k, f, d, v, vn));
+    return QC_OK;
+}
+
 static int open_element(walker *k)
 {
     size_t d = k->x->depth;
     frame *f = &k->st[d];
     const frame *parent = &k->st[d - 1];
-    const char *v;
-    size_t vn, ln = k->x->local_len < sizeof k->elem - 1 ? k->x->local_len : sizeof k->elem - 1;
-    qc__svg_mat local;
-    int closed, root = d == 1 && k->use_depth == 0;
+    size_t ln = k->x->local_len < sizeof k->elem - 1 ? k->x->local_len : sizeof k->elem - 1;
+    int closed, gone;
     int source = d == 1 && k->use_depth > 0; /* a clone's source element */
     int clip_source = source && k->collecting && k->use_depth == k->collect_depth;
 
@@ -859,71 +951,18 @@ static int open_element(walker *k)
         k->elements++;
     *f = *parent;
     k->css.n = 0;
-    if (root) {
-        if (!k->x->svg && name_is(k, "svg"))
-            return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element <svg> is not in "
-                            "the SVG namespace (xmlns=\"http://www.w3.org/2000/svg\")", k->w.line);
-        if (!k->x->svg || !name_is(k, "svg"))
-            return qc__fail(k->ctx, QC_EFORMAT, "svg line %lu: the root element is <%.*s>, not <svg>",
-                            k->w.line, (int)(k->x->name_len > 40 ? 40 : k->x->name_len), k->x->name);
-        f->skip = 0;
-        f->evenodd = 0;
-        f->unfilled = 0;
-        f->dashed = 0;
-        f->in_region = 0;
-        f->hidden = 0;
-        f->clip = 0;
-        f->fill_rgb = 1; /* SVG's initial fill is black */
-        f->fill = 0;
-        QC__TRY(qc__svg_root_viewport(&k->w, k->x, &f->m, &k->vp_w, &k->vp_h));
-    } else if (parent->skip || !k->x->svg ||
-               !(is_container(k) || is_shape(k) || name_is(k, "use") ||
-                 (source && !clip_source && name_is(k, "symbol")) || clip_source) ||
-               (clip_source && (!name_is(k, "clipPath") ||
-                                value_is_attr(k, "clipPathUnits", "objectBoundingBox")))) {
+    if (d == 1 && k->use_depth == 0) {
+        QC__TRY(open_root(k, f));
+    } else if (not_drawn(k, parent, source, clip_source)) {
         f->skip = 1;
-        if (!parent->skip && k->x->svg && unread_kind(k) != NULL) {
-            qc__css_match_element(&k->ix->css, k->elem, ln, attr_value(k, "id"),
-                                  attr_value(k, "class"), &k->css);
-            inherit_style(k, f);
-            if (!(property(k, QC__CSS_DISPLAY, &v, &vn) && value_is(v, vn, "none")) &&
-                !f->hidden)
-                warn_el(k, "%s", unread_kind(k));
-        }
+        warn_unread(k, f, parent, ln);
         return QC_OK;
     } else {
-        const qc__xml_attr *t = qc__xml_attr_get(k->x, "transform");
-
-        if (t != NULL && !name_is(k, "svg") && !name_is(k, "symbol")) {
-            QC__TRY(transform(k, t->value, t->value_len, &local));
-            f->m = qc__svg_mat_mul(f->m, local);
-        }
-        if (name_is(k, "svg") || name_is(k, "symbol")) {
-            if (source && k->use_sized[k->use_depth - 1])
-                warn_el(k, "the <use>'s width and height are not applied: the %s keeps its own "
-                           "size", k->elem);
-            QC__TRY(qc__svg_nested_viewport(&k->w, k->x, k->vp_w, k->vp_h, &local));
-            f->m = qc__svg_mat_mul(f->m, local);
-        }
+        QC__TRY(enter_element(k, f, source));
     }
-    qc__css_match_element(&k->ix->css, k->elem, ln, attr_value(k, "id"), attr_value(k, "class"),
-                          &k->css);
-    if (property(k, QC__CSS_DISPLAY, &v, &vn) && value_is(v, vn, "none")) {
-        f->skip = 1;
+    QC__TRY(style_element(k, f, d, ln, &gone));
+    if (gone)
         return QC_OK;
-    }
-    inherit_style(k, f);
-    {
-        const qc__xml_attr *id = qc__xml_attr_get(k->x, "id");
-        if (id != NULL && ((id->value_len == 6 && memcmp(id->value, "region", 6) == 0) ||
-                           (id->value_len == 5 && memcmp(id->value, "ditch", 5) == 0)))
-            f->in_region = 1;
-    }
-    warn_unapplied(k, f);
-    if (!k->collecting && !(is_shape(k) && f->hidden) &&
-        property(k, QC__CSS_CLIP_PATH, &v, &vn) && vn > 0 && !value_is(v, vn, "none") &&
-        !value_is(v, vn, "inherit"))
-        QC__TRY(push_clip(k, f, d, v, vn));
     if (name_is(k, "use")) {
         f->skip = 1; /* a use's children draw nothing; its source does */
         return use_element(k, f);
