@@ -22,6 +22,11 @@ void cli_put_escaped(FILE *f, const char *text);
 /* Prints "quiltc: <message>" as one line on stderr, control characters
  * escaped. */
 void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
+/* A reader's warning (qc_warn_fn; ud is the file's name): one line on
+ * stderr, "quiltc: FILE: warning: text". */
+void cli_warn_file(void *ud, const char *text);
+/* SVG reading options that print warnings about path, sized to max_bytes. */
+void cli_svg_opts(qc_svg_opts *opts, const char *path, size_t max_bytes);
 /* Prints the context's error ("quiltc: what: detail") and returns CLI_RUNTIME,
  * or CLI_USAGE for parameter range/choice errors. */
 int cli_fail(const qc_ctx *ctx, const char *what, int status);

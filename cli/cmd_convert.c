@@ -20,7 +20,20 @@ int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan)
     }
     if (cli_read_file(path, MAX_INPUT, &buf, &len) != 0)
         return CLI_RUNTIME;
-    rc = qc_io_read(ctx, fmt, buf, len, plan);
+    if (fmt == QC_FORMAT_SVG) {
+        /* as qc_io_read, with the reader's warnings printed */
+        qc_svg_opts opts;
+        qc_path sewn = {0};
+
+        cli_svg_opts(&opts, path, 0); /* the reader's own limit, as qc_io_read */
+        memset(plan, 0, sizeof *plan);
+        rc = qc_io_read_svg_path(ctx, buf, len, &opts, &sewn);
+        if (rc == QC_OK)
+            rc = qc_stitch_plan(ctx, &sewn, NULL, NULL, plan);
+        qc_path_free(ctx, &sewn);
+    } else {
+        rc = qc_io_read(ctx, fmt, buf, len, plan);
+    }
     free(buf);
     if (rc < 0) {
         cli_error("%s: %s", path, qc_errmsg(ctx));

@@ -18,6 +18,7 @@ static void patch_name(const qc_patch *p, char *buf, size_t size)
 static int load_top(qc_ctx *ctx, const char *top, const cli_pattern_opts *base, qc_patches *ps)
 {
     char *buf = NULL, an[160], bn[160];
+    qc_svg_opts opts;
     size_t len, a, b;
     qc_vec2 at;
     double u = base->mm_per_unit;
@@ -25,7 +26,8 @@ static int load_top(qc_ctx *ctx, const char *top, const cli_pattern_opts *base, 
 
     if (cli_read_file(top, MAX_TOP_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    if (qc_io_read_svg_patches(ctx, buf, len, NULL, ps) < 0)
+    cli_svg_opts(&opts, top, MAX_TOP_BYTES);
+    if (qc_io_read_svg_patches(ctx, buf, len, &opts, ps) < 0)
         rc = cli_fail(ctx, top, ctx->status);
     free(buf);
     if (rc == CLI_OK && qc_patches_overlap(ps, 0, &a, &b, &at)) {

@@ -25,8 +25,7 @@ static int read_svg(qc_ctx *ctx, const char *path, qc_region *out)
 
     if (cli_read_file(path, MAX_SVG_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    memset(&opts, 0, sizeof opts);
-    opts.max_bytes = MAX_SVG_BYTES;
+    cli_svg_opts(&opts, path, MAX_SVG_BYTES);
     rc = qc_io_read_svg_region(ctx, buf, len, &opts, out);
     free(buf);
     if (rc == QC_OK)
@@ -86,6 +85,7 @@ int cli_load_top_patches(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_r
 {
     qc_patches own;
     qc_patches *top = ps != NULL ? ps : &own;
+    qc_svg_opts opts;
     qc_bbox box;
     char *buf;
     size_t len, i, k;
@@ -97,7 +97,8 @@ int cli_load_top_patches(qc_ctx *ctx, const char *spec, double mm_per_unit, qc_r
     memset(out, 0, sizeof *out);
     if (cli_read_file(spec, MAX_SVG_BYTES, &buf, &len) != 0)
         return CLI_RUNTIME;
-    rc = qc_io_read_svg_patches(ctx, buf, len, NULL, top);
+    cli_svg_opts(&opts, spec, MAX_SVG_BYTES);
+    rc = qc_io_read_svg_patches(ctx, buf, len, &opts, top);
     free(buf);
     for (i = 0; rc == QC_OK && i < top->n; i++)
         for (k = 0; rc == QC_OK && k < top->p[i].region.nrings; k++) {

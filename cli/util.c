@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -33,6 +34,19 @@ void cli_error(const char *fmt, ...)
     fputc('\n', stderr);
     if (msg != small)
         free(msg);
+}
+
+void cli_warn_file(void *ud, const char *text)
+{
+    cli_error("%s: warning: %s", (const char *)ud, text);
+}
+
+void cli_svg_opts(qc_svg_opts *opts, const char *path, size_t max_bytes)
+{
+    memset(opts, 0, sizeof *opts);
+    opts->max_bytes = max_bytes;
+    opts->warn = cli_warn_file;
+    opts->warn_ud = (void *)(uintptr_t)path; /* only read back as const char * */
 }
 
 int cli_fail(const qc_ctx *ctx, const char *what, int status)

@@ -658,7 +658,7 @@ static void hidden_and_non_rendered_elements_should_be_skipped(void)
             "<rect display=\"none\" width=\"50\" height=\"50\"/>"
             "<g style=\"fill:red;display : none !important\"><rect width=\"50\" height=\"50\"/></g>"
             "<text x=\"1\" y=\"1\">hello <tspan>there</tspan> &amp; you</text>"
-            "<image width=\"50\" height=\"50\"/><use href=\"#s\"/>"
+            "<image width=\"50\" height=\"50\"/>"
             "<foreign:rect xmlns:foreign=\"urn:example\" width=\"50\" height=\"50\"/>"
             "<style><![CDATA[ rect { fill: <red> } ]]></style>"
             "<a href=\"x\"><switch><rect x=\"1\" y=\"1\" width=\"2\" height=\"3\"/></switch></a>");
@@ -929,6 +929,382 @@ static const char complex_svg[] =
     " <path d=\"M170 60 q10 -10 20 0 t20 0 c0 10 -10 20 -20 20 s-20 -10 -20 -20z\"/>\n"
     "</g>\n</svg>\n";
 
+/* ---- Inkscape files as drawn: clones, style sheets, hidden layers, warnings ---- */
+
+static struct {
+    char line[64][320];
+    size_t n;
+} warned;
+
+static void collect_warning(void *ud, const char *text)
+{
+    (void)ud;
+    TEST_ASSERT_NULL(strchr(text, '\n'));
+    if (warned.n < 64)
+        snprintf(warned.line[warned.n], sizeof warned.line[0], "%s", text);
+    warned.n++;
+}
+
+/* Reads svg as a region with warnings collected into warned. */
+static int region_warned(const char *svg, qc_region *r)
+{
+    qc_svg_opts o;
+
+    memset(&o, 0, sizeof o);
+    o.warn = collect_warning;
+    warned.n = 0;
+    return qc_io_read_svg_region(&ctx, svg, strlen(svg), &o, r);
+}
+
+/* Whether some warning contains every one of the (up to 3) texts. */
+static int warned_about(const char *a, const char *b, const char *c)
+{
+    size_t i;
+
+    for (i = 0; i < warned.n && i < 64; i++)
+        if (strstr(warned.line[i], a) != NULL && (b == NULL || strstr(warned.line[i], b) != NULL) &&
+            (c == NULL || strstr(warned.line[i], c) != NULL))
+            return 1;
+    return 0;
+}
+
+static void use_should_clone_with_x_y_and_transform(void)
+{
+    qc_region r;
+    /* the first clone comes before its source: the index finds it anyway */
+    const char *svg =
+        DOC("<use href=\"#r\" x=\"20\" y=\"30\"/>"
+            "<defs><rect id=\"r\" width=\"10\" height=\"10\"/></defs>"
+            "<use xlink:href=\"#r\" transform=\"translate(50,0) scale(2)\" x=\"1\"/>");
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(0, warned.n);
+    TEST_ASSERT_EQUAL_size_t(2, r.nrings);
+    TEST_ASSERT_EQUAL_size_t(8, r.nv);
+    expect_point(20, 70, r.v[0], 1e-12); /* (20, 30) user -> y_mm 100 - 30 */
+    expect_point(30, 60, r.v[2], 1e-12);
+    expect_point(52, 100, r.v[4], 1e-12); /* translate(50) scale(2) of x = 1 */
+    expect_point(72, 80, r.v[6], 1e-12);
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void nested_use_and_symbols_should_compose(void)
+{
+    qc_region r;
+    qc_path p;
+    const char *svg =
+        DOC("<defs><rect id=\"r\" width=\"10\" height=\"10\"/>"
+            "<g id=\"pair\" transform=\"translate(0,5)\"><use href=\"#r\"/><use href=\"#r\" x=\"20\"/></g>"
+            "<symbol id=\"s\" viewBox=\"0 0 1 1\" width=\"4\" height=\"4\"><circle cx=\".5\" cy=\".5\" r=\".5\"/></symbol></defs>"
+            "<use href=\"#pair\" y=\"50\"/><use href=\"#pair\" x=\"40\" y=\"50\"/>"
+            "<g style=\"fill:none\"><use href=\"#pair\" x=\"80\"/></g>" /* guides: left out */
+            "<use href=\"#s\" x=\"0\" y=\"80\"/>");
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(5, r.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 400, fabs(ring_area(&r, 0)) + fabs(ring_area(&r, 1)) +
+                                            fabs(ring_area(&r, 2)) + fabs(ring_area(&r, 3)));
+    TEST_ASSERT_DOUBLE_WITHIN(0.3, 3.14159265 * 4, fabs(ring_area(&r, 4))); /* r = 2 mm */
+    expect_point(10, 45, r.v[1], 1e-12); /* (10, 55): pair's y 5 + use's 50 */
+    TEST_ASSERT_TRUE(warned_about("fill:none", "left out", NULL));
+    qc_region_free(&ctx, &r);
+    /* the path reader sees the same clones */
+    TEST_ASSERT_EQUAL_INT(QC_OK, path_of(svg, &p));
+    TEST_ASSERT_EQUAL_size_t(7, qc_path_pieces(&p));
+    qc_path_free(&ctx, &p);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+/* Appends to buf a "billion laughs" of uses: levels of 10 clones each. */
+static char *use_bomb(int levels)
+{
+    size_t cap = 4096 + (size_t)levels * 512, n = 0;
+    char *b = (char *)malloc(cap);
+    int l, k;
+
+    if (b == NULL) {
+        TEST_FAIL_MESSAGE("out of memory");
+        return NULL;
+    }
+    /* the leaf draws nothing: only the clone budget can stop the walk */
+    n += (size_t)snprintf(b + n, cap - n, "<svg xmlns=\"http://www.w3.org/2000/svg\"><defs>"
+                                          "<g id=\"l0\"><rect width=\"1\" height=\"0\"/></g>");
+    for (l = 1; l <= levels; l++) {
+        n += (size_t)snprintf(b + n, cap - n, "<g id=\"l%d\">", l);
+        for (k = 0; k < 10; k++)
+            n += (size_t)snprintf(b + n, cap - n, "<use href=\"#l%d\"/>", l - 1);
+        n += (size_t)snprintf(b + n, cap - n, "</g>");
+    }
+    n += (size_t)snprintf(b + n, cap - n, "</defs><use href=\"#l%d\"/></svg>", levels);
+    TEST_ASSERT_TRUE(n < cap);
+    return b;
+}
+
+static void use_budget_should_refuse_hostile_files(void)
+{
+    char *bomb = use_bomb(9), *deep;
+    size_t n = 0, cap = 8192;
+    int l;
+
+    /* 10^9 rectangles: refused by the clone budget, not expanded */
+    expect_fail_str(bomb, QC_ELIMIT, "a budget against hostile files");
+    free(bomb);
+    bomb = use_bomb(3); /* 1110 clones are fine (and draw nothing) */
+    expect_fail(bomb, strlen(bomb), QC_EEMPTY, 0, "no closed shape");
+    free(bomb);
+    /* clones of clones 12 deep */
+    deep = (char *)malloc(cap);
+    if (deep == NULL) {
+        TEST_FAIL_MESSAGE("out of memory");
+        return;
+    }
+    n += (size_t)snprintf(deep + n, cap - n, "<svg xmlns=\"http://www.w3.org/2000/svg\"><defs>"
+                                             "<rect id=\"u0\" width=\"1\" height=\"1\"/>");
+    for (l = 1; l <= 12; l++)
+        n += (size_t)snprintf(deep + n, cap - n, "<use id=\"u%d\" href=\"#u%d\"/>", l, l - 1);
+    n += (size_t)snprintf(deep + n, cap - n, "</defs><use href=\"#u12\"/></svg>");
+    TEST_ASSERT_TRUE(n < cap);
+    expect_fail_str(deep, QC_ELIMIT, "nested more than 10 deep");
+    free(deep);
+    /* a use inside what it clones, and one cloning itself */
+    expect_fail_str(DOC("<g id=\"a\"><rect width=\"1\" height=\"1\"/><use href=\"#a\"/></g>"),
+                    QC_EFORMAT, "reference cycle");
+    expect_fail_str(DOC("<use id=\"u\" href=\"#u\"/>"), QC_EFORMAT, "svg line 1: <use> href \"#u\"");
+}
+
+static void style_sheets_and_classes_should_cascade(void)
+{
+    qc_region r;
+    const char *svg =
+        DOC("<style type=\"text/css\"><![CDATA[\n"
+            "/* Inkscape writes these */ .guide { fill : none } #gone{display:none}\n"
+            "rect { fill: red } .ghost, .also { visibility: hidden }\n"
+            "#keep { display: inline } .hole-in { fill-rule: evenodd }\n"
+            "]]></style>"
+            "<rect class=\"guide\" width=\"90\" height=\"90\"/>"         /* a guide */
+            "<rect id=\"gone\" x=\"1\" width=\"2\" height=\"2\"/>"        /* display:none */
+            "<rect class=\"x ghost\" x=\"5\" width=\"2\" height=\"2\"/>"  /* hidden */
+            "<g class=\"also\"><rect x=\"10\" width=\"2\" height=\"2\"/>"
+            "<rect visibility=\"visible\" x=\"20\" y=\"20\" width=\"3\" height=\"2\"/></g>"
+            "<rect id=\"keep\" class=\"guide\" style=\"fill:blue\" x=\"30\" y=\"30\" width=\"4\" "
+            "height=\"2\"/>"                                            /* style wins */
+            "<path class=\"hole-in\" d=\"M50 50h20v20h-20z M55 55h5v5h-5z\"/>");
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(4, r.nrings); /* 3x2, 4x2, the square and its hole */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 6, fabs(ring_area(&r, 0)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 8, fabs(ring_area(&r, 1)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 25, fabs(ring_area(&r, 3))); /* evenodd from the class */
+    TEST_ASSERT_TRUE(warned_about("1 closed shapes with fill:none", "the first: shape 1, line 5", NULL));
+    qc_region_free(&ctx, &r);
+    /* an attribute loses to a rule; unsupported selectors and at-rules are warned about */
+    TEST_ASSERT_EQUAL_INT_MESSAGE(
+        QC_OK,
+        region_warned(DOC("<style>g rect { fill: none } @media print { rect { fill: none } } "
+                          "rect[x] { display: none } .on { fill: black }</style>"
+                          "<rect class=\"on\" fill=\"none\" width=\"3\" height=\"3\"/>"),
+                      &r),
+        qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(1, r.nrings);
+    TEST_ASSERT_TRUE(warned_about("selector \"g rect\" is not read", NULL, NULL));
+    TEST_ASSERT_TRUE(warned_about("\"@media print\"", "at-rule", NULL));
+    TEST_ASSERT_TRUE(warned_about("selector \"rect[x]\"", NULL, NULL));
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void hidden_layers_should_be_left_out(void)
+{
+    qc_region r;
+    const char *svg =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" "
+        "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"100mm\" "
+        "height=\"100mm\" viewBox=\"0 0 100 100\">"
+        "<g inkscape:groupmode=\"layer\" inkscape:label=\"Sketch\" style=\"display:none\">"
+        "<rect width=\"50\" height=\"50\"/><text>draft</text></g>"
+        "<g inkscape:groupmode=\"layer\" inkscape:label=\"Block\" style=\"display:inline\">"
+        "<g style=\"visibility:hidden\"><rect width=\"40\" height=\"40\"/>"
+        "<g><rect style=\"visibility:visible\" x=\"60\" y=\"60\" width=\"10\" height=\"10\"/></g></g>"
+        "</g></svg>";
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(1, r.nrings);
+    expect_bbox(&r, 60, 30, 70, 40, 1e-12);
+    TEST_ASSERT_EQUAL_size_t(0, warned.n); /* the hidden text is not worth a word */
+    qc_region_free(&ctx, &r);
+}
+
+static void unhonoured_constructs_should_warn_naming_the_element(void)
+{
+    qc_region r;
+    qc_svg_opts o;
+    char many[8192];
+    size_t n = 0;
+    int i;
+    const char *svg =
+        DOC("<clipPath id=\"c\"><circle r=\"5\"/></clipPath>\n"
+            "<rect id=\"clipped\" clip-path=\"url(#c)\" width=\"10\" height=\"10\"/>\n"
+            "<g mask=\"url(#m)\"><rect x=\"20\" width=\"10\" height=\"10\"/></g>\n"
+            "<text x=\"1\" y=\"1\">label</text>\n"
+            "<image id=\"photo\" width=\"5\" height=\"5\"/>\n"
+            "<use href=\"#nowhere\"/>\n"
+            "<use id=\"ext\" href=\"other.svg#a\"/>\n"
+            "<symbol id=\"s\"><rect x=\"40\" width=\"1\" height=\"1\"/></symbol><use href=\"#s\" width=\"5\"/>");
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(3, r.nrings); /* read unclipped, and said so */
+    TEST_ASSERT_EQUAL_size_t(7, warned.n);
+    TEST_ASSERT_TRUE(warned_about("svg line 2, <rect id=\"clipped\">", "clip-path url(#c) is not applied (only a clip of one convex shape", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 3, <g> (element 5)", "mask url(#m) is not applied", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 4, <text> (element 7)", "text is not read", "Object to Path"));
+    TEST_ASSERT_TRUE(warned_about("svg line 5, <image id=\"photo\">", "images are not read", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 6, <use>", "\"#nowhere\" names no element", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 7, <use id=\"ext\">", "not in this file", NULL));
+    TEST_ASSERT_TRUE(warned_about("svg line 8, <symbol id=\"s\"> (cloned by the <use> of line 8)",
+                                  "width and height are not applied", NULL));
+    qc_region_free(&ctx, &r);
+    /* without a callback the same file reads the same, silently */
+    TEST_ASSERT_EQUAL_INT(QC_OK, region_of(svg, &r));
+    TEST_ASSERT_EQUAL_size_t(3, r.nrings);
+    qc_region_free(&ctx, &r);
+    /* a flood of warnings stops at 50, then says how many more */
+    n += (size_t)snprintf(many + n, sizeof many - n, "%s",
+                          "<svg xmlns=\"http://www.w3.org/2000/svg\"><rect width=\"1\" height=\"1\"/>");
+    for (i = 0; i < 60; i++)
+        n += (size_t)snprintf(many + n, sizeof many - n, "<text>%d</text>", i);
+    n += (size_t)snprintf(many + n, sizeof many - n, "</svg>");
+    memset(&o, 0, sizeof o);
+    o.warn = collect_warning;
+    warned.n = 0;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_io_read_svg_region(&ctx, many, n, &o, &r));
+    TEST_ASSERT_EQUAL_size_t(51, warned.n);
+    TEST_ASSERT_EQUAL_STRING("svg: 10 more warnings not shown", warned.line[50]);
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void clip_path_should_cut_where_exact(void)
+{
+    qc_region r;
+    qc_path p;
+    const char *svg =
+        DOC("<style>.clipped { clip-path: url('#c') }</style>\n"
+            "<defs><clipPath id=\"c\"><rect width=\"5\" height=\"5\"/></clipPath></defs>\n"
+            "<rect clip-path=\"url(#c)\" width=\"10\" height=\"10\"/>\n"          /* cut to 5x5 */
+            "<rect clip-path=\"url(#c)\" x=\"50\" width=\"10\" height=\"10\"/>\n" /* clipped away */
+            "<circle clip-path=\"url(#c)\" cx=\"2\" cy=\"2\" r=\"1\"/>\n"         /* wholly inside */
+            "<polygon class=\"clipped\" transform=\"translate(20,0)\" points=\"-5,1 3,1 3,3 -5,3\"/>\n"
+            "<path clip-path=\"url(#c)\" d=\"M1 1h8v8h-2v-6h-6z\"/>\n");          /* concave: said */
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(4, r.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 25, fabs(ring_area(&r, 0)));
+    expect_point(0, 100, r.v[0], 1e-12);
+    TEST_ASSERT_DOUBLE_WITHIN(0.1, 3.14159265, fabs(ring_area(&r, 1)));
+    /* the clip is in the polygon's own user space: x 20..23 of 15..23 */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 6, fabs(ring_area(&r, 2)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 28, fabs(ring_area(&r, 3))); /* unclipped */
+    TEST_ASSERT_EQUAL_size_t(1, warned.n);
+    TEST_ASSERT_TRUE(warned_about("svg line 7, <path> (element 10)",
+                                  "not applied to a curved or concave shape", NULL));
+    {
+        qc_region one = r;
+        qc_bbox b;
+
+        one.nrings = 1;
+        one.nv = r.ring_end[0];
+        b = qc_region_bbox(&one);
+        expect_point(0, 95, b.min, 1e-12);
+        expect_point(5, 100, b.max, 1e-12);
+    }
+    qc_region_free(&ctx, &r);
+    /* the path reader sees the same cut */
+    TEST_ASSERT_EQUAL_INT(QC_OK, path_of(svg, &p));
+    TEST_ASSERT_EQUAL_size_t(4, qc_path_pieces(&p));
+    qc_path_free(&ctx, &p);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void group_and_nested_clips_should_intersect(void)
+{
+    qc_region r;
+    const char *svg =
+        DOC("<clipPath id=\"c2\"><rect x=\"30\" width=\"5\" height=\"50\"/></clipPath>"
+            "<clipPath id=\"c3\" transform=\"translate(0,1)\"><polygon points=\"0,0 100,0 100,2 0,2\"/></clipPath>"
+            "<g clip-path=\"url(#c2)\"><rect x=\"28\" width=\"10\" height=\"10\"/>"   /* 5 x 10 */
+            "<rect clip-path=\"url(#c3)\" x=\"28\" y=\"20\" width=\"10\" height=\"10\"/>" /* away */
+            "<rect clip-path=\"url(#c3)\" x=\"28\" width=\"10\" height=\"10\"/></g>"  /* 5 x 2 */
+            "<rect x=\"28\" y=\"60\" width=\"10\" height=\"10\"/>"                    /* after the group: whole */
+            "<defs><rect id=\"sq\" width=\"10\" height=\"10\"/></defs>"
+            "<use href=\"#sq\" clip-path=\"url(#c2)\" x=\"31\" y=\"30\"/>");          /* 4 x 10 */
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_warned(svg, &r), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(0, warned.n);
+    TEST_ASSERT_EQUAL_size_t(4, r.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 50, fabs(ring_area(&r, 0)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 10, fabs(ring_area(&r, 1)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 100, fabs(ring_area(&r, 2)));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 40, fabs(ring_area(&r, 3)));
+    expect_point(30, 99, r.v[r.ring_end[0]], 1e-12); /* c3 moved down 1 */
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+static void preview_origin_should_undo_the_margin(void)
+{
+    qc_region r;
+    qc_path p;
+    const char *svg =
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"24mm\" height=\"14mm\" "
+        "viewBox=\"0 0 24 14\" data-quiltc-origin-mm=\"-3 2.5\">"
+        "<rect x=\"2\" y=\"2\" width=\"20\" height=\"10\"/><path fill=\"none\" d=\"M2 12L22 2\"/></svg>";
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_of(svg, &r), qc_errmsg(&ctx));
+    expect_bbox(&r, 5, -0.5, 25, 9.5, 1e-12); /* page (2, 2)..(22, 12) less the origin */
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_INT(QC_OK, path_of(svg, &p));
+    expect_point(5, -0.5, p.pt[p.npt - 2], 1e-12);
+    qc_path_free(&ctx, &p);
+    expect_fail_str("<svg xmlns=\"http://www.w3.org/2000/svg\" data-quiltc-origin-mm=\"1\">"
+                    "<rect width=\"1\" height=\"1\"/></svg>",
+                    QC_EFORMAT, "data-quiltc-origin-mm");
+}
+
+static void clones_and_sheets_should_survive_out_of_memory(void)
+{
+    const char *svg =
+        DOC("<style>.a{fill:red} #b{display:none} rect{fill-rule:evenodd}</style>"
+            "<defs><rect id=\"r\" class=\"a\" width=\"10\" height=\"10\"/>"
+            "<g id=\"g\"><use href=\"#r\"/><use href=\"#r\" x=\"20\"/></g></defs>"
+            "<use href=\"#g\"/><use href=\"#g\" y=\"40\"/><rect id=\"b\" width=\"5\" height=\"5\"/>"
+            "<clipPath id=\"c\"><rect x=\"60\" width=\"5\" height=\"5\"/></clipPath>"
+            "<rect clip-path=\"url(#c)\" x=\"59\" width=\"3\" height=\"3\"/>");
+    qc_region ref, r;
+    size_t k;
+    int rc;
+
+    TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, region_of(svg, &ref), qc_errmsg(&ctx));
+    TEST_ASSERT_EQUAL_size_t(5, ref.nrings);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 6, fabs(ring_area(&ref, 4)));
+    for (k = 1;; k++) {
+        ta.fail_at = k;
+        ta.allocs = 0;
+        rc = region_of(svg, &r);
+        ta.fail_at = 0;
+        if (rc == QC_OK)
+            break;
+        TEST_ASSERT_EQUAL_INT(QC_ENOMEM, rc);
+        TEST_ASSERT_NULL(r.v);
+        TEST_ASSERT_EQUAL_size_t(2, ta.live_blocks); /* ref's */
+    }
+    TEST_ASSERT_TRUE(k > 8);
+    TEST_ASSERT_EQUAL_size_t(ref.nv, r.nv);
+    TEST_ASSERT_EQUAL_MEMORY(ref.v, r.v, r.nv * sizeof *r.v);
+    qc_region_free(&ctx, &r);
+    qc_region_free(&ctx, &ref);
+}
+
 static void out_of_memory_should_fail_cleanly(void)
 {
     qc_region ref, r;
@@ -1093,6 +1469,8 @@ static void files_should_read_with_the_expected_status(void)
         {"tests/bad/svg/no_closed_shape.svg", QC_EEMPTY, QC_OK, "no closed shape"},
         {"tests/bad/svg/not_svg.svg", QC_EFORMAT, QC_EFORMAT, "root element is <html>"},
         {"tests/bad/svg/unclosed.svg", QC_EFORMAT, QC_EFORMAT, "</svg> does not close <g> of line 2"},
+        {"tests/bad/svg/use_bomb.svg", QC_ELIMIT, QC_ELIMIT, "svg line 6: more than 20000 <use> clones"},
+        {"tests/bad/svg/use_cycle.svg", QC_EFORMAT, QC_EFORMAT, "svg line 4: <use> href \"#b\" clones an element that contains the use"},
     };
     size_t k;
 
@@ -1204,5 +1582,15 @@ int main(void)
     RUN_TEST(readers_should_survive_mutated_input);
     RUN_TEST(files_should_read_with_the_expected_status);
     RUN_TEST(fixtures_should_have_their_geometry);
+    RUN_TEST(use_should_clone_with_x_y_and_transform);
+    RUN_TEST(nested_use_and_symbols_should_compose);
+    RUN_TEST(use_budget_should_refuse_hostile_files);
+    RUN_TEST(style_sheets_and_classes_should_cascade);
+    RUN_TEST(hidden_layers_should_be_left_out);
+    RUN_TEST(unhonoured_constructs_should_warn_naming_the_element);
+    RUN_TEST(clip_path_should_cut_where_exact);
+    RUN_TEST(group_and_nested_clips_should_intersect);
+    RUN_TEST(preview_origin_should_undo_the_margin);
+    RUN_TEST(clones_and_sheets_should_survive_out_of_memory);
     return UNITY_END();
 }

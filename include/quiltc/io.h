@@ -101,20 +101,38 @@ typedef void (*qc_finding_fn)(void *ud, size_t line, const char *kind, const cha
 int qc_io_check_pat(qc_ctx *ctx, const char *buf, size_t len, qc_finding_fn report,
                     void *ud, qc_plan *out, size_t *findings);
 
+/* A reader's warning: one line naming what in the file it could not honour
+ * and where (the element's id or number, and its line). */
+typedef void (*qc_warn_fn)(void *ud, const char *text);
+
 typedef struct qc_svg_opts {
     double tolerance;   /* curve flattening, mm; 0 = 0.05 */
     size_t max_bytes;   /* refuse larger input; 0 = 16 MiB */
+    qc_warn_fn warn;    /* receives warnings (at most 50, then a count); NULL drops them */
+    void *warn_ud;
 } qc_svg_opts;
 
 /*
  * Reads the closed shapes of an SVG document as a region in mm, y up
- * (y_mm = page height - y, so the page's bottom-left corner is (0, 0)),
- * holes from each shape's fill-rule (evenodd keeps every ring; nonzero keeps
- * a ring only where the fill changes across it). Shapes with fill:none are
- * strokes and left out. Supports
+ * (y_mm = page height - y, so the page's bottom-left corner is (0, 0);
+ * a quiltc preview's data-quiltc-origin-mm moves it back to the plan's own
+ * origin), holes from each shape's fill-rule (evenodd keeps every ring;
+ * nonzero keeps a ring only where the fill changes across it). Shapes with
+ * fill:none are strokes or guides and left out (with a warning) when the
+ * document has filled shapes; a document of outlines only (a quiltc
+ * preview, a line drawing) reads its closed outlines. Supports
  * path (all commands, arcs), rect (rounded), circle, ellipse, polygon,
  * polyline, transform and nested g, viewBox with width/height in mm, cm, in,
- * pt, px. Not normalized: call qc_region_normalize. Errors: QC_EFORMAT
+ * pt, px, <use> clones (href or xlink:href, x/y, nested; a budget of depth,
+ * count and bytes refuses hostile files with QC_ELIMIT), CSS from <style>
+ * (selectors .class, #id, type and *) and class attributes, display:none and
+ * visibility:hidden (inherited: Inkscape's hidden layers), clip-path on
+ * shapes, groups and uses where exact (a clip of one convex straight-edged
+ * shape, nested clips intersected; each shape inside, beyond, or convex
+ * itself). What it cannot honour (other clips, mask, text, images, other
+ * selectors, a missing or external clone source) goes to opts->warn, naming
+ * the element; a clone cycle is QC_EFORMAT.
+ * Not normalized: call qc_region_normalize. Errors: QC_EFORMAT
  * (malformed XML or path data; the message says where), QC_EEMPTY (no
  * closed shape), QC_ERANGE (NaN/inf/huge numbers), QC_ELIMIT (too large),
  * QC_EINVAL (bad options), QC_ENOMEM.

@@ -53,6 +53,10 @@ typedef struct region_sink {
     signed char *keep;
     size_t keep_cap;
     size_t open_shapes, stroke_only; /* left out, for the QC_EEMPTY message */
+    qc_region guides;                /* closed shapes with fill:none */
+    size_t nguides;
+    unsigned long guide_line;        /* the first one's line, element and id */
+    char guide_elem[48];
     qc__svg_rings_fn per_shape;      /* set: each shape's rings go to it, then out is emptied */
     void *per_shape_ud;
 } region_sink;
@@ -84,7 +88,7 @@ static int cur_push(region_sink *s, qc_vec2 p)
 {
     if (s->ncur > 0 && s->cur[s->ncur - 1].x == p.x && s->cur[s->ncur - 1].y == p.y)
         return QC_OK;
-    if (s->out->nv + s->rings.nv + s->ncur >= QC_MAX_POINTS)
+    if (s->out->nv + s->guides.nv + s->rings.nv + s->ncur >= QC_MAX_POINTS)
         return qc__fail(s->ctx, QC_ELIMIT, "svg: the region has more than %lu vertices",
                         (unsigned long)QC_MAX_POINTS);
     QC__TRY(QC__RESERVE(s->ctx, s->cur, s->cur_cap, s->ncur + 1));
@@ -267,9 +271,44 @@ static int subpath_closed(const qc_path *shape, size_t c, size_t k)
     return last.x == first.x && last.y == first.y;
 }
 
+/* Remembers the first guide for the warning: id="g1" or shape 3. */
+static void note_guide(region_sink *s, const qc__svg_elem *el)
+{
+    size_t n = 0, i;
+    const char *src = el->id;
+
+    if (s->nguides++ > 0)
+        return;
+    s->guide_line = el->line;
+    if (src != NULL) {
+        static const char pre[] = "id=\"";
+
+        memcpy(s->guide_elem, pre, sizeof pre - 1);
+        n = sizeof pre - 1;
+        for (i = 0; src[i] != '\0' && n < sizeof s->guide_elem - 2; i++)
+            s->guide_elem[n++] = src[i];
+        s->guide_elem[n++] = '"';
+    } else {
+        /* the shape's number, written by hand (no printf for one integer) */
+        char digits[24];
+        size_t v = el->index, nd = 0;
+
+        memcpy(s->guide_elem, "shape ", 6);
+        n = 6;
+        do {
+            digits[nd++] = (char)('0' + v % 10);
+            v /= 10;
+        } while (v > 0);
+        while (nd > 0)
+            s->guide_elem[n++] = digits[--nd];
+    }
+    s->guide_elem[n] = '\0';
+}
+
 static int region_shape(void *ud, const qc_path *shape, unsigned flags, const qc__svg_elem *el)
 {
     region_sink *s = (region_sink *)ud;
+    qc_region *to = s->out;
     size_t c, k = 0;
     qc_vec2 cur = {0, 0};
     int skip = 0;
@@ -304,7 +343,11 @@ static int region_shape(void *ud, const qc_path *shape, unsigned flags, const qc
     QC__TRY(ring_done(s));
     if (s->rings.n == 0)
         return QC_OK;
-    if (s->out->nrings + s->rings.n > QC_MAX_REGION_RINGS)
+    if (!(flags & QC__SVG_FILLED) && s->per_shape == NULL) {
+        to = &s->guides; /* kept aside: the region only if nothing is filled */
+        note_guide(s, el);
+    }
+    if (s->out->nrings + s->guides.nrings + s->rings.n > QC_MAX_REGION_RINGS)
         return qc__fail(s->ctx, QC_ELIMIT, "svg: the region has more than %u outlines and holes",
                         QC_MAX_REGION_RINGS);
     QC__TRY(QC__RESERVE(s->ctx, s->keep, s->keep_cap, s->rings.n));
@@ -314,7 +357,7 @@ static int region_shape(void *ud, const qc_path *shape, unsigned flags, const qc
         QC__TRY(nonzero_filter(s));
     for (k = 0; k < s->rings.n; k++)
         if (s->keep[k])
-            QC__TRY(qc_region_add_ring(s->ctx, s->out, s->rings.v + rs_start(&s->rings, k),
+            QC__TRY(qc_region_add_ring(s->ctx, to, s->rings.v + rs_start(&s->rings, k),
                                        s->rings.end[k] - rs_start(&s->rings, k)));
     if (s->per_shape != NULL && s->out->nrings > 0) {
         int rc = s->per_shape(s->per_shape_ud, s->out, el);
@@ -326,20 +369,50 @@ static int region_shape(void *ud, const qc_path *shape, unsigned flags, const qc
 }
 
 /* The region reader, or with per_shape set the shape-by-shape walk. */
+static void warner_of(const qc_svg_opts *opts, qc__svg_warner *w)
+{
+    w->fn = opts != NULL ? opts->warn : NULL;
+    w->ud = opts != NULL ? opts->warn_ud : NULL;
+    w->count = 0;
+}
+
+/* Shapes with fill:none are guides and strokes beside filled shapes, but
+ * the outlines of a drawing that fills nothing (a quiltc preview). */
+static void settle_guides(region_sink *s, qc__svg_warner *warn)
+{
+    if (s->guides.nrings == 0)
+        return;
+    if (s->out->nrings == 0) {
+        qc_region t = *s->out;
+
+        *s->out = s->guides;
+        s->guides = t;
+        return;
+    }
+    qc__svg_warn(warn, "svg: %lu closed shapes with fill:none (guides or strokes; the first: "
+                       "%s, line %lu) are left out: the filled shapes are the region",
+                 (unsigned long)s->nguides, s->guide_elem, s->guide_line);
+}
+
 static int read_region(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_opts *opts,
                        qc_region *out, qc__svg_rings_fn per_shape, void *ud)
 {
     region_sink s;
+    qc__svg_warner warn;
     int rc;
 
     memset(out, 0, sizeof *out);
     memset(&s, 0, sizeof s);
     QC__TRY(resolve_opts(ctx, buf, len, opts, &s.tol));
+    warner_of(opts, &warn);
     s.ctx = ctx;
     s.out = out;
     s.per_shape = per_shape;
     s.per_shape_ud = ud;
-    rc = qc__svg_walk(ctx, buf, len, region_shape, &s);
+    rc = qc__svg_walk(ctx, buf, len, &warn, region_shape, &s);
+    if (rc >= 0 && per_shape == NULL)
+        settle_guides(&s, &warn);
+    qc_region_free(ctx, &s.guides);
     if (rc >= 0 && per_shape == NULL && out->nrings == 0)
         rc = qc__fail(ctx, QC_EEMPTY,
                       "svg: no closed shape with an area (ignored: %lu polyline or line "
@@ -395,6 +468,7 @@ int qc_io_read_svg_path(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_o
                         qc_path *out)
 {
     path_sink s;
+    qc__svg_warner warn;
     double tol;
     int rc;
 
@@ -404,7 +478,8 @@ int qc_io_read_svg_path(qc_ctx *ctx, const char *buf, size_t len, const qc_svg_o
     QC__TRY(resolve_opts(ctx, buf, len, opts, &tol));
     s.ctx = ctx;
     s.out = out;
-    rc = qc__svg_walk(ctx, buf, len, path_shape, &s);
+    warner_of(opts, &warn);
+    rc = qc__svg_walk(ctx, buf, len, &warn, path_shape, &s);
     if (rc >= 0 && out->ncmd == 0)
         rc = qc__fail(ctx, QC_EEMPTY, "svg: no shape to read");
     if (rc < 0) {

@@ -62,6 +62,12 @@ typedef struct qc__xml {
 enum { QC__XML_DONE = 0, QC__XML_OPEN = 1, QC__XML_CLOSE = 2 };
 
 QC__HIDDEN void qc__xml_init(qc__xml *x, qc_ctx *ctx, const char *buf, size_t len);
+/* A tokenizer over the element starting at byte at of the same buffer
+ * (a <use>'s source): the root's namespace bindings ns[0..nns) stay in
+ * scope, line is the line of byte at; its walk ends when that element
+ * closes (depth back to 0). */
+QC__HIDDEN int qc__xml_init_at(qc__xml *x, qc_ctx *ctx, const char *buf, size_t len, size_t at,
+                               unsigned long line, const qc__xml_ns *ns, size_t nns);
 QC__HIDDEN void qc__xml_free(qc__xml *x);
 /* The next event: QC__XML_OPEN (x->name, x->attr valid; x->depth counts
  * it), QC__XML_CLOSE (x->name; a self-closing element gets OPEN then
@@ -153,7 +159,153 @@ QC__HIDDEN int qc__svg_root_viewport(const qc__svg_where *w, const qc__xml *x,
 QC__HIDDEN int qc__svg_nested_viewport(const qc__svg_where *w, const qc__xml *x,
                                        double vp_w, double vp_h, qc__svg_mat *m);
 
+/* ---- warnings (svg_index.c) ---- */
+
+#define QC__SVG_MAX_WARNINGS 50 /* then only counted */
+
+typedef struct qc__svg_warner {
+    qc_warn_fn fn; /* NULL: dropped */
+    void *ud;
+    size_t count;  /* warnings so far, shown or not */
+} qc__svg_warner;
+
+/* Formats one warning (one line) and hands it to w->fn, the first
+ * QC__SVG_MAX_WARNINGS times. */
+QC__HIDDEN void qc__svg_warn(qc__svg_warner *w, const char *fmt, ...) QC__PRINTF(2, 3);
+/* After the walk: "N more warnings not shown" when some were held back. */
+QC__HIDDEN void qc__svg_warn_done(qc__svg_warner *w);
+
+/* ---- CSS style sheets (svg_css.c) ---- */
+
+/* The properties the reader looks up. */
+enum {
+    QC__CSS_FILL,
+    QC__CSS_FILL_RULE,
+    QC__CSS_DASHARRAY,
+    QC__CSS_DISPLAY,
+    QC__CSS_VISIBILITY,
+    QC__CSS_CLIP_PATH,
+    QC__CSS_MASK,
+    QC__CSS_NPROPS
+};
+QC__HIDDEN extern const char *const qc__css_prop_name[QC__CSS_NPROPS];
+
+#define QC__CSS_MAX_RULES 10000 /* selectors kept; more are warned about */
+#define QC__CSS_MAX_MATCH 32    /* rules applying to one element (the last ones) */
+
+typedef struct qc__css_rule {
+    char kind;          /* '*', '.' (class), '#' (id), 't' (element type) */
+    const char *name;   /* in the sheet's text; "" for '*' */
+    size_t name_len;
+    unsigned spec;      /* specificity: id 100, class 10, type 1, * 0 */
+    size_t order;       /* position in the sheets: later wins a tie */
+    unsigned has;       /* bit p: the rule declares property p */
+    const char *val[QC__CSS_NPROPS];
+    size_t val_len[QC__CSS_NPROPS];
+} qc__css_rule;
+
+typedef struct qc__css_chunk {
+    size_t start, end;  /* in text */
+    unsigned long line; /* of its <style> */
+} qc__css_chunk;
+
+/* The document's <style> sheets: their text (comments and CDATA marks
+ * blanked), then rules sorted by selector for lookup. */
+typedef struct qc__css {
+    qc_ctx *ctx;
+    char *text;
+    size_t text_len, text_cap;
+    qc__css_chunk *chunk;
+    size_t nchunk, chunk_cap;
+    qc__css_rule *rule;
+    size_t n, cap;
+} qc__css;
+
+typedef struct qc__css_match {
+    const qc__css_rule *r[QC__CSS_MAX_MATCH];
+    size_t n;
+} qc__css_match;
+
+/* Appends a <style> element's text s[0..n) (line: the element's). */
+QC__HIDDEN int qc__css_add(qc__css *c, const char *s, size_t n, unsigned long line);
+/* Parses every sheet added into rules; what it cannot honour (at-rules,
+ * combinators, attribute selectors, pseudo-classes) is warned about. */
+QC__HIDDEN int qc__css_parse(qc__css *c, qc__svg_warner *warn);
+QC__HIDDEN void qc__css_free(qc__css *c);
+/* The rules that select an element of local name type, id and class list
+ * (either may be NULL). */
+QC__HIDDEN void qc__css_match_element(const qc__css *c, const char *type, size_t type_len,
+                                      const char *id, const char *cls, qc__css_match *m);
+/* The cascaded value of property p among the matched rules: 1 and *val. */
+QC__HIDDEN int qc__css_get(const qc__css_match *m, int p, const char **val, size_t *vlen);
+/* The last declaration of prop in a declaration list ("a:b; c:d"), value
+ * trimmed and without !important: 1 and *val. */
+QC__HIDDEN int qc__css_decl(const char *s, size_t n, const char *prop, const char **val,
+                            size_t *vlen);
+
+/* ---- the document index (svg_index.c) ---- */
+
+typedef struct qc__svg_id {
+    const char *id; /* in the document (ids with entity references are not indexed) */
+    size_t len;
+    size_t at;      /* byte offset of the element's '<' */
+    unsigned long line;
+} qc__svg_id;
+
+/* One pass over the document before the walk: every element's id (for
+ * <use>), the <style> sheets and the root's namespace bindings. */
+typedef struct qc__svg_index {
+    qc_ctx *ctx;
+    qc__svg_id *ids;
+    size_t nids, ids_cap;
+    size_t *slot;       /* open addressing: 1 + index into ids, 0 empty */
+    size_t nslot;       /* a power of two, or 0 */
+    qc__css css;
+    qc__xml_ns *ns;     /* the root element's bindings */
+    size_t nns;
+} qc__svg_index;
+
+/* Builds the index; a malformed document is indexed up to the fault (the
+ * walk reports it). Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__svg_index_build(qc__svg_index *ix, qc_ctx *ctx, const char *buf, size_t len,
+                                   qc__svg_warner *warn);
+QC__HIDDEN void qc__svg_index_free(qc__svg_index *ix);
+/* The element whose id is id[0..n), or NULL (the first of duplicates). */
+QC__HIDDEN const qc__svg_id *qc__svg_index_find(const qc__svg_index *ix, const char *id,
+                                                size_t n);
+
+/* ---- clip-path where exact (svg_clip.c) ---- */
+
+typedef struct qc__svg_clip {
+    qc_vec2 *v;      /* a convex polygon, mm, no closing repeat; n = 0: empty */
+    size_t n, cap;
+    int sign;        /* +1 counter-clockwise, -1 clockwise */
+    size_t level, depth; /* the element that set it: clone level and depth */
+} qc__svg_clip;
+
+/* From a clipPath's shapes (nshapes of them, in mm): *ok when they are one
+ * closed convex polygon of straight edges. Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__svg_clip_make(qc_ctx *ctx, const qc_path *shapes, size_t nshapes,
+                                 qc__svg_clip *c, int *ok);
+QC__HIDDEN void qc__svg_clip_free(qc_ctx *ctx, qc__svg_clip *c);
+/* 1 when every point of shape (control points too) is inside c or on its
+ * edge, -1 when all lie beyond one edge, 0 when it crosses. */
+QC__HIDDEN int qc__svg_clip_where(const qc__svg_clip *c, const qc_path *shape);
+/* Cuts shape to c when it is one closed convex polygon (*done; an empty
+ * result empties shape); otherwise leaves it and *done = 0. */
+QC__HIDDEN int qc__svg_clip_cut(qc_ctx *ctx, const qc__svg_clip *c, qc_path *shape, int *done);
+/* out = a inside b (convex; n = 0 when they do not meet: an empty clip). */
+QC__HIDDEN int qc__svg_clip_meet(qc_ctx *ctx, const qc__svg_clip *a, const qc__svg_clip *b,
+                                 qc__svg_clip *out);
+
 /* ---- document walk (svg_shapes.c) ---- */
+
+/* Budget of <use> clones against hostile files (a "billion laughs" of
+ * nested uses): beyond any of them the document is QC_ELIMIT. */
+#define QC__SVG_USE_MAX_DEPTH 10            /* clones of clones */
+#define QC__SVG_USE_MAX_COUNT 20000         /* clones made */
+#define QC__SVG_USE_MAX_ELEMENTS 500000     /* elements read again for clones */
+#define QC__SVG_USE_MAX_BYTES ((size_t)64 << 20) /* bytes read again for clones */
 
 /* How a shape is drawn: it has an inside (path, rect, circle, ellipse,
  * polygon; not polyline, line), its fill-rule is evenodd, its fill is not
@@ -197,7 +349,7 @@ QC__HIDDEN int qc__svg_color(const char *s, size_t n, uint32_t *rgb);
 /* Parses the document and hands every visible shape to fn. Errors: those
  * of the tokenizer and parsers, QC_ERANGE for a coordinate beyond 1e6 mm
  * after transforms, or fn's. */
-QC__HIDDEN int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len, qc__svg_shape_fn fn,
-                            void *ud);
+QC__HIDDEN int qc__svg_walk(qc_ctx *ctx, const char *buf, size_t len,
+                            qc__svg_warner *warn, qc__svg_shape_fn fn, void *ud);
 
 #endif

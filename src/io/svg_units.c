@@ -210,6 +210,42 @@ static int fit(qc__svg_where *w, const qc__xml *x, const double vb[4], double vw
     return QC_OK;
 }
 
+/* quiltc's previews record where the plan's (0, 0) lies on the page
+ * (data-quiltc-origin-mm="X Y", mm from the bottom-left corner, y up), so
+ * reading one back gives the plan's own coordinates, not the page's. */
+static int frame_origin(qc__svg_where *w, const qc__xml *x, qc__svg_mat *m)
+{
+    const qc__xml_attr *a = qc__xml_attr_get(x, "data-quiltc-origin-mm");
+    const char *s;
+    size_t n, i = 0, k, at;
+    double o[2];
+
+    if (a == NULL)
+        return QC_OK;
+    s = a->value;
+    n = a->value_len;
+    w->attr = "data-quiltc-origin-mm";
+    while (i < n && qc__is_space(s[i]))
+        i++;
+    for (k = 0; k < 2; k++) {
+        if (k > 0)
+            qc__svg_skip_sep(s, n, &i);
+        at = i;
+        if (!qc__scan_number(s, n, &i, &o[k]))
+            return qc__svg_syntax(w, s, n, at, "expected a number");
+        if (!(fabs(o[k]) <= QC__SVG_MAX_MM))
+            return qc__fail(w->ctx, QC_ERANGE, "svg line %lu, <svg data-quiltc-origin-mm>: "
+                            "%g mm is beyond %g mm", w->line, o[k], QC__SVG_MAX_MM);
+    }
+    while (i < n && qc__is_space(s[i]))
+        i++;
+    if (i < n)
+        return qc__svg_syntax(w, s, n, i, "expected the end after two numbers");
+    m->e -= o[0];
+    m->f -= o[1];
+    return QC_OK;
+}
+
 int qc__svg_root_viewport(const qc__svg_where *where, const qc__xml *x, qc__svg_mat *m,
                           double *vp_w, double *vp_h)
 {
@@ -249,7 +285,7 @@ int qc__svg_root_viewport(const qc__svg_where *where, const qc__xml *x, qc__svg_
     to_mm.e = 0;
     to_mm.f = height_mm;
     *m = qc__svg_mat_mul(to_mm, to_px);
-    return QC_OK;
+    return frame_origin(&w, x, m);
 }
 
 int qc__svg_nested_viewport(const qc__svg_where *where, const qc__xml *x, double vp_w,

@@ -21,6 +21,23 @@ void qc__xml_init(qc__xml *x, qc_ctx *ctx, const char *buf, size_t len)
     x->len = len;
 }
 
+int qc__xml_init_at(qc__xml *x, qc_ctx *ctx, const char *buf, size_t len, size_t at,
+                    unsigned long line, const qc__xml_ns *ns, size_t nns)
+{
+    qc__xml_init(x, ctx, buf, len);
+    x->started = 1; /* the document's bytes were checked by its own walk */
+    x->root_seen = 1;
+    x->pos = at;
+    x->line_pos = at;
+    x->line_no = line;
+    if (nns > 0) {
+        QC__TRY(QC__RESERVE(ctx, x->ns, x->ns_cap, nns));
+        memcpy(x->ns, ns, nns * sizeof *ns);
+        x->nns = nns;
+    }
+    return QC_OK;
+}
+
 void qc__xml_free(qc__xml *x)
 {
     qc__free(x->ctx, x->attr, x->attr_cap * sizeof *x->attr);

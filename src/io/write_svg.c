@@ -4,6 +4,8 @@
  * region's rings, <g id="path"> the sewn path and, dashed, the jumps, and
  * <g id="ditch"> (when given) a quilt's travel along the seams, in green.
  * Coordinates rounded to 0.001 mm (0.0001 in), trailing zeros dropped.
+ * The root's data-quiltc-origin-mm names the page position of the plan's
+ * (0, 0) (read_svg honours it, so a preview converts without the margin).
  */
 #include <math.h>
 
@@ -145,6 +147,12 @@ int qc__write_svg(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
     num(o, &f, w);
     qc__out_char(o, ' ');
     num(o, &f, h);
+    /* where the plan's (0, 0) lies on the page, in mm from its bottom-left
+     * corner, so reading this file back undoes the margin and the move */
+    qc__out_str(o, "\" data-quiltc-origin-mm=\"");
+    qc__out_fixed(o, qc__round((SVG_MARGIN_MM - b.min.x) * 1e6), 6, 1);
+    qc__out_char(o, ' ');
+    qc__out_fixed(o, qc__round((SVG_MARGIN_MM - b.min.y) * 1e6), 6, 1);
     qc__out_str(o, "\">\n");
     if (r != NULL && r->nrings > 0)
         region_layer(o, &f, r);

@@ -1,8 +1,15 @@
 /* Fuzz target: an SVG document as a block region (qc_io_read_svg_region,
  * then qc_region_normalize as the CLI does) and as a path
  * (qc_io_read_svg_path). Checks: no crash, leak or hang; statuses in range
- * with a one-line message; a normalized region is finite and within 1e6 mm. */
+ * with a one-line message; a normalized region is finite and within 1e6 mm;
+ * warnings are single non-empty lines. */
 #include "fuzz_common.h"
+
+static void check_warning(void *ud, const char *text)
+{
+    (void)ud;
+    FUZZ_CHECK(text[0] != '\0' && strchr(text, '\n') == NULL, "a warning not one line");
+}
 
 static void read_region(const char *buf, size_t size, double tol)
 {
@@ -15,6 +22,7 @@ static void read_region(const char *buf, size_t size, double tol)
     fuzz_ctx_init(&ctx, &a);
     memset(&opts, 0, sizeof opts);
     opts.tolerance = tol;
+    opts.warn = check_warning;
     rc = qc_io_read_svg_region(&ctx, buf, size, &opts, &r);
     fuzz_check_status(&ctx, rc, "svg region status");
     if (rc == QC_OK) {
