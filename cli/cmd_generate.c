@@ -213,32 +213,6 @@ static int place(qc_ctx *ctx, const gen_opts *g, const int *fmt, qc_region *regi
     return CLI_OK;
 }
 
-/* One line per file written: what, stitches, thread, time. */
-static void say_written(const gen_opts *g, const int *fmt, const qc_plan *plan,
-                        const cli_sewing *sew)
-{
-    qc_plan_estimate est;
-    int inches = g->pat.mm_per_unit == 25.4;
-    double thread, bobbins;
-    long secs;
-    size_t i;
-    char extra[48] = "";
-
-    qc_plan_estimate_get(plan, sew->spi, sew->speed_mm_s, &est);
-    thread = est.thread_mm / (inches ? 914.4 : 1000.0);
-    secs = (long)(est.seconds + 0.5);
-    bobbins = cli_bobbins(&est, sew);
-    if (bobbins > 0)
-        snprintf(extra, sizeof extra, ", %.1f bobbin%s", bobbins, bobbins == 1 ? "" : "s");
-    for (i = 0; i < g->nout; i++) {
-        fputs("wrote ", stderr);
-        cli_put_escaped(stderr, strcmp(g->out[i], "-") == 0 ? "stdout" : g->out[i]);
-        fprintf(stderr, " (%s): %lu stitches at %g spi, %.1f %s of thread%s, about %ld min %02ld s\n",
-                qc_format_name(fmt[i]), (unsigned long)est.stitches, sew->spi, thread,
-                inches ? "yd" : "m", extra, secs / 60, secs % 60);
-    }
-}
-
 int cmd_generate(int argc, char **argv)
 {
     gen_opts g;
@@ -289,7 +263,7 @@ int cmd_generate(int argc, char **argv)
     sew.speed_mm_s = g.mach.speed_mm_s;
     sew.bobbin_mm = g.mach.bobbin_mm;
     if (rc == CLI_OK && !g.quiet)
-        say_written(&g, fmt, &plan, &sew);
+        cli_say_written(g.out, fmt, g.nout, &plan, &sew, g.pat.mm_per_unit == 25.4);
     if (rc == CLI_OK && g.stats)
         cli_stats_print(stderr, &res, &plan, &timer, &sew);
     if (rc == CLI_OK && g.upload != NULL)

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "job.h"
+#include "stats_json.h"
 #include "quilt_plan.h"
 
 /* Moves n points from the block's frame (lower-left corner `lo`) to `at`,
@@ -186,8 +187,9 @@ static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
 }
 
 static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *formats,
-                   size_t nout)
+                   size_t nout, int quiet)
 {
+    cli_sewing sew = {12, 25.4, 0}; /* generate's defaults */
     block **order = calloc(j->n, sizeof *order);
     qc_path all = {0};
     qc_plan plan = {0};
@@ -216,6 +218,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
     io.svg_inches = strcmp(j->units, "in") == 0;
     if (rc == CLI_OK) /* all outputs or none */
         rc = cli_write_plans(ctx, outputs, formats, nout, &plan, &io);
+    if (rc == CLI_OK && !quiet)
+        cli_say_written(outputs, formats, nout, &plan, &sew, io.svg_inches);
     qc_plan_free(ctx, &plan);
     qc_path_free(ctx, &all);
     free(order);
@@ -250,17 +254,20 @@ int cmd_job(int argc, char **argv)
     cli_job_names names = {NULL, 0, 0};
     job j;
     qc_ctx ctx;
-    int rc = CLI_OK, a, allow_outside = 0;
+    int rc = CLI_OK, a, allow_outside = 0, quiet = 0;
 
     for (a = 1; a < argc && rc == CLI_OK; a++) {
         if (strcmp(argv[a], "--help") == 0) {
-            puts("usage: quiltc job QUILT.json [-o FILE]... [--allow-outside]\n"
-                 "Generates every block of a quilt and joins them into one file (see README).\n"
+            puts("usage: quiltc job QUILT.json [-o FILE]... [--allow-outside] [-q]\n"
+                 "Generates every block of a quilt and joins them into one file (see README),\n"
+                 "then prints a line per file written (-q, --quiet: none).\n"
                  "The job's files (regions, motifs, points, outputs) must stay inside its\n"
                  "folder; --allow-outside lets them be anywhere. -o is never limited.");
             return CLI_OK;
         } else if (strcmp(argv[a], "--allow-outside") == 0) {
             allow_outside = 1;
+        } else if (strcmp(argv[a], "-q") == 0 || strcmp(argv[a], "--quiet") == 0) {
+            quiet = 1;
         } else if (strcmp(argv[a], "-o") == 0 && a + 1 < argc) {
             if (nout == MAX_JOB_OUTPUTS) {
                 cli_error("job: at most %d outputs", MAX_JOB_OUTPUTS);
@@ -299,7 +306,7 @@ int cmd_job(int argc, char **argv)
         rc = output_formats(outputs, nout, formats);
     if (rc == CLI_OK) {
         qc_ctx_init(&ctx, NULL, NULL);
-        rc = run_job(&ctx, &j, outputs, formats, nout);
+        rc = run_job(&ctx, &j, outputs, formats, nout, quiet);
         for (i = 0; i < j.n; i++) {
             qc_path_free(&ctx, &j.blocks[i].path);
             qc_region_free(&ctx, &j.blocks[i].outline);

@@ -126,6 +126,22 @@ quiet() {
 }
 check one_line_per_written_file_and_q_silences quiet
 
+# job and convert say what they wrote as generate does; -q silences them.
+job_convert_say() {
+    echo '{"blocks": [{"region": "rect:2x2"}, {"region": "rect:2x2", "at": [2, 0]}]}' > j.json &&
+        "$QC" job j.json -o q.pat -o q.svg 2> j.txt && [ "$(wc -l < j.txt)" -eq 2 ] &&
+        s=$(sed -n 's/^wrote q.pat (pat): \([0-9]*\) stitches at 12 spi, [0-9.]* yd of thread, about [0-9]* min [0-9][0-9] s$/\1/p' j.txt) &&
+        grep -q "^wrote q.svg (svg): $s stitches" j.txt &&
+        c=$("$QC" check q.pat | sed -n 's/^stitches: \([0-9]*\) at 12 spi.*/\1/p') &&
+        [ -n "$s" ] && [ $((c - s)) -le 1 ] && [ $((s - c)) -le 1 ] &&
+        "$QC" convert q.pat q.dxf 2> c.txt && [ "$(wc -l < c.txt)" -eq 1 ] &&
+        grep -q '^wrote q.dxf (dxf): [0-9]* stitches at 12 spi, [0-9.]* yd of thread' c.txt &&
+        "$QC" job -q j.json -o r.pat 2> qj.txt && [ ! -s qj.txt ] && cmp q.pat r.pat &&
+        "$QC" convert q.pat r.dxf --quiet 2> qc.txt && [ ! -s qc.txt ] && cmp q.dxf r.dxf ||
+        { cat j.txt c.txt qj.txt qc.txt; echo "job $s check $c"; return 1; }
+}
+check job_and_convert_say_what_they_wrote job_convert_say
+
 # G-code lifts the pen for each jump by default; commands of one's own; ''.
 pen() {
     "$QC" generate -q --family pebbling --region rect:3x2 --tie 0 -o p.gcode &&
