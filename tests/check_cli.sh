@@ -144,6 +144,20 @@ help_and_version() {
 }
 check help_version_and_lists help_and_version
 
+# list params --units speaks the units generate's range errors speak.
+params_in_units() {
+    "$QC" list params --units inch > in.txt && "$QC" list params --units mm > mm.txt &&
+        "$QC" list params > raw.txt && cmp mm.txt raw.txt &&
+        grep -q '^spacing  *in  *\[0.01969, 39.37\] default 0.5  ' in.txt &&
+        grep -q '^margin  *in  *\[0, 39.37\] default 0.3 d ' in.txt &&
+        grep -q '^angle  *deg  *\[-90, 90\] default 45 ' in.txt &&
+        grep -q '^spacing  *mm  *\[0.5, 1000\] default 12.7 ' mm.txt &&
+        "$QC" list params --units cm | grep -q '^spacing  *cm  *\[0.05, 100\] default 1.27 ' &&
+        ! "$QC" generate --spacing 50 2> e.txt && grep -q '\[0.01969, 39.37\] in' e.txt &&
+        expect_fail 2 "unknown unit 'ft'" "$QC" list params --units ft || { cat in.txt; return 1; }
+}
+check list_params_speaks_the_units params_in_units
+
 # A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
 job_four_blocks() {
     "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat &&
