@@ -127,6 +127,10 @@ void cli_pattern_init(cli_pattern_opts *o);
 int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg);
 /* Converts the raw values into params (lengths in units unless suffixed). CLI_* status. */
 int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o);
+/* After cli_pattern_finish: one warning line on stderr naming the options
+ * given that the resolved family does not read ("--motif is ignored by
+ * family vine"); nothing when every one counts. */
+void cli_pattern_warn_ignored(const cli_pattern_opts *o);
 /* Prints the region/units/parameter part of a --help text. */
 void cli_pattern_help(FILE *f, unsigned families);
 /* Loads region (normalized, at the origin) and the given points, if any. CLI_* status. */

@@ -239,6 +239,8 @@ int cmd_generate(int argc, char **argv)
     }
     rc = cli_pattern_finish(&ctx, &g.pat);
     if (rc == CLI_OK)
+        cli_pattern_warn_ignored(&g.pat);
+    if (rc == CLI_OK)
         rc = cli_machine_finish(&g.mach, g.pat.mm_per_unit);
     if (rc == CLI_OK)
         rc = output_formats(&g, fmt);

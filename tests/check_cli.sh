@@ -158,6 +158,22 @@ params_in_units() {
 }
 check list_params_speaks_the_units params_in_units
 
+# Options the family does not read: one warning line, exit 0, the same pattern.
+ignored_options() {
+    "$QC" generate -q --family vine --seed 4 -o a.pat 2> a.txt && [ ! -s a.txt ] &&
+        "$QC" generate -q --family vine --seed 4 --motif leaf -o b.pat 2> b.txt && cmp a.pat b.pat &&
+        [ "$(cat b.txt)" = "quiltc: warning: --motif is ignored by family vine" ] &&
+        "$QC" generate -q --family vine --motif leaf --angle 3 --repeat 2x2 -o c.pat 2> c.txt &&
+        [ "$(cat c.txt)" = "quiltc: warning: --motif, --angle and --repeat are ignored by family vine" ] &&
+        "$QC" generate -q --family branching --motif leaf --angle 30 --repeat 2x1 --tile edge-to-edge \
+            --region rect:3x3 -o d.pat 2> d.txt && [ ! -s d.txt ] &&
+        echo '{"blocks": [{"region": "rect:2x2", "family": "echo", "motif": "leaf", "params": {"angle": 3}}]}' > j.json &&
+        "$QC" job -q j.json -o j.pat 2> j.txt &&
+        [ "$(cat j.txt)" = "quiltc: warning: job: blocks[0]: motif and params.angle are ignored by family echo" ] ||
+        { cat a.txt b.txt c.txt d.txt j.txt; return 1; }
+}
+check ignored_options_are_one_warning_line ignored_options
+
 # A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
 job_four_blocks() {
     "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat &&
