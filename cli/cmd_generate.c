@@ -163,10 +163,8 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
     } else if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
     cli_timer_mark(timer, "plan");
-    memset(&sp, 0, sizeof sp);
+    cli_machine_stitch_params(&g->mach, &sp);
     sp.tie_stitches = g->tie;
-    sp.tie_length = g->mach.tie_length_mm;
-    sp.clip = g->mach.clip;
     if (qc_stitch_plan(ctx, &res->path, region, &sp, plan) < 0)
         return cli_fail(ctx, "stitch plan", ctx->status);
     return CLI_OK;
