@@ -165,11 +165,11 @@ static void sewing_order(block **order, size_t n)
 }
 
 /* One path, a piece per block; moved so nothing sewn is negative (PAT needs
- * that). The box is the flattened path's: control points of curves lie
- * outside the curve and would move the whole quilt. */
-static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
+ * that), by *moved. The box is the flattened path's: control points of
+ * curves lie outside the curve and would move the whole quilt. */
+static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out, qc_vec2 *moved)
 {
-    double minx, miny, len;
+    double len;
     qc_bbox box;
     size_t i;
 
@@ -177,11 +177,31 @@ static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
         if (qc_path_append(ctx, out, &order[i]->path, 0) < 0)
             return cli_fail(ctx, "job", ctx->status);
     qc_curve_measure(out, 0.01, &len, &box);
-    minx = fmin(0, box.min.x);
-    miny = fmin(0, box.min.y);
+    moved->x = -fmin(0, box.min.x);
+    moved->y = -fmin(0, box.min.y);
     for (i = 0; i < out->npt; i++) {
-        out->pt[i].x -= minx;
-        out->pt[i].y -= miny;
+        out->pt[i].x += moved->x;
+        out->pt[i].y += moved->y;
+    }
+    return CLI_OK;
+}
+
+/* Every block's outline (a top's patches), moved with the path: drawn in
+ * the SVG and on the DXF's layer OUTLINES. */
+static int job_outlines(qc_ctx *ctx, const job *j, qc_vec2 moved, qc_region *out)
+{
+    size_t i, k, at;
+
+    for (i = 0; i < j->n; i++) {
+        const qc_region *r = &j->blocks[i].outline;
+        size_t first = out->nv;
+        for (k = 0, at = 0; k < r->nrings; at = r->ring_end[k++])
+            if (qc_region_add_ring(ctx, out, r->v + at, r->ring_end[k] - at) < 0)
+                return cli_fail(ctx, "job", ctx->status);
+        for (k = first; k < out->nv; k++) {
+            out->v[k].x += moved.x;
+            out->v[k].y += moved.y;
+        }
     }
     return CLI_OK;
 }
@@ -192,6 +212,8 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
     cli_sewing sew = {12, 25.4, 0}; /* generate's defaults */
     block **order = calloc(j->n, sizeof *order);
     qc_path all = {0};
+    qc_region outlines = {0};
+    qc_vec2 moved = {0, 0};
     qc_plan plan = {0};
     qc_stitch_params sp;
     qc_io_opts io;
@@ -208,19 +230,23 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
         rc = check_overlaps(j);
     if (rc == CLI_OK) {
         sewing_order(order, j->n);
-        rc = join_blocks(ctx, order, j->n, &all);
+        rc = join_blocks(ctx, order, j->n, &all, &moved);
     }
+    if (rc == CLI_OK)
+        rc = job_outlines(ctx, j, moved, &outlines);
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = j->tie;
     if (rc == CLI_OK && qc_stitch_plan(ctx, &all, NULL, &sp, &plan) < 0)
         rc = cli_fail(ctx, "job", ctx->status);
     memset(&io, 0, sizeof io);
     io.svg_inches = strcmp(j->units, "in") == 0;
+    io.region = &outlines;
     if (rc == CLI_OK) /* all outputs or none */
         rc = cli_write_plans(ctx, outputs, formats, nout, &plan, &io);
     if (rc == CLI_OK && !quiet)
         cli_say_written(outputs, formats, nout, &plan, &sew, io.svg_inches);
     qc_plan_free(ctx, &plan);
+    qc_region_free(ctx, &outlines);
     qc_path_free(ctx, &all);
     free(order);
     return rc;

@@ -174,6 +174,32 @@ ignored_options() {
 }
 check ignored_options_are_one_warning_line ignored_options
 
+# Block outlines on their own layer: DXF layer OUTLINES (read by ezdxf; not
+# sewn when quiltc reads the file back) and the SVG's region layer, for
+# generate and job.
+outline_layers() {
+    "$QC" generate -q --region heart:6 --seed 2 -o h.dxf -o h.pat &&
+        "$QC" job -q "$ROOT/examples/quilt.json" -o q.dxf -o q.svg -o q.pat &&
+        python3 - <<'PY' || return 1
+import ezdxf
+for name, outlines in (("h.dxf", 1), ("q.dxf", 4)):
+    msp = ezdxf.readfile(name).modelspace()
+    lines = [e for e in msp if e.dxftype() == "POLYLINE"]
+    out = [e for e in lines if e.dxf.layer == "OUTLINES"]
+    assert len(out) == outlines and all(e.is_closed for e in out), (name, len(out))
+    assert all(len(list(e.points())) >= 4 for e in out), name
+    assert any(e.dxf.layer == "0" for e in lines), name
+# the quilt's outlines are the four blocks of examples/quilt.json: 16 in x 16 in
+pts = [p for e in ezdxf.readfile("q.dxf").modelspace() if e.dxf.layer == "OUTLINES" for p in e.points()]
+xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+assert abs(min(xs)) < 0.01 and abs(max(xs) - 406.4) < 0.01 and abs(max(ys) - 406.4) < 0.01, (min(xs), max(xs), max(ys))
+PY
+    grep -q '<g id="region"' q.svg && "$QC" convert -q h.dxf h2.pat && "$QC" convert -q q.dxf q2.pat &&
+        [ "$("$QC" check h2.pat | head -n 1)" = "$("$QC" check h.pat | head -n 1)" ] &&
+        [ "$("$QC" check q2.pat | head -n 1)" = "$("$QC" check q.pat | head -n 1)" ]
+}
+check outlines_on_their_own_layer outline_layers
+
 # A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
 job_four_blocks() {
     "$QC" job "$ROOT/examples/quilt.json" -o quilt.pat &&
