@@ -136,6 +136,16 @@ void cli_pattern_init(cli_pattern_opts *o);
 int cli_pattern_take(cli_pattern_opts *o, int opt, const char *arg);
 /* Converts the raw values into params (lengths in units unless suffixed). CLI_* status. */
 int cli_pattern_finish(qc_ctx *ctx, cli_pattern_opts *o);
+/* After cli_pattern_finish: one warning line on stderr naming the options
+ * given that the resolved family does not read ("--motif is ignored by
+ * family vine"); nothing when every one counts. */
+void cli_pattern_warn_ignored(const cli_pattern_opts *o);
+/* --quilt-width: sets repeat-cols to the most tiles (one the width of
+ * region's box; offset rows reach further) that fit across width (a length
+ * in the options' units). CLI_OK, or CLI_USAGE after one line (not tiled,
+ * columns also given, none or over 100 fit). */
+int cli_fit_columns(qc_ctx *ctx, cli_pattern_opts *o, const char *width,
+                    const qc_region *region);
 /* Prints the region/units/parameter part of a --help text. */
 void cli_pattern_help(FILE *f, unsigned families);
 /* Loads region (normalized, at the origin) and the given points, if any. CLI_* status. */

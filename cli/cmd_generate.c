@@ -15,7 +15,8 @@ typedef struct gen_opts {
     size_t nout;
     const char *format;
     const char *upload;
-    int stats, quiet, tie, concorde;
+    const char *quilt_width;
+    int stats, quiet, tie, tie_given, concorde;
     double feed;
 } gen_opts;
 
@@ -30,7 +31,9 @@ static void usage(FILE *f, const char *family)
           "                           default pattern.pat and pattern.svg); - is stdout\n"
           "  --format NAME            pat, qli, dxf, hpgl, qcc, iqp, bqm, gcode, svg\n"
           "  --motif LIST             motifs: built-in names and .svg files, comma-separated\n"
-          "  --tie N                  tie-off stitches at each start and end (default 0)\n"
+          "  --tie N                  tie-off stitches at each start and end (default 0;\n"
+          "                           pantograph rows: give 3 to tie off every row)\n"
+          "  --quilt-width LEN        pantographs: as many columns as fit across LEN\n"
           "  --feed MM_PER_MIN        G-code feed rate (default 1500)\n"
           "  --stats                  one JSON object of figures on stderr\n"
           "  --upload DEVICE          send the first output to a machine (VID:PID or BUS-PORT)\n"
@@ -59,7 +62,8 @@ static int parse(int argc, char **argv, gen_opts *g)
         {"motif", required_argument, NULL, 'm'},  {"tie", required_argument, NULL, 't'},
         {"stats", no_argument, NULL, 's'},        {"upload", required_argument, NULL, 'u'},
         {"quiet", no_argument, NULL, 'q'},        {"help", no_argument, NULL, 'h'},
-        {"feed", required_argument, NULL, 'F'},   CLI_MACHINE_OPTIONS,
+        {"feed", required_argument, NULL, 'F'},   {"quilt-width", required_argument, NULL, 'W'},
+        CLI_MACHINE_OPTIONS,
     };
     struct option *opts = cli_pattern_options(fixed, sizeof fixed / sizeof fixed[0]);
     int c, rc = CLI_OK, help = 0;
@@ -85,6 +89,7 @@ static int parse(int argc, char **argv, gen_opts *g)
         case 'm': g->pat.motifs = optarg; break;
         case 's': g->stats = 1; break;
         case 'u': g->upload = optarg; break;
+        case 'W': g->quilt_width = optarg; break;
         case 'q': g->quiet = 1; break;
         case 't':
             if (cli_parse_u64(optarg, &tie) != 0 || tie > 100) {
@@ -92,6 +97,7 @@ static int parse(int argc, char **argv, gen_opts *g)
                 rc = CLI_USAGE;
             }
             g->tie = (int)tie;
+            g->tie_given = 1;
             break;
         case 'F':
             if (cli_parse_double(optarg, &g->feed) != 0 || !(g->feed > 0) || g->feed > 1e5) {
@@ -163,10 +169,8 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
     } else if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
     cli_timer_mark(timer, "plan");
-    memset(&sp, 0, sizeof sp);
+    cli_machine_stitch_params(&g->mach, &sp);
     sp.tie_stitches = g->tie;
-    sp.tie_length = g->mach.tie_length_mm;
-    sp.clip = g->mach.clip;
     if (qc_stitch_plan(ctx, &res->path, region, &sp, plan) < 0)
         return cli_fail(ctx, "stitch plan", ctx->status);
     return CLI_OK;
@@ -213,32 +217,6 @@ static int place(qc_ctx *ctx, const gen_opts *g, const int *fmt, qc_region *regi
     return CLI_OK;
 }
 
-/* One line per file written: what, stitches, thread, time. */
-static void say_written(const gen_opts *g, const int *fmt, const qc_plan *plan,
-                        const cli_sewing *sew)
-{
-    qc_plan_estimate est;
-    int inches = g->pat.mm_per_unit == 25.4;
-    double thread, bobbins;
-    long secs;
-    size_t i;
-    char extra[48] = "";
-
-    qc_plan_estimate_get(plan, sew->spi, sew->speed_mm_s, &est);
-    thread = est.thread_mm / (inches ? 914.4 : 1000.0);
-    secs = (long)(est.seconds + 0.5);
-    bobbins = cli_bobbins(&est, sew);
-    if (bobbins > 0)
-        snprintf(extra, sizeof extra, ", %.1f bobbin%s", bobbins, bobbins == 1 ? "" : "s");
-    for (i = 0; i < g->nout; i++) {
-        fputs("wrote ", stderr);
-        cli_put_escaped(stderr, strcmp(g->out[i], "-") == 0 ? "stdout" : g->out[i]);
-        fprintf(stderr, " (%s): %lu stitches at %g spi, %.1f %s of thread%s, about %ld min %02ld s\n",
-                qc_format_name(fmt[i]), (unsigned long)est.stitches, sew->spi, thread,
-                inches ? "yd" : "m", extra, secs / 60, secs % 60);
-    }
-}
-
 int cmd_generate(int argc, char **argv)
 {
     gen_opts g;
@@ -265,17 +243,26 @@ int cmd_generate(int argc, char **argv)
     }
     rc = cli_pattern_finish(&ctx, &g.pat);
     if (rc == CLI_OK)
+        cli_pattern_warn_ignored(&g.pat);
+    if (rc == CLI_OK)
         rc = cli_machine_finish(&g.mach, g.pat.mm_per_unit);
     if (rc == CLI_OK)
         rc = output_formats(&g, fmt);
     cli_timer_start(&timer, &ctx);
     if (rc == CLI_OK)
         rc = cli_pattern_load(&ctx, &g.pat, &region, &given);
+    if (rc == CLI_OK && g.quilt_width != NULL)
+        rc = cli_fit_columns(&ctx, &g.pat, g.quilt_width, &region);
     if (rc == CLI_OK && g.pat.motifs != NULL)
         rc = cli_load_motifs(&ctx, g.pat.motifs, &motifs);
     if (rc == CLI_OK)
         rc = make_plan(&ctx, &g, &region, &given, motifs.n ? &motifs : NULL, &res, &plan,
                        &timer);
+    if (rc == CLI_OK && !g.tie_given && res.stats.pieces > 1) {
+        int rows = res.params.tile == QC_TILE_EDGE_TO_EDGE || res.params.tile == QC_TILE_ALL_OVER;
+        cli_error("warning: the pattern's %lu %s are joined by jumps without tie-offs; --tie 3 "
+                  "ties off each", (unsigned long)res.stats.pieces, rows ? "rows" : "pieces");
+    }
     cli_timer_mark(&timer, "write");
     if (rc == CLI_OK && g.mach.placed)
         rc = place(&ctx, &g, fmt, &region, &plan);
@@ -289,7 +276,7 @@ int cmd_generate(int argc, char **argv)
     sew.speed_mm_s = g.mach.speed_mm_s;
     sew.bobbin_mm = g.mach.bobbin_mm;
     if (rc == CLI_OK && !g.quiet)
-        say_written(&g, fmt, &plan, &sew);
+        cli_say_written(g.out, fmt, g.nout, &plan, &sew, g.pat.mm_per_unit == 25.4);
     if (rc == CLI_OK && g.stats)
         cli_stats_print(stderr, &res, &plan, &timer, &sew);
     if (rc == CLI_OK && g.upload != NULL)

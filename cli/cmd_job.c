@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "job.h"
+#include "stats_json.h"
 #include "quilt_plan.h"
 
 /* Moves n points from the block's frame (lower-left corner `lo`) to `at`,
@@ -164,11 +165,11 @@ static void sewing_order(block **order, size_t n)
 }
 
 /* One path, a piece per block; moved so nothing sewn is negative (PAT needs
- * that). The box is the flattened path's: control points of curves lie
- * outside the curve and would move the whole quilt. */
-static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
+ * that), by *moved. The box is the flattened path's: control points of
+ * curves lie outside the curve and would move the whole quilt. */
+static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out, qc_vec2 *moved)
 {
-    double minx, miny, len;
+    double len;
     qc_bbox box;
     size_t i;
 
@@ -176,20 +177,43 @@ static int join_blocks(qc_ctx *ctx, block **order, size_t n, qc_path *out)
         if (qc_path_append(ctx, out, &order[i]->path, 0) < 0)
             return cli_fail(ctx, "job", ctx->status);
     qc_curve_measure(out, 0.01, &len, &box);
-    minx = fmin(0, box.min.x);
-    miny = fmin(0, box.min.y);
+    moved->x = -fmin(0, box.min.x);
+    moved->y = -fmin(0, box.min.y);
     for (i = 0; i < out->npt; i++) {
-        out->pt[i].x -= minx;
-        out->pt[i].y -= miny;
+        out->pt[i].x += moved->x;
+        out->pt[i].y += moved->y;
+    }
+    return CLI_OK;
+}
+
+/* Every block's outline (a top's patches), moved with the path: drawn in
+ * the SVG and on the DXF's layer OUTLINES. */
+static int job_outlines(qc_ctx *ctx, const job *j, qc_vec2 moved, qc_region *out)
+{
+    size_t i, k, at;
+
+    for (i = 0; i < j->n; i++) {
+        const qc_region *r = &j->blocks[i].outline;
+        size_t first = out->nv;
+        for (k = 0, at = 0; k < r->nrings; at = r->ring_end[k++])
+            if (qc_region_add_ring(ctx, out, r->v + at, r->ring_end[k] - at) < 0)
+                return cli_fail(ctx, "job", ctx->status);
+        for (k = first; k < out->nv; k++) {
+            out->v[k].x += moved.x;
+            out->v[k].y += moved.y;
+        }
     }
     return CLI_OK;
 }
 
 static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *formats,
-                   size_t nout)
+                   size_t nout, int quiet)
 {
+    cli_sewing sew = {12, 25.4, 0}; /* generate's defaults */
     block **order = calloc(j->n, sizeof *order);
     qc_path all = {0};
+    qc_region outlines = {0};
+    qc_vec2 moved = {0, 0};
     qc_plan plan = {0};
     qc_stitch_params sp;
     qc_io_opts io;
@@ -206,17 +230,23 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
         rc = check_overlaps(j);
     if (rc == CLI_OK) {
         sewing_order(order, j->n);
-        rc = join_blocks(ctx, order, j->n, &all);
+        rc = join_blocks(ctx, order, j->n, &all, &moved);
     }
+    if (rc == CLI_OK)
+        rc = job_outlines(ctx, j, moved, &outlines);
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = j->tie;
     if (rc == CLI_OK && qc_stitch_plan(ctx, &all, NULL, &sp, &plan) < 0)
         rc = cli_fail(ctx, "job", ctx->status);
     memset(&io, 0, sizeof io);
     io.svg_inches = strcmp(j->units, "in") == 0;
+    io.region = &outlines;
     if (rc == CLI_OK) /* all outputs or none */
         rc = cli_write_plans(ctx, outputs, formats, nout, &plan, &io);
+    if (rc == CLI_OK && !quiet)
+        cli_say_written(outputs, formats, nout, &plan, &sew, io.svg_inches);
     qc_plan_free(ctx, &plan);
+    qc_region_free(ctx, &outlines);
     qc_path_free(ctx, &all);
     free(order);
     return rc;
@@ -250,17 +280,20 @@ int cmd_job(int argc, char **argv)
     cli_job_names names = {NULL, 0, 0};
     job j;
     qc_ctx ctx;
-    int rc = CLI_OK, a, allow_outside = 0;
+    int rc = CLI_OK, a, allow_outside = 0, quiet = 0;
 
     for (a = 1; a < argc && rc == CLI_OK; a++) {
         if (strcmp(argv[a], "--help") == 0) {
-            puts("usage: quiltc job QUILT.json [-o FILE]... [--allow-outside]\n"
-                 "Generates every block of a quilt and joins them into one file (see README).\n"
+            puts("usage: quiltc job QUILT.json [-o FILE]... [--allow-outside] [-q]\n"
+                 "Generates every block of a quilt and joins them into one file (see README),\n"
+                 "then prints a line per file written (-q, --quiet: none).\n"
                  "The job's files (regions, motifs, points, outputs) must stay inside its\n"
                  "folder; --allow-outside lets them be anywhere. -o is never limited.");
             return CLI_OK;
         } else if (strcmp(argv[a], "--allow-outside") == 0) {
             allow_outside = 1;
+        } else if (strcmp(argv[a], "-q") == 0 || strcmp(argv[a], "--quiet") == 0) {
+            quiet = 1;
         } else if (strcmp(argv[a], "-o") == 0 && a + 1 < argc) {
             if (nout == MAX_JOB_OUTPUTS) {
                 cli_error("job: at most %d outputs", MAX_JOB_OUTPUTS);
@@ -299,7 +332,7 @@ int cmd_job(int argc, char **argv)
         rc = output_formats(outputs, nout, formats);
     if (rc == CLI_OK) {
         qc_ctx_init(&ctx, NULL, NULL);
-        rc = run_job(&ctx, &j, outputs, formats, nout);
+        rc = run_job(&ctx, &j, outputs, formats, nout, quiet);
         for (i = 0; i < j.n; i++) {
             qc_path_free(&ctx, &j.blocks[i].path);
             qc_region_free(&ctx, &j.blocks[i].outline);

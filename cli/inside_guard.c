@@ -20,7 +20,9 @@ int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
         return CLI_OK;
     if (resolved->tile == QC_TILE_EDGE_TO_EDGE || resolved->tile == QC_TILE_ALL_OVER) {
         /* tiles are laid out right and up from the first tile's box */
-        box.max.x = box.min.x + w * (resolved->repeat_cols >= 1 ? resolved->repeat_cols : 1);
+        /* odd rows moved right by the row offset (qc_tile_layout) */
+        box.max.x = box.min.x + w * (resolved->repeat_cols >= 1 ? resolved->repeat_cols : 1) +
+                    (resolved->repeat_rows >= 2 ? resolved->row_offset * w : 0.0);
         box.max.y = box.min.y + h * (resolved->repeat_rows >= 1 ? resolved->repeat_rows : 1);
     }
     got.min = got.max = p[0];

@@ -43,6 +43,8 @@ int cli_job_budget(qc_ctx *ctx, job *j)
         qc_params r;
         if ((rc = cli_pattern_finish(ctx, &b->pat)) != CLI_OK)
             return rc;
+        if (b->top == NULL) /* a top's rules choose the family per patch */
+            cli_pattern_warn_ignored(&b->pat);
         if (qc_params_resolve(ctx, &b->pat.params, &r) < 0)
             return cli_fail(ctx, b->label, ctx->status);
         tsp_ms += r.tsp_time_ms;

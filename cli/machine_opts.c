@@ -13,6 +13,10 @@ int cli_machine_take(cli_machine_opts *m, int opt, const char *arg)
         m->clip = 1;
         return 1;
     }
+    if (opt == CLI_MACH_SPLIT) {
+        m->split = 1;
+        return 1;
+    }
     if (opt < CLI_MACH_BASE || opt > CLI_MACH_PEN_DOWN)
         return 0;
     RAW(m, opt) = arg;
@@ -156,6 +160,18 @@ int cli_machine_finish(cli_machine_opts *m, double mpu)
     return CLI_OK;
 }
 
+void cli_machine_stitch_params(const cli_machine_opts *m, qc_stitch_params *sp)
+{
+    memset(sp, 0, sizeof *sp);
+    sp->tie_length = m->tie_length_mm;
+    sp->clip = m->clip;
+    if (m->split) {
+        sp->max_segment = 25.4 / m->spi;
+        /* the default merge (0.02 in) stays below one stitch up to 50 spi */
+        sp->min_segment = fmin(0.508, sp->max_segment / 2);
+    }
+}
+
 void cli_machine_help(FILE *f)
 {
     fputs("Placing the block (after generating; lengths in --units):\n"
@@ -166,6 +182,8 @@ void cli_machine_help(FILE *f)
           "Stitches and estimates:\n"
           "  --spi N                  stitches per inch for the stitch count (default 12)\n"
           "  --stitch-length LEN      the same as a length (--spi 12 = 0.0833in)\n"
+          "  --split-stitches         no stitch longer than that: long lines split into\n"
+          "                           equal stitches (machines without a stitch regulator)\n"
           "  --speed LEN              sewing speed, per second (default 1in)\n"
           "  --tie-length LEN         length of one tie-off stitch (default 0.5mm)\n"
           "  --bobbin-yards N         bobbin capacity: adds the bobbins needed\n"

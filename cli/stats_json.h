@@ -15,5 +15,9 @@ void cli_stats_print(FILE *f, const qc_result *res, const qc_plan *plan, const c
                      const cli_sewing *sew);
 /* Bobbins for the sewn length (thread take-up as the top thread's), or 0. */
 double cli_bobbins(const qc_plan_estimate *est, const cli_sewing *sew);
+/* One line per file written on stderr: "wrote FILE (fmt): N stitches at S spi,
+ * Y yd of thread, about T" (m of thread unless inches). */
+void cli_say_written(const char *const *paths, const int *formats, size_t n,
+                     const qc_plan *plan, const cli_sewing *sew, int inches);
 
 #endif

@@ -22,7 +22,7 @@ FUZZ_LIB_OBJ := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_BINS    := $(FUZZ_ALL:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_DEPS     = tests/fuzz/fuzz_common.h tests/support/testalloc.c tests/support/testalloc.h
 # the job target links the job reader and the CLI helpers it uses
-FUZZ_JOB_CLI := cli/job_parse.c cli/json_fields.c cli/job_budget.c cli/json_strict.c cli/util.c cli/escape.c cli/pattern_opts.c cli/region_load.c cli/motifs_load.c
+FUZZ_JOB_CLI := cli/job_parse.c cli/json_fields.c cli/job_budget.c cli/json_strict.c cli/util.c cli/escape.c cli/pattern_opts.c cli/ignored_opts.c cli/region_load.c cli/motifs_load.c
 
 $(FUZZ_BUILD)/obj/src/%.o: src/%.c $(FUZZ_BUILD)/obj/src/%.d
 	@mkdir -p $(dir $@)

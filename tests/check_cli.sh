@@ -125,9 +125,9 @@ motif_library() {
 check motifs_listed_and_drawn_family_help motif_library
 
 repeat_alias() {
-    "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat 3x2 -o a.pat &&
+    "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat 3x2 --tie 3 -o a.pat &&
         "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat-cols 3 \
-            --repeat-rows 2 -o b.pat && cmp a.pat b.pat && "$QC" check a.pat --region rect:12x8 >/dev/null &&
+            --repeat-rows 2 --tie 3 -o b.pat && cmp a.pat b.pat && "$QC" check a.pat --region rect:12x8 >/dev/null &&
         expect_fail 2 "'3by2' is not COLSxROWS" "$QC" generate --repeat 3by2
 }
 check repeat_cxr_equals_cols_and_rows repeat_alias
@@ -143,6 +143,110 @@ help_and_version() {
         "$QC" list params | grep -q '^spacing'
 }
 check help_version_and_lists help_and_version
+
+# list params --units speaks the units generate's range errors speak.
+params_in_units() {
+    "$QC" list params --units inch > in.txt && "$QC" list params --units mm > mm.txt &&
+        "$QC" list params > raw.txt && cmp mm.txt raw.txt &&
+        grep -q '^spacing  *in  *\[0.01969, 39.37\] default 0.5  ' in.txt &&
+        grep -q '^margin  *in  *\[0, 39.37\] default 0.3 d ' in.txt &&
+        grep -q '^angle  *deg  *\[-90, 90\] default 45 ' in.txt &&
+        grep -q '^spacing  *mm  *\[0.5, 1000\] default 12.7 ' mm.txt &&
+        "$QC" list params --units cm | grep -q '^spacing  *cm  *\[0.05, 100\] default 1.27 ' &&
+        ! "$QC" generate --spacing 50 2> e.txt && grep -q '\[0.01969, 39.37\] in' e.txt &&
+        expect_fail 2 "unknown unit 'ft'" "$QC" list params --units ft || { cat in.txt; return 1; }
+}
+check list_params_speaks_the_units params_in_units
+
+# Options the family does not read: one warning line, exit 0, the same pattern.
+ignored_options() {
+    "$QC" generate -q --family vine --seed 4 -o a.pat 2> a.txt && [ ! -s a.txt ] &&
+        "$QC" generate -q --family vine --seed 4 --motif leaf -o b.pat 2> b.txt && cmp a.pat b.pat &&
+        [ "$(cat b.txt)" = "quiltc: warning: --motif is ignored by family vine" ] &&
+        "$QC" generate -q --family vine --motif leaf --angle 3 --repeat 2x2 -o c.pat 2> c.txt &&
+        [ "$(cat c.txt)" = "quiltc: warning: --motif, --angle and --repeat are ignored by family vine" ] &&
+        "$QC" generate -q --family branching --motif leaf --angle 30 --repeat 2x1 --tile edge-to-edge \
+            --region rect:3x3 -o d.pat 2> d.txt && [ ! -s d.txt ] &&
+        echo '{"blocks": [{"region": "rect:2x2", "family": "echo", "motif": "leaf", "params": {"angle": 3}}]}' > j.json &&
+        "$QC" job -q j.json -o j.pat 2> j.txt &&
+        [ "$(cat j.txt)" = "quiltc: warning: job: blocks[0]: motif and params.angle are ignored by family echo" ] ||
+        { cat a.txt b.txt c.txt d.txt j.txt; return 1; }
+}
+check ignored_options_are_one_warning_line ignored_options
+
+# Block outlines on their own layer: DXF layer OUTLINES (read by ezdxf; not
+# sewn when quiltc reads the file back) and the SVG's region layer, for
+# generate and job.
+outline_layers() {
+    "$QC" generate -q --region heart:6 --seed 2 -o h.dxf -o h.pat &&
+        "$QC" job -q "$ROOT/examples/quilt.json" -o q.dxf -o q.svg -o q.pat &&
+        python3 - <<'PY' || return 1
+import ezdxf
+for name, outlines in (("h.dxf", 1), ("q.dxf", 4)):
+    msp = ezdxf.readfile(name).modelspace()
+    lines = [e for e in msp if e.dxftype() == "POLYLINE"]
+    out = [e for e in lines if e.dxf.layer == "OUTLINES"]
+    assert len(out) == outlines and all(e.is_closed for e in out), (name, len(out))
+    assert all(len(list(e.points())) >= 4 for e in out), name
+    assert any(e.dxf.layer == "0" for e in lines), name
+# the quilt's outlines are the four blocks of examples/quilt.json: 16 in x 16 in
+pts = [p for e in ezdxf.readfile("q.dxf").modelspace() if e.dxf.layer == "OUTLINES" for p in e.points()]
+xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+assert abs(min(xs)) < 0.01 and abs(max(xs) - 406.4) < 0.01 and abs(max(ys) - 406.4) < 0.01, (min(xs), max(xs), max(ys))
+PY
+    grep -q '<g id="region"' q.svg && "$QC" convert -q h.dxf h2.pat && "$QC" convert -q q.dxf q2.pat &&
+        [ "$("$QC" check h2.pat | head -n 1)" = "$("$QC" check h.pat | head -n 1)" ] &&
+        [ "$("$QC" check q2.pat | head -n 1)" = "$("$QC" check q.pat | head -n 1)" ]
+}
+check outlines_on_their_own_layer outline_layers
+
+# Pantographs: each row its own piece (a jump between rows, tied off with
+# --tie), rows alternating sides, --offset moves every other row, and
+# --quilt-width picks the columns that fit.
+pantograph_rows() {
+    "$QC" generate --family stipple --region rect:4x4 --tile edge-to-edge --repeat 3x3 --spacing 0.5 \
+        --seed 27 -o u.pat 2> u.txt &&
+        grep -q "warning: the pattern's 3 rows are joined by jumps without tie-offs; --tie 3" u.txt &&
+        "$QC" generate -q --family stipple --region rect:4x4 --tile edge-to-edge --repeat 3x3 --spacing 0.5 \
+            --seed 27 --tie 3 -o t.pat -o t.gcode 2> t.txt && [ ! -s t.txt ] &&
+        "$QC" check t.pat > c.txt && grep -q '^thread cuts (jumps with a tie-off on both sides): 2$' c.txt &&
+        grep -q 'bbox: 0.000 [0-9.]* 12.000 ' c.txt &&
+        "$QC" generate -q --family branching --region rect:4x4 --tile all-over --repeat-rows 2 --quilt-width 15 \
+            --offset 0.5 --spacing 0.6 --seed 27 --tie 3 -o o.pat -o o.gcode &&
+        "$QC" check o.pat > d.txt && grep -q 'bbox: 0.000 [0-9.]* 14.000 ' d.txt && grep -q 'sewable' d.txt &&
+        python3 - <<'PY' || { cat c.txt d.txt; return 1; }
+def rows(name):
+    out, cur, up = [], None, False
+    for l in open(name):
+        w = dict((t[0], t[1:]) for t in l.split() if t[0] in 'GXYZ')
+        if 'Z' in w:
+            up = float(w['Z']) > 0
+        if 'X' in w:
+            p = (float(w['X']) / 25.4, float(w['Y']) / 25.4)
+            if up or w.get('G') == '0' or cur is None:
+                cur = []
+                out.append(cur)
+            cur.append(p)
+    return out
+r = rows('t.gcode')
+assert len(r) == 3, len(r)
+# serpentine: row 0 left to right, row 1 back from the right, row 2 from the left
+# (a tie-off of 3 ends 0.5 mm back along the row)
+assert r[0][0][0] < 0.01 and r[0][-1][0] > 11.95 and r[1][0][0] > 11.99 and r[1][-1][0] < 0.05, (r[0][0], r[0][-1], r[1][0])
+assert r[2][0][0] < 0.01 and abs(r[1][0][1] - r[0][-1][1] + 4) < 0.05, (r[1][0], r[0][-1])
+o = rows('o.gcode')
+assert len(o) == 2, len(o)
+# three 4 in columns fit 15 in with the lower row half a tile over: 0..12 and 2..14
+xs0, xs1 = [p[0] for p in o[0]], [p[0] for p in o[1]]
+assert min(xs0) > -0.01 and max(xs0) < 12.01 and min(xs1) > 1.99 and max(xs1) < 14.01, (min(xs1), max(xs1))
+assert abs(o[1][0][0] - 14) < 0.01 and abs(o[1][-1][0] - 2) < 0.05, (o[1][0], o[1][-1])
+PY
+    expect_fail 2 "quilt-width lays out pantograph rows" "$QC" generate --quilt-width 20 &&
+        expect_fail 2 "a tile of 8 in fits 0 times across" "$QC" generate --tile edge-to-edge --quilt-width 5 &&
+        expect_fail 2 "not both" "$QC" generate --tile edge-to-edge --quilt-width 20 --repeat 2x1 &&
+        expect_fail 2 "offset 1 ratio out of range" "$QC" generate --tile edge-to-edge --offset 1
+}
+check pantograph_rows_offset_and_quilt_width pantograph_rows
 
 # A quilt of four blocks: one file, three jumps, tie-offs at both ends of each block.
 job_four_blocks() {

@@ -126,6 +126,40 @@ quiet() {
 }
 check one_line_per_written_file_and_q_silences quiet
 
+# job and convert say what they wrote as generate does; -q silences them.
+job_convert_say() {
+    echo '{"blocks": [{"region": "rect:2x2"}, {"region": "rect:2x2", "at": [2, 0]}]}' > j.json &&
+        "$QC" job j.json -o q.pat -o q.svg 2> j.txt && [ "$(wc -l < j.txt)" -eq 2 ] &&
+        s=$(sed -n 's/^wrote q.pat (pat): \([0-9]*\) stitches at 12 spi, [0-9.]* yd of thread, about [0-9]* min [0-9][0-9] s$/\1/p' j.txt) &&
+        grep -q "^wrote q.svg (svg): $s stitches" j.txt &&
+        c=$("$QC" check q.pat | sed -n 's/^stitches: \([0-9]*\) at 12 spi.*/\1/p') &&
+        [ -n "$s" ] && [ $((c - s)) -le 1 ] && [ $((s - c)) -le 1 ] &&
+        "$QC" convert q.pat q.dxf 2> c.txt && [ "$(wc -l < c.txt)" -eq 1 ] &&
+        grep -q '^wrote q.dxf (dxf): [0-9]* stitches at 12 spi, [0-9.]* yd of thread' c.txt &&
+        "$QC" job -q j.json -o r.pat 2> qj.txt && [ ! -s qj.txt ] && cmp q.pat r.pat &&
+        "$QC" convert q.pat r.dxf --quiet 2> qc.txt && [ ! -s qc.txt ] && cmp q.dxf r.dxf ||
+        { cat j.txt c.txt qj.txt qc.txt; echo "job $s check $c"; return 1; }
+}
+check job_and_convert_say_what_they_wrote job_convert_say
+
+# --split-stitches: no sewn segment longer than one stitch (1/spi in), for
+# machines without a stitch regulator; without it long lines stay whole.
+split_stitches() {
+    longest() { gpoints "$1" | python3 -c '
+import sys, math
+p = [tuple(map(float, l.split())) for l in sys.stdin]
+print(max(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(p, p[1:]) if b[2] == 0))'; }
+    "$QC" generate -q --family echo --region rect:4x4 --spi 10 -o n.gcode &&
+        "$QC" generate -q --family echo --region rect:4x4 --spi 10 --split-stitches -o s.gcode -o s.pat &&
+        "$QC" generate -q --family stipple --stitch-length 3mm --split-stitches --tie 3 -o t.gcode &&
+        "$QC" generate -q --family pebbling --region rect:2x2 --spi 100 --split-stitches -o h.gcode &&
+        "$QC" check s.pat > c.txt && n=$(longest n.gcode) && s=$(longest s.gcode) &&
+        t=$(longest t.gcode) && h=$(longest h.gcode) &&
+        python3 -c "assert $n > 10 and 2.4 < $s <= 2.541 and 2.9 < $t <= 3.001 and $h <= 0.2551, ($n, $s, $t, $h)" &&
+        grep -q '^segment lengths: [0-9.]* \.\. 2\.54[0-9]* mm$' c.txt || { cat c.txt; echo "$n $s $t $h"; return 1; }
+}
+check split_stitches_caps_every_stitch split_stitches
+
 # G-code lifts the pen for each jump by default; commands of one's own; ''.
 pen() {
     "$QC" generate -q --family pebbling --region rect:3x2 --tie 0 -o p.gcode &&

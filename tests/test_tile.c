@@ -1,6 +1,6 @@
 /* Tiles (§7.1, Fig. 27): a tile runs from its left port to the mirrored
- * right port, copies join exactly into one pantograph with rows alternating,
- * neighbouring copies do not touch. */
+ * right port, copies join exactly into pantograph rows (one piece each,
+ * alternating direction, odd rows offset), neighbouring copies do not touch. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -98,14 +98,22 @@ static void flatten(const qc_path *p, qc_points *flat)
     qc_order_free(&ctx, &ends);
 }
 
+/* Self-crossings of each piece (a pantograph row), summed. */
 static size_t crossings(const qc_path *p)
 {
-    qc_points flat;
-    size_t n;
-    flatten(p, &flat);
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v, flat.n, 0, &n));
+    qc_points flat = {0};
+    qc_order ends = {0};
+    size_t n, total = 0, k, start = 0;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, p, 0.01, &flat, &ends));
+    for (k = 0; k < ends.n; start = ends.i[k++]) {
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v + start,
+                                                            ends.i[k] - start, 0, &n));
+        total += n;
+    }
     qc_points_free(&ctx, &flat);
-    return n;
+    qc_order_free(&ctx, &ends);
+    return total;
 }
 
 static void tile_should_run_from_port_to_mirrored_port(void)
@@ -213,9 +221,9 @@ static void check_neighbours(int family, int mode, int tip)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_ports(&ctx, &t.r, &in, &outp));
     TEST_ASSERT_EQUAL_INT(QC_OK, generate(family, &t, &one, &p));
     TEST_ASSERT_EQUAL_INT(QC_OK, generate(family, &t, &many, &all));
-    TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&all));
+    TEST_ASSERT_EQUAL_UINT(2, qc_path_pieces(&all)); /* a row each */
     TEST_ASSERT_EQUAL_UINT(0, crossings(&all));
-    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 6.0 * qc_curve_length(&p, 0) + 60.0, qc_curve_length(&all, 0));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 6.0 * qc_curve_length(&p, 0), qc_curve_length(&all, 0));
     flatten(&p, &a);
     flatten(&p, &b);
     for (i = 0; i < b.n; i++) /* the right-hand neighbour */
@@ -233,6 +241,103 @@ static void check_neighbours(int family, int mode, int tip)
     qc_path_free(&ctx, &p);
     qc_path_free(&ctx, &all);
     free_tile(&t);
+}
+
+/* qc_tile_layout: each row its own piece (the row change is a jump), the
+ * next row starting on the side where the last one ended, odd rows moved
+ * right by offset tiles; within a row the copies join exactly. */
+static void tile_layout_should_sew_rows_as_pieces(void)
+{
+    qc_path tile = {0}, out = {0};
+    size_t c, moves = 0;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &tile, v2(0, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &tile, v2(3, 2)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &tile, v2(5, 4), v2(8, 1), v2(10, 0)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_layout(&ctx, &tile, 10, 6, 3, 3, 0.5, &out));
+    TEST_ASSERT_EQUAL_UINT(3, qc_path_pieces(&out));
+    TEST_ASSERT_EQUAL_UINT(3 * (1 + 6), out.ncmd);
+    for (c = 0; c < out.ncmd; c++)
+        if (out.cmd[c] == QC_PATH_MOVE) {
+            TEST_ASSERT_EQUAL_UINT(moves * 7, c); /* a MOVE starts each row, nothing else */
+            moves++;
+        }
+    TEST_ASSERT_EQUAL_UINT(3, moves);
+    /* row 0: 0..30 at y 0, ending at (30, 0) */
+    TEST_ASSERT_EQUAL_DOUBLE(30.0, out.pt[12].x);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, out.pt[12].y);
+    /* row 1 jumps to (35, -6): the right side again, half a tile over, and
+     * runs back reversed to (5, -6) */
+    TEST_ASSERT_EQUAL_DOUBLE(35.0, out.pt[13].x);
+    TEST_ASSERT_EQUAL_DOUBLE(-6.0, out.pt[13].y);
+    TEST_ASSERT_EQUAL_DOUBLE(33.0, out.pt[14].x); /* the cubic's controls swap */
+    TEST_ASSERT_EQUAL_DOUBLE(-5.0, out.pt[14].y);
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, out.pt[25].x);
+    TEST_ASSERT_EQUAL_DOUBLE(-6.0, out.pt[25].y);
+    /* row 2 starts on the left, not offset */
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, out.pt[26].x);
+    TEST_ASSERT_EQUAL_DOUBLE(-12.0, out.pt[26].y);
+    TEST_ASSERT_EQUAL_DOUBLE(30.0, out.pt[out.npt - 1].x);
+    /* the old layout is one piece with the row change sewn down the edge */
+    qc_path_free(&ctx, &out);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_repeat(&ctx, &tile, 10, 6, 3, 3, &out));
+    TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&out));
+    qc_path_free(&ctx, &out);
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tile_layout(&ctx, &tile, 10, 6, 3, 2, 1.0, &out));
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tile_layout(&ctx, &tile, 10, 6, 3, 2, -0.1, &out));
+    TEST_ASSERT_EQUAL_UINT(0, out.ncmd);
+    qc_path_free(&ctx, &tile);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
+/* The offset parameter: read by the families whose tiles are laid out by
+ * qc_tile_layout; rows offset by half a tile keep clear of each other. */
+static void offset_rows_should_stay_clear(void)
+{
+    const qc_param_info *row = qc_param_find("offset");
+    uint32_t fams;
+    int family;
+
+    TEST_ASSERT_NOT_NULL(row);
+    TEST_ASSERT_EQUAL_INT(QC_PARAM_ID_ROW_OFFSET, row->id);
+    fams = qc_param_families(row);
+    TEST_ASSERT_TRUE(fams & (1u << QC_FAMILY_STIPPLE));
+    TEST_ASSERT_TRUE(fams & (1u << QC_FAMILY_FILL));
+    TEST_ASSERT_TRUE(fams & (1u << QC_FAMILY_BRANCHING));
+    TEST_ASSERT_FALSE(fams & (1u << QC_FAMILY_VINE));
+    for (family = QC_FAMILY_FILL; family <= QC_FAMILY_STIPPLE; family++) {
+        ttile t;
+        qc_params one = params(family, 9, QC_TILE_ALL_OVER, 1, 1, 0);
+        qc_params many = params(family, 9, QC_TILE_ALL_OVER, 3, 2, 0);
+        qc_path p = {0}, all = {0};
+        qc_points a, b;
+        qc_bbox box;
+        size_t i;
+
+        many.row_offset = 0.5;
+        make_tile(90, 60, 9, 4, &t);
+        TEST_ASSERT_EQUAL_INT(QC_OK, generate(family, &t, &one, &p));
+        TEST_ASSERT_EQUAL_INT(QC_OK, generate(family, &t, &many, &all));
+        TEST_ASSERT_EQUAL_UINT(2, qc_path_pieces(&all));
+        TEST_ASSERT_EQUAL_UINT(0, crossings(&all));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-6, 6.0 * qc_curve_length(&p, 0), qc_curve_length(&all, 0));
+        box = qc_curve_bbox(&all, 0.01); /* the lower row reaches half a tile further */
+        TEST_ASSERT_TRUE(box.max.x > 10 + 3 * 90 + 0.4 * 90);
+        TEST_ASSERT_TRUE(box.max.x <= 10 + 3.5 * 90 + 1e-9);
+        flatten(&p, &a);
+        flatten(&p, &b);
+        for (i = 0; i < b.n; i++) { /* the neighbour below, half a tile over */
+            b.v[i].x += 45;
+            b.v[i].y -= 60;
+        }
+        TEST_ASSERT_GREATER_THAN_DOUBLE(0.5, copy_clearance(&a, &b, v2(-1e9, -1e9), 0.0));
+        qc_points_free(&ctx, &a);
+        qc_points_free(&ctx, &b);
+        qc_path_free(&ctx, &p);
+        qc_path_free(&ctx, &all);
+        free_tile(&t);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
 static void tiles_side_by_side_should_not_touch(void)
@@ -273,6 +378,8 @@ int main(void)
     RUN_TEST(tile_should_run_from_port_to_mirrored_port);
     RUN_TEST(tile_repeat_should_join_copies_exactly);
     RUN_TEST(tiles_side_by_side_should_not_touch);
+    RUN_TEST(tile_layout_should_sew_rows_as_pieces);
+    RUN_TEST(offset_rows_should_stay_clear);
     RUN_TEST(tile_should_survive_allocation_failures);
     return UNITY_END();
 }

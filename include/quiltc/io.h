@@ -46,7 +46,9 @@ typedef struct qc_io_opts {
     double feed_mm_min;      /* G-code feed rate; 0 = 1500 */
     const qc_path *travel;   /* SVG: layer "ditch" drawn over the path in a third colour
                               * (a quilt's travel along seams, lines only); may be NULL */
-    int dxf_outlines;        /* DXF: region's rings as closed polylines on layer OUTLINES */
+    int dxf_outlines;        /* DXF: the region's rings as closed polylines on layer
+                              * OUTLINES (never sewn by quiltc's reader): 0 or > 0
+                              * when region is given, < 0 never */
     /* G-code: a line sent before each jump and at the end (pen or needle up)
      * and one after each jump (down), so a plotter does not draw the jumps.
      * NULL = "G0 Z5" / "G1 Z0"; "" = no line. At most 64 printable ASCII

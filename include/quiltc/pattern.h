@@ -97,6 +97,7 @@ typedef enum qc_param_id {
     QC_PARAM_ID_WIGGLE,
     QC_PARAM_ID_TURN_RADIUS,
     QC_PARAM_ID_ITERATIONS,
+    QC_PARAM_ID_ROW_OFFSET,
     QC_PARAM_ID_COUNT /* at most 64: one bit each in qc_params.given */
 } qc_param_id;
 
@@ -135,6 +136,7 @@ typedef struct qc_params {
     double wiggle;      /* meander: irregularity, 0..1 */
     double turn_radius; /* meander: smallest turn radius */
     double iterations;  /* meander: rounds of curve evolution */
+    double row_offset;  /* tiles: odd rows moved right by this fraction of a tile */
     /* Not in the table: non-zero leaves qc_stats.largest_gap_mm,
      * farthest_fabric_mm and seam_bare at 0. The
      * measure never changes the path but costs about a third of a stipple,

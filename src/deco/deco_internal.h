@@ -185,7 +185,7 @@ QC__HIDDEN int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_p
 #define QC__FILL_PARAMS                                                              \
     (QC_PARAM_BIT(QC_PARAM_ID_TILE) | QC_PARAM_BIT(QC_PARAM_ID_TIP) |               \
      QC_PARAM_BIT(QC_PARAM_ID_WIDTH) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) |       \
-     QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS))
+     QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS) | QC_PARAM_BIT(QC_PARAM_ID_ROW_OFFSET))
 
 /* ---- tiles (tile.c) ---- */
 

@@ -334,6 +334,7 @@ static int start(run *r, qc_ctx *ctx, const qc_region *region, const qc_params *
     if (tiled) { /* the ports join the tree; the walk runs from one to the other */
         QC__TRY(qc__btile_make(ctx, region, skel, params->tile == QC_TILE_ALL_OVER,
                                &r->tile_store, &r->tile_skel));
+        qc__btile_offset_rows(&r->tile_store, params->row_offset);
         r->skel = &r->tile_skel;
         r->tile = &r->tile_store;
     }
@@ -658,5 +659,6 @@ const qc_family_desc qc__family_branching = {
     QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
     QC_PARAM_BIT(QC_PARAM_ID_SIZE) | QC_PARAM_BIT(QC_PARAM_ID_GAP) |
         QC_PARAM_BIT(QC_PARAM_ID_ANGLE) | QC_PARAM_BIT(QC_PARAM_ID_TILE) |
-        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS),
+        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS) |
+        QC_PARAM_BIT(QC_PARAM_ID_ROW_OFFSET),
     qc_deco_branching, NULL};

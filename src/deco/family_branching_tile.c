@@ -94,6 +94,21 @@ int qc__btile_make(qc_ctx *ctx, const qc_region *region, const qc_skeleton *skel
     return QC_OK;
 }
 
+void qc__btile_offset_rows(qc__btile *t, double row_offset)
+{
+    double o = row_offset * t->dx;
+    int sx, sy;
+
+    if (t->nshift != 8 || !(row_offset > 0))
+        return; /* edge-to-edge: no neighbour above or below */
+    t->nshift = 2;
+    for (sy = -1; sy <= 1; sy += 2)
+        for (sx = -1; sx <= 1; sx++) {
+            t->shift[t->nshift++] = (qc_vec2){sx * t->dx + o, sy * t->dy};
+            t->shift[t->nshift++] = (qc_vec2){sx * t->dx - o, sy * t->dy};
+        }
+}
+
 void qc__btile_flat_ports(const qc__btile *t, qc_path *vine)
 {
     size_t m = vine->npt;
@@ -167,7 +182,7 @@ int qc__btile_layout(qc_ctx *ctx, const qc__btile *t, const qc_params *prm, cons
             rc = QC__RESERVE(ctx, out->pt, out->pt_cap, np + k2 * tile->npt + rows);
     }
     if (rc == QC_OK)
-        rc = qc_tile_repeat(ctx, tile, t->dx, t->dy, cols, rows, out);
+        rc = qc_tile_layout(ctx, tile, t->dx, t->dy, cols, rows, prm->row_offset, out);
     if (rc < 0) {
         out->ncmd = nc;
         out->npt = np;

@@ -16,7 +16,8 @@ typedef struct qc__btile {
     qc_order order;    /* the walk: entry port first, exit port last */
     qc_vec2 entry, exit;
     double dx, dy;     /* from a tile to its right-hand / upper neighbour */
-    qc_vec2 shift[8];  /* where the neighbours sit: 2 (edge-to-edge) or 8 */
+    qc_vec2 shift[14]; /* where the neighbours sit: 2 (edge-to-edge), 8 (all-over)
+                        * or 14 (all-over, rows offset) */
     size_t nshift;
     qc_vec2 *tmp;      /* scratch for shifted polygons */
     size_t tmp_cap;
@@ -34,6 +35,9 @@ typedef struct qc__btile {
  */
 QC__HIDDEN int qc__btile_make(qc_ctx *ctx, const qc_region *region, const qc_skeleton *skel,
                               int all_over, qc__btile *t, qc_skeleton *out);
+/* Rows laid out with an offset (qc_tile_layout): an all-over tile's
+ * neighbours above and below sit row_offset tiles to either side. */
+QC__HIDDEN void qc__btile_offset_rows(qc__btile *t, double row_offset);
 QC__HIDDEN void qc__btile_free(qc_ctx *ctx, qc__btile *t);
 
 /* Sets the vine's tangents at the ports horizontal (so copies join
@@ -45,7 +49,7 @@ QC__HIDDEN void qc__btile_flat_ports(const qc__btile *t, qc_path *vine);
 QC__HIDDEN int qc__btile_grid_add(qc_ctx *ctx, qc__btile *t, qc__cgrid *g, const qc_vec2 *poly,
                                   size_t n, unsigned kind, uint32_t id);
 
-/* Appends cols x rows copies of tile to out (qc_tile_repeat, the rows lifted
+/* Appends cols x rows copies of tile to out (qc_tile_layout, the rows lifted
  * so the bottom row sits on the tile's box). On error out is as it was. */
 QC__HIDDEN int qc__btile_layout(qc_ctx *ctx, const qc__btile *t, const qc_params *prm,
                                 const qc_path *tile, qc_path *out);

@@ -130,7 +130,7 @@ int qc__fill_outline(qc_ctx *ctx, const qc_region *region, const qc_params *prm,
         double h = box.max.y - box.min.y;
         size_t k;
 
-        rc = qc_tile_repeat(ctx, &one, exit.x - entry.x, h, cols, rows, &rep);
+        rc = qc_tile_layout(ctx, &one, exit.x - entry.x, h, cols, rows, prm->row_offset, &rep);
         /* rows are sewn top down: lift them so the bottom row sits on the
          * tile's own box, keeping every coordinate above the region's corner */
         for (k = 0; k < rep.npt; k++)

@@ -90,25 +90,28 @@ int qc__tile_budget(qc_ctx *ctx, size_t tile_points, unsigned cols, unsigned row
     return QC_OK;
 }
 
-/* The rows of qc_tile_repeat, appended to out (checked arguments). */
+/* The rows of qc_tile_layout (jump: each row its own piece) and of
+ * qc_tile_repeat (rows joined by a line down the side), appended to out
+ * (checked arguments). Rows alternate direction, so the next row starts on
+ * the side where the last one ended. */
 static int append_rows(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
-                       unsigned rows, qc_path *out)
+                       unsigned rows, double offset, int jump, qc_path *out)
 {
     unsigned r, c;
 
     for (r = 0; r < rows; r++) {
         int rev = (int)(r & 1u);
-        double ty = -(double)r * dy;
+        double ty = -(double)r * dy, shift = rev ? offset * dx : 0.0;
 
         for (c = 0; c < cols; c++) {
             unsigned col = rev ? cols - 1 - c : c;
-            double tx = (double)col * dx;
+            double tx = (double)col * dx + shift;
 
             if (c == 0) {
                 qc_vec2 s = rev ? tile->pt[tile->npt - 1] : tile->pt[0];
                 s.x += tx;
                 s.y += ty;
-                if (out->ncmd == 0)
+                if (out->ncmd == 0 || jump)
                     QC__TRY(qc_path_move_to(ctx, out, s));
                 else
                     QC__TRY(qc_path_line_to(ctx, out, s));
@@ -119,8 +122,9 @@ static int append_rows(qc_ctx *ctx, const qc_path *tile, double dx, double dy, u
     return QC_OK;
 }
 
-int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
-                   unsigned rows, qc_path *out)
+/* Both layouts: arguments checked, out as on entry after an error. */
+static int layout(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                  unsigned rows, double offset, int jump, qc_path *out)
 {
     size_t ncmd0 = out->ncmd, npt0 = out->npt;
     int rc;
@@ -132,13 +136,27 @@ int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsig
         return qc__fail(ctx, QC_EINVAL, "tile repeat: %ux%u tiles", cols, rows);
     if (!isfinite(dx) || !isfinite(dy))
         return qc__fail(ctx, QC_EINVAL, "tile repeat: step (%g, %g) mm is not finite", dx, dy);
+    if (!(offset >= 0.0 && offset < 1.0))
+        return qc__fail(ctx, QC_EINVAL, "tile repeat: row offset %g is not in [0, 1)", offset);
     QC__TRY(qc__tile_budget(ctx, tile->npt, cols, rows));
-    rc = append_rows(ctx, tile, dx, dy, cols, rows, out);
+    rc = append_rows(ctx, tile, dx, dy, cols, rows, offset, jump, out);
     if (rc < 0) { /* as on entry (core.h) */
         out->ncmd = ncmd0;
         out->npt = npt0;
     }
     return rc;
+}
+
+int qc_tile_layout(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                   unsigned rows, double offset, qc_path *out)
+{
+    return layout(ctx, tile, dx, dy, cols, rows, offset, 1, out);
+}
+
+int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
+                   unsigned rows, qc_path *out)
+{
+    return layout(ctx, tile, dx, dy, cols, rows, 0.0, 0, out);
 }
 
 /* Whether the segment a-p[bi] crosses or touches a tree edge not at bi. */

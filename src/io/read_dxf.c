@@ -9,8 +9,9 @@
  * in mm. A SPLINE of fit points only is the cubic through them that CAD
  * programs draw (chord-length parameters, its end tangents when given,
  * else no curvature at the ends). Entities with no stitch line (TEXT,
- * POINT, HATCH, DIMENSION, ...) are skipped, BLOCKS too; INSERT (a block
- * reference) is refused rather than misread.
+ * POINT, HATCH, DIMENSION, ...) are skipped, BLOCKS too, and so is layer
+ * OUTLINES (the block and patch outlines quiltc draws beside the path);
+ * INSERT (a block reference) is refused rather than misread.
  */
 #include <math.h>
 #include <string.h>
@@ -50,6 +51,8 @@ typedef struct dxf {
     int in_polyline;    /* between POLYLINE and SEQEND */
     int poly_mirrored;
     int poly_closed;
+    int outline;        /* the entity is on layer OUTLINES: drawn, not sewn */
+    int poly_outline;
 } dxf;
 
 static int bad(dxf *d, const char *what)
@@ -379,6 +382,9 @@ static int finish_entity(dxf *d)
 {
     const char *t = d->type;
 
+    if (d->outline && strcmp(t, "POLYLINE") != 0 && strcmp(t, "VERTEX") != 0 &&
+        strcmp(t, "SEQEND") != 0)
+        return QC_OK;
     if (strcmp(t, "LINE") == 0) {
         QC__TRY(start_at(d, mm(d, d->g[10], d->g[20])));
         return qc__reader_sew(&d->r, mm(d, d->g[11], d->g[21]));
@@ -391,6 +397,7 @@ static int finish_entity(dxf *d)
         d->in_polyline = 1;
         d->poly_closed = d->flags & 1;
         d->poly_mirrored = d->mirrored;
+        d->poly_outline = d->outline;
         d->nv = 0;
         return QC_OK;
     }
@@ -408,7 +415,7 @@ static int finish_entity(dxf *d)
             return QC_OK;
         d->in_polyline = 0;
         d->mirrored = d->poly_mirrored; /* vertices follow their POLYLINE's system */
-        return emit_polyline(d, closed);
+        return d->poly_outline ? QC_OK : emit_polyline(d, closed);
     }
     if (strcmp(t, "ARC") == 0 || strcmp(t, "CIRCLE") == 0)
         return emit_arc(d, t[0] == 'C');
@@ -432,8 +439,12 @@ static int entity_group(dxf *d)
         d->mirrored = v < 0;
         return QC_OK;
     }
+    if (d->code == 8) {
+        d->outline = is(d, "OUTLINES");
+        return QC_OK;
+    }
     if (d->code >= 100 || (d->code >= 1 && d->code <= 9))
-        return QC_OK; /* handles, names, layers, subclass markers */
+        return QC_OK; /* handles, names, other layers, subclass markers */
     if (d->code >= 60 && d->code < 80) {
         QC__TRY(number(d, &v));
         if (!(fabs(v) <= 2147483647.0) || v != floor(v))
@@ -483,6 +494,7 @@ static void begin_entity(dxf *d)
     memset(d->has, 0, sizeof d->has);
     d->flags = 0;
     d->mirrored = 0;
+    d->outline = 0;
     if (!d->in_polyline || strcmp(d->type, "VERTEX") != 0)
         if (strcmp(d->type, "SEQEND") != 0)
             d->nv = 0;

@@ -2,8 +2,10 @@
  * DXF R12 ASCII: a HEADER declaring millimetres ($INSUNITS 4) and one open
  * 2D POLYLINE (VERTEX ... SEQEND) per piece on layer 0, coordinates in mm
  * with 4 decimals, y up. Jumps are the gaps between polylines. CRLF.
- * With opts->dxf_outlines the region's rings (a quilt top's patches) come
- * first, closed polylines on layer OUTLINES.
+ * When opts->region is given (and opts->dxf_outlines is not negative) its
+ * rings (the block's outline, a quilt top's patches) come first, closed
+ * polylines on layer OUTLINES, so long-arm software shows them apart from
+ * the path and can hide them.
  */
 #include "io_internal.h"
 
@@ -79,7 +81,7 @@ int qc__write_dxf(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
     group(o, 0, "ENDSEC");
     group(o, 0, "SECTION");
     group(o, 2, "ENTITIES");
-    if (opts->dxf_outlines && opts->region != NULL)
+    if (opts->dxf_outlines >= 0 && opts->region != NULL)
         outlines(o, opts->region);
     for (i = 0; i < plan->n; i++) {
         if (i == 0 || (plan->flags[i] & QC_ST_JUMP)) {

@@ -82,6 +82,8 @@ static const qc_param_info table[] = {
      0.05, 1000, 0, 0.25, ID(TURN_RADIUS), OFF(turn_radius)},
     {"iterations", "meander: rounds of curve evolution (work, not time)", "count", QC_PARAM_INT,
      NULL, 0, 100000, 60, 0, ID(ITERATIONS), OFF(iterations)},
+    {"offset", "pantograph rows: every other row moved by this fraction of a tile's width",
+     "ratio", QC_PARAM_REAL, NULL, 0, 0.95, 0, 0, ID(ROW_OFFSET), OFF(row_offset)},
 };
 
 #define NPARAMS (sizeof table / sizeof table[0])
