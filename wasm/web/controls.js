@@ -19,11 +19,11 @@ export function labelled(text, control, className) {
 }
 
 // Fills box with the controls of family (a qc_family_info row) in units;
-// attr names the data attribute holding the row name; values: the initial
+// data-ATTR holds the row name (attr in kebab case); values: the initial
 // values (else the ones the box held); onChange(row) on every edit.
 export function buildParamControls({ box, table, family, units, attr = 'param', values, onChange }) {
   const keep = values || {};
-  if (!values) for (const el of box.querySelectorAll(`[data-${attr}]`)) keep[el.dataset[attr]] = el.value;
+  if (!values) for (const el of box.querySelectorAll(`[data-${attr}]`)) keep[el.getAttribute(`data-${attr}`)] = el.value;
   box.innerHTML = '';
   for (const row of table) {
     if (HIDDEN_ROWS.has(row.name) || !(row.families & 2 ** family.id)) continue;
@@ -46,7 +46,7 @@ export function buildParamControls({ box, table, family, units, attr = 'param', 
       input.placeholder = /\(default/.test(row.help) ? 'default'
         : row.def_per_spacing ? `${row.def_per_spacing} × spacing` : fmt(row.def / scale, 4);
     }
-    input.dataset[attr] = row.name;
+    input.setAttribute(`data-${attr}`, row.name);
     if (keep[row.name] !== undefined) input.value = keep[row.name];
     input.addEventListener(row.type === 'enum' ? 'change' : 'input', () => onChange(row));
     const unit = unitLabel(row, units);
@@ -60,7 +60,7 @@ export function buildParamControls({ box, table, family, units, attr = 'param', 
 export function paramValues(box, attr = 'param') {
   const out = {};
   for (const el of box.querySelectorAll(`[data-${attr}]`)) {
-    const name = el.dataset[attr];
+    const name = el.getAttribute(`data-${attr}`);
     if (el.validity?.badInput) throw new Error(`${el.closest('label').textContent.trim()}: not a number`);
     if (el.value.trim() !== '') out[name] = el.value.trim();
   }
@@ -70,7 +70,7 @@ export function paramValues(box, attr = 'param') {
 // Empty controls show the value the library resolved for them.
 export function showDefaults(box, table, resolved, units, attr = 'param') {
   for (const el of box.querySelectorAll(`[data-${attr}]`)) {
-    const row = table.find((t) => t.name === el.dataset[attr]);
+    const row = table.find((t) => t.name === el.getAttribute(`data-${attr}`));
     const v = resolved[row.name];
     if (v === undefined || v === null) continue;
     if (row.type === 'enum') el.options[0].textContent = `default (${choiceLabel(row.name, v)})`;

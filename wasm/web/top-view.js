@@ -83,7 +83,7 @@ function buildPatchParams(values) {
     return;
   }
   const family = ctx.families().find((f) => f.name === (name || ctx.globalFamily()));
-  buildParamControls({ box, table: ctx.table(), family, units: ctx.units(), attr: 'patchParam', values, onChange: saveRule });
+  buildParamControls({ box, table: ctx.table(), family, units: ctx.units(), attr: 'patch-param', values, onChange: saveRule });
 }
 
 // The editor's values as the rule of the chosen scope.
@@ -95,7 +95,7 @@ function saveRule() {
   if (!key) return;
   let params;
   try {
-    params = paramValues($('patchParams'), 'patchParam');
+    params = paramValues($('patchParams'), 'patch-param');
   } catch (err) {
     ctx.fail(err.message);
     return;
@@ -123,7 +123,7 @@ export function ditchLayer(pieces) {
 
 // Empty patch controls show what the library resolves for the whole top.
 export function showPatchDefaults(resolved) {
-  if (ctx) showDefaults($('patchParams'), ctx.table(), resolved, ctx.units(), 'patchParam');
+  if (ctx) showDefaults($('patchParams'), ctx.table(), resolved, ctx.units(), 'patch-param');
 }
 
 // quiltc quilt --stats' totals as the stats rows, and a row per patch.
