@@ -449,8 +449,16 @@ await report.run('phone_preview_and_error_stay_in_view', async () => {
     await page.fill('#tie', '500');
     await waitError(page, e);
     assert(await inView(page, '#error'), 'the message is out of view on a phone');
-    await shot(page, '10-phone-error');
     await change(page, () => page.fill('#tie', '0'));
+    // a failed SVG chosen while scrolled far down: its message is on screen too
+    await page.locator('#tie').scrollIntoViewIfNeeded();
+    const e2 = await errorCount(page);
+    await page.setInputFiles('#regionFile', path.join(FIX, 'malformed.svg'));
+    const msg = await waitError(page, e2);
+    assert(/^malformed\.svg: /.test(msg), `message: ${msg}`);
+    assert(await page.evaluate(() => window.scrollY) > 400, 'the page scrolled back up: the test proves nothing');
+    assert(await inView(page, '#error'), 'the SVG message is out of view on a phone');
+    await shot(page, '10-phone-error');
   } finally {
     await page.setViewportSize({ width: 1200, height: 900 });
   }
