@@ -241,6 +241,33 @@ for (const c of quiltCases) {
   });
 }
 
+// The page's own first-fit matching (top-plan.js, used to drop rules that fit
+// no patch) must choose as the library does (qc_patch_matches).
+await report.run('quilt_page_matching_equals_library', async () => {
+  const { matches, TopPlan } = await import(path.join(WEB, 'top-plan.js'));
+  const svg = fs.readFileSync(STAR, 'utf8');
+  const patches = api.topSvg(svg, STAR);
+  const plan = [
+    { match: { id: 'point-*-b' }, family: 'echo' }, { match: { class: 'point' }, family: 'fill' },
+    { match: { label: 'Sky*' }, family: 'meander' }, { match: { fill: '#F5F0E1' }, family: 'spiral' },
+    { match: { class: 'cent*', fill: 'rgb(192, 57, 43)' }, family: 'none' }, { match: { id: 'nothing*' }, family: 'stipple' },
+  ];
+  const want = patches.map((p) => plan.findIndex((r) => matches(r.match, p)));
+  const used = plan.filter((_, k) => want.includes(k));
+  assert(used.length === plan.length - 1, `${used.length} rules used`);
+  const { stats } = api.quilt({ top: { svg, name: STAR }, plan: used, units: 'in', params: {}, seed: '1', tie: 0 });
+  const got = stats.patches.map((p) => (p.rule === 'default' ? -1 : plan.indexOf(used[Number(/\d+/.exec(p.rule)[0])])));
+  assert(JSON.stringify(got) === JSON.stringify(want), `library ${got}, page ${want}`);
+  // TopPlan: a colour's rule replaces its patches' own; rules fitting no patch are dropped
+  const tp = new TopPlan();
+  tp.set('patch', 'centre', 'echo', {}, patches);
+  tp.set('patch', 'corner-sw', 'fill', { spacing: '0.3' }, patches);
+  tp.set('colour', '#f5f0e1', 'pebbling', {}, patches);
+  tp.set('patch', 'goose-top', '', {}, patches);
+  assert(JSON.stringify(tp.toPlan(patches)) === JSON.stringify([{ match: { id: 'centre' }, family: 'echo' },
+    { match: { fill: '#f5f0e1' }, family: 'pebbling' }]), `plan ${JSON.stringify(tp.toPlan(patches))}`);
+});
+
 await report.run('enough_bytes_compared', () => {
   assert(formatsSeen.size === FORMATS.length, `only ${[...formatsSeen].join(',')} were compared`);
   assert(compared >= 40, `only ${compared} cases produced bytes to compare`);

@@ -10,12 +10,22 @@ export function glob(pattern, s) {
   return re.test(s);
 }
 
+// A colour as #rrggbb: #rgb, #rrggbb or rgb(r, g, b) (the page writes the
+// library's #rrggbb; colour names are left as given).
+export function colour(c) {
+  const t = String(c).trim().toLowerCase();
+  if (/^#[0-9a-f]{3}$/.test(t)) return `#${[...t.slice(1)].map((d) => d + d).join('')}`;
+  const rgb = /^rgb\(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*\)$/.exec(t);
+  if (rgb) return `#${rgb.slice(1).map((v) => Math.min(255, Number(v)).toString(16).padStart(2, '0')).join('')}`;
+  return t;
+}
+
 // qc_patch_matches: id, label by glob; class against any word of the patch's class; fill equal.
 export function matches(m, p) {
   if (m.id !== undefined && !glob(m.id, p.id || '')) return false;
   if (m.label !== undefined && !glob(m.label, p.label || '')) return false;
   if (m.class !== undefined && !(p.class || '').split(/[ \t\n]+/).some((c) => c !== '' && glob(m.class, c))) return false;
-  if (m.fill !== undefined && (p.fill || '').toLowerCase() !== m.fill.toLowerCase()) return false;
+  if (m.fill !== undefined && (!p.fill || colour(p.fill) !== colour(m.fill))) return false;
   return true;
 }
 

@@ -68,7 +68,11 @@ function showEditor() {
   $('patchFamily').disabled = key === '';
   const rule = key ? plan.get(scope.value, key) : null;
   const fams = ctx.families();
-  $('patchFamily').innerHTML = `<option value="">same as the rest (${ctx.globalFamily()})</option>` +
+  // what the patch gets without a rule of this scope: its colour's rule, else the whole top's pattern
+  const byColour = scope.value === 'patch' && p.fill ? plan.get('colour', p.fill) : null;
+  const inherited = byColour ? `as its colour (${byColour.family === 'none' ? 'unquilted' : byColour.family || ctx.globalFamily()})`
+    : `same as the rest (${ctx.globalFamily()})`;
+  $('patchFamily').innerHTML = `<option value="">${inherited}</option>` +
     '<option value="none">leave unquilted</option>' +
     fams.map((f) => `<option value="${f.name}" title="${escape(f.summary)}">${f.name}</option>`).join('');
   $('patchFamily').value = rule?.family || '';
