@@ -69,7 +69,9 @@ static double number(const char *s, double scale)
 
 static int die(qcw_job *job, const char *what)
 {
-    fprintf(stderr, "qcw_native: %s: %s\n", what, qcw_error(job));
+    const char *why = qcw_error(job);
+
+    fprintf(stderr, "qcw_native: %s: %s\n", what, why[0] != '\0' ? why : "bad --rule or --rule-set");
     qcw_free(job);
     return 1;
 }
