@@ -378,7 +378,15 @@ async function labelsAndNames(page, cdp) {
 const JARGON = /\b(mst|tsp|tsp-time|r-seed|tip)\b/i;
 await report.run('labels_quilters_words_and_accessible_names', async () => {
   if (!topLoaded) throw new Skip('no top loaded');
-  await change(page, () => page.setInputFiles('#regionFile', STAR));
+  // a top dropped on the preview, as one chosen with the file button
+  const text = fs.readFileSync(STAR, 'utf8');
+  await change(page, () => page.evaluate((svg) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([svg], 'dropped-star.svg', { type: 'image/svg+xml' }));
+    document.getElementById('drop').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, text));
+  assert(await page.textContent('#topName') === 'dropped-star.svg: 17 patches', `top name: ${await page.textContent('#topName')}`);
+  assert(await page.$$eval('#preview [data-patch]', (p) => p.length) === 17, 'the dropped top is not drawn as patches');
   await clickPatch(page, 'centre');
   const cdp = await context.newCDPSession(page);
   const checked = new Set();

@@ -419,13 +419,17 @@ function shapeFields() {
   $('sizeW').hidden = shape === 'svg';
   $('sizeH').hidden = shape !== 'rect';
   $('sizeW').querySelector('.label-text').textContent = shape === 'rect' ? 'Width' : 'Size';
-  $('regionName').textContent = regionSvg && shape === 'svg' ? regionSvg.name : '';
+  $('regionName').textContent = shape === 'svg' ? (regionSvg || top)?.name || '' : '';
   $('topBox').hidden = !(top && shape === 'svg');
   if ($('planDownload')) $('planDownload').hidden = !(top && shape === 'svg');
   if (top && shape === 'svg') $('topName').textContent = `${top.name}: ${top.patches.length} patches`;
 }
 
-$('regionFile').addEventListener('change', (e) => e.target.files[0] && readRegionFile(e.target.files[0]));
+$('regionFile').addEventListener('change', (e) => {
+  const f = e.target.files[0];
+  e.target.value = ''; // choosing the same file again (fixed, say) reloads it; its name shows below
+  if (f) readRegionFile(f);
+});
 $('motifFile').addEventListener('change', async (e) => {
   const f = e.target.files[0];
   motifSvg = f ? { name: f.name, svg: await f.text() } : null;
