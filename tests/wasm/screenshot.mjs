@@ -45,6 +45,7 @@ if (process.argv[3] !== 'top') {
   await page.waitForFunction(() => Number(document.getElementById('sewBtn').dataset.progress || 0) > 0.55);
   await page.click('#sewBtn'); // stop part-way: the sewn part shows over the path
 }
+await page.evaluate(() => window.scrollTo(0, 0)); // checking a motif scrolls the controls
 await page.screenshot({ path: out });
 console.log(`wrote ${out} (generation ${await generation(page)})`);
 await context.close();
