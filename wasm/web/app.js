@@ -99,7 +99,7 @@ function settings() {
   const params = { family: $('family').value, ...paramValues($('params')) };
   for (const id of ['shapeW', 'shapeH', 'tie']) {
     if ($(id).validity.badInput || $(id).value.trim() === '') {
-      if (top || regionSvg) continue;
+      if (id !== 'tie' && (top || regionSvg)) continue; // an SVG has its own size
       if (id !== 'shapeH' || $('shape').value === 'rect') throw new Error(`${$(id).closest('label').textContent.trim()}: enter a number`);
     }
   }
