@@ -1,7 +1,9 @@
 // Byte identity: the WebAssembly module (build/web/quiltc.mjs, loaded in
 // Node) against the native CLI (build/quiltc generate) and against the same
 // binding code compiled natively (build/tests/qcw_native), for a corpus of
-// settings across every family x shapes x seeds, in every output format.
+// settings across every family x shapes x seeds, in every output format;
+// and quilt tops: qcw_quilt with a plan set as rules against
+// `quiltc quilt TOP.svg --plan PLAN.json` (the sawtooth star and variants).
 // A family the library does not build yet must fail the same way on every
 // side; its cases are reported as ignored.
 //   node tests/wasm/identity.mjs        (BUILD=build by default)
@@ -163,6 +165,109 @@ for (const c of cases) {
     for (const f of FORMATS) formatsSeen.add(f);
   });
 }
+// ---- quilt tops: the module's qcw_quilt, its plan set via rules (Quiltc.setPlan,
+// qcw_native --rule), against `quiltc quilt TOP.svg --plan PLAN.json` ----
+const STAR = path.join(ROOT, 'examples/sawtooth-star.svg');
+const STAR_PLAN = JSON.parse(fs.readFileSync(path.join(ROOT, 'examples/sawtooth-star.json'), 'utf8'));
+const quiltCases = [
+  { name: 'sawtooth_star_plan', plan: STAR_PLAN, oneLine: true },
+  { name: 'sawtooth_star_no_plan', params: { family: 'stipple', spacing: '0.5' }, seed: '9', oneLine: true },
+  { name: 'sawtooth_star_fill_none_jump_mm', units: 'mm', join: 'jump', tie: 0, params: { family: 'echo', spacing: '8' },
+    plan: [{ match: { fill: '#e67e22' }, family: 'none' }, { match: { class: 'background' }, family: 'meander', params: { spacing: '9mm' } }] },
+  { name: 'sawtooth_star_rule_fits_no_patch', plan: [{ match: { id: 'nope' }, family: 'stipple' }], error: true },
+];
+
+function quiltGlobals(c) {
+  const a = ['--units', c.units || 'in', '--seed', c.seed || '1', '--tie', String(c.tie ?? 3), '--join', c.join || 'ditch'];
+  for (const [k, v] of Object.entries(c.params || {})) a.push(`--${k}`, v);
+  return a;
+}
+
+// The plan as qcw_native's --rule / --rule-set arguments.
+function ruleArgs(plan) {
+  const a = [];
+  for (const r of plan || []) {
+    a.push('--rule', Object.entries(r.match || {}).map(([k, v]) => `${k}=${v}`).join(';'));
+    if (r.family) a.push('--rule-set', `family=${r.family}`);
+    for (const [k, v] of Object.entries(r.params || {})) a.push('--rule-set', `${k}=${v}`);
+  }
+  return a;
+}
+
+function runQuiltWasm(c) {
+  try {
+    const out = api.quilt({ top: { svg: fs.readFileSync(STAR, 'utf8'), name: STAR }, plan: c.plan || [],
+      units: c.units || 'in', params: c.params || {}, seed: c.seed || '1', tie: c.tie ?? 3, join: c.join || 'ditch' });
+    const files = {};
+    for (const f of FORMATS) files[f] = api.export(f);
+    return { files, stats: out.stats };
+  } catch (err) {
+    return { error: err.message };
+  }
+}
+
+for (const c of quiltCases) {
+  await report.run(`quilt_${c.name}`, () => {
+    const wasm = runQuiltWasm(c);
+    const outs = FORMATS.flatMap((f) => ['-o', path.join(tmp, `out.${f}`)]);
+    const refs = [];
+    if (cliReady) {
+      const planFile = path.join(tmp, 'plan.json');
+      fs.writeFileSync(planFile, JSON.stringify(c.plan || []));
+      const plan = c.plan ? ['--plan', planFile] : [];
+      refs.push(['quiltc quilt', runNative(cli, ['quilt', STAR, '-q', ...quiltGlobals(c), ...plan, ...outs], tmp)]);
+    }
+    if (nativeReady) refs.push(['qcw_native quilt', runNative(native, ['quilt', STAR, ...quiltGlobals(c), ...ruleArgs(c.plan), ...outs], tmp)]);
+    assert(refs.length > 0, 'no native reference to compare with');
+    for (const [who, ref] of refs) {
+      if (c.error) { // the CLI adds "of TOP.svg" to the module's message
+        assert(ref.error !== undefined && wasm.error !== undefined, `${who}: ${ref.error}, module: ${wasm.error}`);
+        assert(ref.error.includes(wasm.error), `${who} said '${ref.error}', the module '${wasm.error}'`);
+      } else {
+        compare(ref, wasm, who);
+      }
+    }
+    if (c.error) return;
+    const s = wasm.stats;
+    assert(s.patches.length === 17, `${s.patches.length} patches`);
+    if (c.oneLine) assert(s.pieces === 1 && s.jumps === 0, `${s.pieces} pieces, ${s.jumps} jumps: not one line`);
+    if (c.plan === STAR_PLAN) {
+      const fam = Object.fromEntries(s.patches.map((p) => [p.id, p.family]));
+      assert(fam.centre === 'pebbling' && fam['point-top-a'] === 'echo' && fam['goose-top'] === 'stipple' &&
+        fam['corner-nw'] === 'spiral', `families ${JSON.stringify(fam)}`);
+    }
+    if (c.join === 'jump') assert(s.unquilted === 8 && s.ditch_mm === 0, `${s.unquilted} unquilted, ditch ${s.ditch_mm} mm`);
+    compared++;
+  });
+}
+
+// The page's own first-fit matching (top-plan.js, used to drop rules that fit
+// no patch) must choose as the library does (qc_patch_matches).
+await report.run('quilt_page_matching_equals_library', async () => {
+  const { matches, TopPlan } = await import(path.join(WEB, 'top-plan.js'));
+  const svg = fs.readFileSync(STAR, 'utf8');
+  const patches = api.topSvg(svg, STAR);
+  const plan = [
+    { match: { id: 'point-*-b' }, family: 'echo' }, { match: { class: 'point' }, family: 'fill' },
+    { match: { label: 'Sky*' }, family: 'meander' }, { match: { fill: '#F5F0E1' }, family: 'spiral' },
+    { match: { class: 'cent*', fill: 'rgb(192, 57, 43)' }, family: 'none' }, { match: { id: 'nothing*' }, family: 'stipple' },
+  ];
+  const want = patches.map((p) => plan.findIndex((r) => matches(r.match, p)));
+  const used = plan.filter((_, k) => want.includes(k));
+  assert(used.length === plan.length - 1, `${used.length} rules used`);
+  const { stats } = api.quilt({ top: { svg, name: STAR }, plan: used, units: 'in', params: {}, seed: '1', tie: 0 });
+  const got = stats.patches.map((p) => (p.rule === 'default' ? -1 : plan.indexOf(used[Number(/\d+/.exec(p.rule)[0])])));
+  assert(JSON.stringify(got) === JSON.stringify(want), `library ${got}, page ${want}`);
+  // TopPlan: a colour's rule replaces its patches' own; rules fitting no patch are dropped
+  const tp = new TopPlan();
+  tp.set('patch', 'centre', 'echo', {}, patches);
+  tp.set('patch', 'corner-sw', 'fill', { spacing: '0.3' }, patches);
+  tp.set('colour', '#f5f0e1', 'pebbling', {}, patches);
+  tp.set('patch', 'goose-top', '', {}, patches);
+  assert(JSON.stringify(tp.toPlan(patches)) === JSON.stringify([{ match: { id: 'centre' }, family: 'echo' },
+    { match: { fill: '#f5f0e1' }, family: 'pebbling' }]), `plan ${JSON.stringify(tp.toPlan(patches))}`);
+});
+
 await report.run('enough_bytes_compared', () => {
   assert(formatsSeen.size === FORMATS.length, `only ${[...formatsSeen].join(',')} were compared`);
   assert(compared >= 40, `only ${compared} cases produced bytes to compare`);

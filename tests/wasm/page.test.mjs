@@ -4,7 +4,13 @@
 // the preview change, out-of-range values and bad SVGs show a message while
 // the last preview stays, upload and drop an SVG region, download machine
 // files and compare them with the CLI's bytes, run the sew animation, fit a
-// phone-sized screen. Screenshots go to build/web-shots/.
+// phone-sized screen. A pieced top (examples/sawtooth-star.svg): click a
+// patch, give it a pattern, sew the top as one line, download the plan and
+// the machine files and compare them with `quiltc quilt --plan`. After a
+// failed SVG no download gives the previous pattern; labels are quilters'
+// words and the controls' accessible names; no select cuts its choices
+// off; on a phone the preview and the message stay in view.
+// Screenshots go to build/web-shots/.
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import net from 'node:net';
@@ -95,7 +101,7 @@ await report.run('default_preview_drawn', async () => {
   assert(await attr(page, '[data-param=spacing]', 'placeholder') === '0.5', 'spacing default');
   assert(await attr(page, '[data-param=margin]', 'placeholder') === '0.15', 'margin default (0.3 d)');
   const points = await page.$eval('[data-param=points] option', (o) => o.textContent);
-  assert(points === 'default (poisson)', `points default: ${points}`);
+  assert(points === 'default (random, even)', `points default: ${points}`);
   await shot(page, '01-default');
 });
 
@@ -243,6 +249,227 @@ await report.run('svg_region_drop', async () => {
   await waitDrawn(page, g);
   assert(await page.isHidden('#error'), `error after a good drop: ${await page.textContent('#error')}`);
   assert((await page.textContent('#regionName')) === 'dropped.svg', 'dropped file not used');
+});
+
+// ---- a pieced top ----
+const STAR = path.join(ROOT, 'examples/sawtooth-star.svg');
+const patchIndex = (page, id) => page.evaluate((want) => [...document.querySelectorAll('#preview [data-patch]')]
+  .findIndex((el) => el.querySelector('title').textContent === want), id);
+
+// A real click at the centroid of a patch's outline, as drawn on screen.
+async function clickPatch(page, id) {
+  const i = await patchIndex(page, id);
+  assert(i >= 0, `no patch ${id} drawn`);
+  const at = await page.evaluate((k) => {
+    const el = document.querySelector(`#preview [data-patch="${k}"]`);
+    const pts = el.getAttribute('d').split('Z')[0].slice(1).split('L').map((xy) => xy.split(' ').map(Number));
+    const c = pts.reduce(([x, y], [px, py]) => [x + px / pts.length, y + py / pts.length], [0, 0]);
+    const p = new DOMPoint(c[0], c[1]).matrixTransform(el.getScreenCTM());
+    return { x: p.x, y: p.y };
+  }, i);
+  await page.mouse.click(at.x, at.y);
+  return i;
+}
+
+// A patch's sewn length as the per-patch table shows it.
+const patchLength = (page, id) => page.evaluate((want) =>
+  document.querySelector(`[data-patch-family="${want}"]`).parentElement.lastElementChild.textContent, id);
+
+let topLoaded = false;
+await report.run('top_click_patch_choose_family_sew', async () => {
+  if (!svgReader) throw new Skip('the SVG reader is not in the library yet');
+  await change(page, () => page.setInputFiles('#regionFile', STAR));
+  assert(await page.isVisible('#topBox'), 'no quilt top controls');
+  assert(await page.$$eval('#preview [data-patch]', (p) => p.length) === 17, 'not 17 patches drawn');
+  assert((await attr(page, '#ditchPath', 'd') || '').length > 50, 'no ditch travel drawn');
+  assert(await page.isVisible('#planDownload'), 'no plan.json download');
+  topLoaded = true;
+  const i = await clickPatch(page, 'point-top-a');
+  assert(await page.inputValue('#patchPick') === String(i), `the click picked ${await page.inputValue('#patchPick')}, not ${i}`);
+  assert(await attr(page, `#preview [data-patch="${i}"]`, 'class') === 'patch picked', 'the picked patch is not marked');
+  assert(await page.inputValue('#patchScope') === 'patch', 'scope');
+  await change(page, () => page.selectOption('#patchFamily', 'echo'));
+  const echoLength = await patchLength(page, 'point-top-a');
+  await change(page, () => page.fill('[data-patch-param=spacing]', '0.3'));
+  assert(await patchLength(page, 'point-top-a') !== echoLength, `the patch's spacing changed nothing (${echoLength})`);
+  assert(await stat(page, 'pieces') === '1', `pieces ${await stat(page, 'pieces')}`);
+  assert(await stat(page, 'jumps') === '0', `jumps ${await stat(page, 'jumps')}`);
+  assert(await page.textContent('[data-patch-family="point-top-a"]') === 'echo', 'the patch is not echo');
+  assert(await page.textContent('[data-patch-family="point-top-b"]') === 'stipple', 'another star point changed');
+  // every patch of the background colour at once
+  await clickPatch(page, 'goose-left');
+  await page.selectOption('#patchScope', 'colour');
+  await change(page, () => page.selectOption('#patchFamily', 'spiral'));
+  for (const id of ['goose-left', 'goose-top', 'corner-sw', 'corner-ne']) {
+    assert(await page.textContent(`[data-patch-family="${id}"]`) === 'spiral', `${id} is not spiral`);
+  }
+  assert(await page.textContent('[data-patch-family="centre"]') === 'stipple', 'the centre changed');
+  assert(await stat(page, 'pieces') === '1' && await stat(page, 'jumps') === '0', 'not one line');
+  await shot(page, '09-top');
+});
+
+await report.run('top_downloads_match_cli_with_page_plan', async () => {
+  if (!topLoaded) throw new Skip('no top loaded');
+  if (!cliReady) throw new Skip('quiltc does not work yet');
+  const [dl] = await Promise.all([page.waitForEvent('download'), page.click('#planDownload')]);
+  const planFile = path.join(tmp, 'page-plan.json');
+  await dl.saveAs(planFile);
+  assert(dl.suggestedFilename() === 'sawtooth-star-plan.json', `plan file name ${dl.suggestedFilename()}`);
+  const plan = JSON.parse(fs.readFileSync(planFile, 'utf8'));
+  assert(JSON.stringify(plan) === JSON.stringify([
+    { match: { id: 'point-top-a' }, family: 'echo', params: { spacing: 0.3 } },
+    { match: { fill: '#f5f0e1' }, family: 'spiral' }]), `plan ${JSON.stringify(plan)}`);
+  const line = (await page.textContent('#cli')).trim();
+  const words = line.split(' ');
+  assert(words[0] === 'quiltc' && words[1] === 'quilt' && words.at(-2) === '-o', `command: ${line}`);
+  const args = words.slice(2, -2).map((w) => (w === 'sawtooth-star.svg' ? STAR : w === 'sawtooth-star-plan.json' ? planFile : w));
+  assert(args.includes(planFile), `the command does not use the plan: ${line}`);
+  for (const f of ['pat', 'svg', 'dxf', 'qli']) {
+    const got = await download(page, f);
+    assert(got.name === `sawtooth-star-quilt.${f}`, `file name ${got.name}`);
+    const out = path.join(tmp, `ref-top.${f}`);
+    const r = spawnSync(cli, ['quilt', ...args, '-q', '-o', out], { encoding: 'utf8', timeout: 60000 });
+    assert(r.status === 0, `quiltc quilt ${args.join(' ')}: ${r.stderr}`);
+    const want = fs.readFileSync(out);
+    assert(Buffer.compare(got.bytes, want) === 0, `.${f} differs from quiltc quilt ${args.join(' ')}: ${describeDiff(want, got.bytes)}`);
+  }
+});
+
+// After a failed SVG the worker holds no pattern: a download gives a message, never the last top.
+await report.run('no_stale_download_after_failed_svg', async () => {
+  if (!topLoaded) throw new Skip('no top loaded');
+  let e = await errorCount(page);
+  await page.setInputFiles('#regionFile', path.join(FIX, 'malformed.svg'));
+  await waitError(page, e);
+  const downloads = [];
+  page.on('download', (d) => downloads.push(d));
+  for (const f of ['pat', 'svg']) {
+    e = await errorCount(page);
+    await page.click(`#downloads [data-format=${f}]`);
+    const msg = await waitError(page, e);
+    assert(/nothing to download/.test(msg), `.${f}: ${msg}`);
+  }
+  assert(downloads.length === 0, `${downloads.length} files downloaded after the failed SVG`);
+  page.removeAllListeners('download');
+});
+
+// The visible text of every control's label and the name chromium gives it.
+async function labelsAndNames(page, cdp) {
+  const { root } = await cdp.send('DOM.getDocument', { depth: 0 });
+  const { nodeIds } = await cdp.send('DOM.querySelectorAll', { nodeId: root.nodeId, selector: '#controls input, #controls select, #stage input, #stage select' });
+  const out = [];
+  for (const nodeId of nodeIds) {
+    const { object } = await cdp.send('DOM.resolveNode', { nodeId });
+    const { result } = await cdp.send('Runtime.callFunctionOn', { objectId: object.objectId, returnByValue: true, functionDeclaration: `function () {
+      if (!this.getClientRects().length) return null; // not shown
+      const label = this.closest('label');
+      if (!label) return { id: this.id || this.outerHTML.slice(0, 60), visible: '' };
+      const copy = label.cloneNode(true);
+      for (const c of copy.querySelectorAll('input, select, button')) c.remove();
+      return { id: this.id || this.dataset.param || this.dataset.patchParam || this.value, visible: copy.textContent.replace(/\\s+/g, ' ').trim() };
+    }` });
+    if (!result.value) continue;
+    const { nodes } = await cdp.send('Accessibility.getPartialAXTree', { nodeId, fetchRelatives: false });
+    out.push({ ...result.value, name: nodes[0]?.name?.value ?? '' });
+  }
+  return out;
+}
+
+const JARGON = /\b(mst|tsp|tsp-time|r-seed|tip)\b/i;
+await report.run('labels_quilters_words_and_accessible_names', async () => {
+  if (!topLoaded) throw new Skip('no top loaded');
+  // a top dropped on the preview, as one chosen with the file button
+  const text = fs.readFileSync(STAR, 'utf8');
+  await change(page, () => page.evaluate((svg) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([svg], 'dropped-star.svg', { type: 'image/svg+xml' }));
+    document.getElementById('drop').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, text));
+  assert(await page.textContent('#topName') === 'dropped-star.svg: 17 patches', `top name: ${await page.textContent('#topName')}`);
+  assert(await page.$$eval('#preview [data-patch]', (p) => p.length) === 17, 'the dropped top is not drawn as patches');
+  await clickPatch(page, 'centre');
+  const cdp = await context.newCDPSession(page);
+  const checked = new Set();
+  for (const fam of await page.$$eval('#family option', (o) => o.map((x) => x.value))) {
+    await change(page, () => page.selectOption('#family', fam));
+    await page.selectOption('#patchFamily', fam);
+    for (const c of await labelsAndNames(page, cdp)) {
+      assert(c.visible !== '', `${c.id} has no visible label`);
+      assert(c.name === c.visible, `${c.id}: visible label '${c.visible}', accessible name '${c.name}'`);
+      checked.add(c.id);
+    }
+    const shown = await page.evaluate(() => [...document.querySelectorAll('#controls .label-text, #controls option, #controls legend, #stats dt, #patchStats')]
+      .filter((el) => el.closest('[hidden]') === null).map((el) => el.textContent).join(' | '));
+    const m = JARGON.exec(shown);
+    assert(m === null, `'${m && m[0]}' shown with ${fam}`);
+  }
+  await cdp.detach();
+  for (const id of ['skeleton', 'mst', 'tsp', 'tsp-time', 'r-seed', 'tip', 'patchFamily', 'seed', 'tie']) {
+    assert(checked.has(id), `the control ${id} was never checked`);
+  }
+});
+
+// No select narrower than its longest choice (desktop and phone).
+async function selectsCutOff(page) {
+  return page.evaluate(() => {
+    const ctx = document.createElement('canvas').getContext('2d');
+    const bad = [];
+    for (const s of document.querySelectorAll('select')) {
+      if (!s.getClientRects().length || s.closest('[hidden]')) continue;
+      const cs = getComputedStyle(s);
+      ctx.font = cs.font;
+      const widest = Math.max(...[...s.options].map((o) => ctx.measureText(o.textContent).width));
+      const room = s.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight) - 12; // the arrow
+      if (room < widest) bad.push(`${s.id || s.dataset.param || s.dataset.patchParam}: ${room.toFixed(0)} < ${widest.toFixed(0)} px`);
+    }
+    return bad;
+  });
+}
+
+await report.run('selects_not_cut_off', async () => {
+  if (!topLoaded) throw new Skip('no top loaded');
+  await change(page, () => page.selectOption('#family', 'vine'));
+  await page.selectOption('#patchFamily', 'pebbling');
+  let bad = await selectsCutOff(page);
+  assert(bad.length === 0, `cut off: ${bad.join(', ')}`);
+  await page.setViewportSize({ width: 390, height: 844 });
+  bad = await selectsCutOff(page);
+  await page.setViewportSize({ width: 1200, height: 900 });
+  assert(bad.length === 0, `cut off on a phone: ${bad.join(', ')}`);
+});
+
+// On a phone the preview and a message stay on screen while controls far below change.
+const inView = (page, sel) => page.evaluate((s) => {
+  const r = document.querySelector(s).getBoundingClientRect();
+  const hit = document.elementFromPoint(r.left + r.width / 2, r.top + Math.min(r.height / 2, 20));
+  return r.height > 0 && r.top >= -1 && r.bottom <= window.innerHeight + 1 && !!hit && document.querySelector(s).contains(hit);
+}, sel);
+
+await report.run('phone_preview_and_error_stay_in_view', async () => {
+  await page.setViewportSize({ width: 390, height: 844 });
+  try {
+    await page.locator('#tie').scrollIntoViewIfNeeded();
+    assert(await page.evaluate(() => window.scrollY) > 400, 'the page did not scroll: the test proves nothing');
+    await change(page, () => page.fill('#tie', '1'));
+    assert(await inView(page, '#tie'), 'the tie-off field is hidden under the preview');
+    assert(await inView(page, '#preview'), 'the preview scrolled out of view');
+    const e = await errorCount(page);
+    await page.fill('#tie', '500');
+    await waitError(page, e);
+    assert(await inView(page, '#error'), 'the message is out of view on a phone');
+    await change(page, () => page.fill('#tie', '0'));
+    // a failed SVG chosen while scrolled far down: its message is on screen too
+    await page.locator('#tie').scrollIntoViewIfNeeded();
+    const e2 = await errorCount(page);
+    await page.setInputFiles('#regionFile', path.join(FIX, 'malformed.svg'));
+    const msg = await waitError(page, e2);
+    assert(/^malformed\.svg: /.test(msg), `message: ${msg}`);
+    assert(await page.evaluate(() => window.scrollY) > 400, 'the page scrolled back up: the test proves nothing');
+    assert(await inView(page, '#error'), 'the SVG message is out of view on a phone');
+    await shot(page, '10-phone-error');
+  } finally {
+    await page.setViewportSize({ width: 1200, height: 900 });
+  }
 });
 
 const THREAD = [0xc1, 0x12, 0x1f];

@@ -1,23 +1,27 @@
 // The page: controls built from the library's parameter table, generation in
 // a Web Worker (worker.js), an SVG preview to scale with a ruler, a sew
 // animation, and downloads byte-identical to `quiltc generate` with the same
-// settings (the equivalent command line is shown under the stats).
+// settings (the equivalent command line is shown under the stats). An SVG
+// of several patches is a quilt top (top-view.js): sewn as `quiltc quilt`
+// does with the page's plan, which downloads as plan.json.
 // Test hooks: body[data-state] is loading | busy | ready | error;
 // #preview[data-generation] counts drawn results; 'quiltc:drawn' and
 // 'quiltc:error' events fire on document.
+import { MM_PER, fmt, buildParamControls, paramValues, showDefaults as showDefaultsIn } from './controls.js';
+import { plan, initTopView, loadTop, updatePatches, patchLayer, ditchLayer, topStats, showPatchDefaults, refreshEditor } from './top-view.js';
+
 const $ = (id) => document.getElementById(id);
 const FORMATS = [
   ['pat', 'pat', 'Innova AutoPilot'], ['qli', 'qli', 'Statler Stitcher'], ['bqm', 'bqm', 'Bernina Q-matic'],
   ['iqp', 'iqp', 'IntelliQuilter'], ['qcc', 'qcc', 'QuiltEZ'], ['plt', 'plt', 'HPGL plotters'],
   ['dxf', 'dxf', 'CAD / most long-arm software'], ['gcode', 'gcode', 'G-code (mm)'], ['svg', 'svg', 'drawing'],
 ];
-const HIDDEN_ROWS = new Set(['family', 'seed']);
-const MM_PER = { in: 25.4, mm: 1 };
 
 const worker = new Worker(new URL('worker.js', import.meta.url), { type: 'module' });
 let table = [];
 let families = []; // the library's, with their needs and defaults (qc_family_info)
 let regionSvg = null; // { name, text }
+let top = null; // { name, text } of an SVG holding several patches (a quilt top)
 let motifSvg = null; // { name, svg }
 let latest = null;
 let requestId = 0;
@@ -60,10 +64,8 @@ window.addEventListener('unhandledrejection', (e) => showError(`page error: ${e.
 
 const units = () => $('units').value;
 const mmPerUnit = () => MM_PER[units()];
-const fmt = (v, digits = 6) => String(+Number(v).toPrecision(digits));
 const familyRow = () => table.find((r) => r.name === 'family');
 const family = () => families.find((f) => f.name === $('family').value);
-const familyBit = () => 2 ** family().id;
 
 function buildFamilies() {
   const def = familyRow().def;
@@ -71,49 +73,9 @@ function buildFamilies() {
     .map((f) => `<option value="${f.name}" title="${f.summary}"${f.id === def ? ' selected' : ''}>${f.name}</option>`).join('');
 }
 
-function unitLabel(row) {
-  if (row.type === 'length') return units();
-  return row.unit === 'count' || row.unit === 'ratio' ? '' : row.unit;
-}
-
 // One control per parameter row of the chosen family: ranges and defaults in the page's units.
 function buildParams() {
-  const box = $('params');
-  const keep = {};
-  for (const el of box.querySelectorAll('[data-param]')) keep[el.dataset.param] = el.value;
-  box.innerHTML = '';
-  for (const row of table) {
-    if (HIDDEN_ROWS.has(row.name) || !(row.families & familyBit())) continue;
-    const label = document.createElement('label');
-    label.className = 'param';
-    label.title = row.help;
-    let input;
-    if (row.type === 'enum') {
-      input = document.createElement('select');
-      const choices = row.choices.split('|').filter((c) => c !== 'given');
-      const def = family().defaults[row.name]; // this family's own default, as the library resolves it
-      input.innerHTML = `<option value="">${def ? `default (${def})` : 'default'}</option>` +
-        choices.map((c) => `<option value="${c}">${c}</option>`).join('');
-    } else {
-      input = document.createElement('input');
-      input.type = 'number';
-      input.inputMode = 'decimal';
-      const scale = row.type === 'length' ? mmPerUnit() : 1;
-      input.min = fmt(row.min / scale, 4);
-      input.max = fmt(row.max / scale, 4);
-      input.step = row.type === 'int' ? '1' : 'any';
-      // a help text naming its own defaults ("default d/5; stipple d/3") is the better hint
-      input.placeholder = /\(default/.test(row.help) ? 'default'
-        : row.def_per_spacing ? `${row.def_per_spacing} × spacing` : fmt(row.def / scale, 4);
-    }
-    input.dataset.param = row.name;
-    input.setAttribute('aria-label', row.name);
-    if (keep[row.name] !== undefined) input.value = keep[row.name];
-    input.addEventListener(row.type === 'enum' ? 'change' : 'input', regenerateSoon);
-    const unit = unitLabel(row);
-    label.append(`${row.name}${unit ? ` (${unit})` : ''}`, input);
-    box.append(label);
-  }
+  buildParamControls({ box: $('params'), table, family: family(), units: units(), onChange: regenerateSoon });
   $('motifBox').hidden = !takesMotifs();
 }
 
@@ -134,14 +96,11 @@ function regionSpec() {
 
 // The settings for the worker; throws on a field that is not a number.
 function settings() {
-  const params = { family: $('family').value };
-  for (const el of $('params').querySelectorAll('[data-param]')) {
-    if (el.validity?.badInput) throw new Error(`${el.dataset.param}: not a number`);
-    if (el.value.trim() !== '') params[el.dataset.param] = el.value.trim();
-  }
+  const params = { family: $('family').value, ...paramValues($('params')) };
   for (const id of ['shapeW', 'shapeH', 'tie']) {
     if ($(id).validity.badInput || $(id).value.trim() === '') {
-      if (id !== 'shapeH' || $('shape').value === 'rect') throw new Error(`${$(id).closest('label').firstChild.textContent.trim()}: enter a number`);
+      if (id !== 'tie' && (top || regionSvg)) continue; // an SVG has its own size
+      if (id !== 'shapeH' || $('shape').value === 'rect') throw new Error(`${$(id).closest('label').textContent.trim()}: enter a number`);
     }
   }
   const motifs = [];
@@ -151,26 +110,27 @@ function settings() {
   }
   const tie = Number($('tie').value);
   if (!Number.isInteger(tie) || tie < 0 || tie > 100) throw new Error(`tie-off stitches: ${$('tie').value} is not a count from 0 to 100`);
-  return {
-    type: 'generate',
-    units: units(),
-    region: regionSvg ? { svg: regionSvg.text, name: regionSvg.name } : { shape: regionSpec() },
-    params,
-    seed: $('seed').value.trim() || '0',
-    motifs,
-    tie,
-  };
+  const s = { type: 'generate', units: units(), params, seed: $('seed').value.trim() || '0', motifs, tie };
+  if (top) return { ...s, top: { svg: top.text, name: top.name }, plan: plan.toPlan(top.patches), join: $('join').value };
+  return { ...s, region: regionSvg ? { svg: regionSvg.text, name: regionSvg.name } : { shape: regionSpec() } };
 }
+
+// The downloaded plan's file name, and the top's base name for the others.
+const baseName = () => top.name.replace(/\.svg$/i, '');
+const planName = () => `${baseName()}-plan.json`;
 
 // The same settings as a quiltc command line.
 function commandLine(s) {
   const q = (v) => (/^[\w.,:/+-]+$/.test(v) ? v : `'${v.replace(/'/g, "'\\''")}'`);
-  const a = ['quiltc', 'generate', '--region', q(regionSvg ? regionSvg.name : s.region.shape), '--units', s.units];
+  const a = s.top ? ['quiltc', 'quilt', q(s.top.name)] : ['quiltc', 'generate', '--region', q(regionSvg ? regionSvg.name : s.region.shape)];
+  if (s.top && s.plan.length) a.push('--plan', q(planName()));
+  a.push('--units', s.units);
   for (const [k, v] of Object.entries(s.params)) a.push(`--${k}`, q(String(v)));
   a.push('--seed', s.seed);
   if (s.motifs.length) a.push('--motif', q(s.motifs.map((m) => (typeof m === 'string' ? m : m.name)).join(',')));
-  if (s.tie) a.push('--tie', String(s.tie));
-  a.push('-o', 'pattern.pat');
+  if (s.tie || s.top) a.push('--tie', String(s.tie)); // quiltc quilt ties 3 unless told
+  if (s.top) a.push('--join', s.join);
+  a.push('-o', s.top ? 'quilt.pat' : 'pattern.pat');
   return a.join(' ');
 }
 
@@ -224,7 +184,8 @@ async function regenerate() {
     r.drawMs = performance.now() - t1;
     r.totalMs = performance.now() - t0;
     showStats(r);
-    showDefaults(r.resolved);
+    showDefaultsIn($('params'), table, r.resolved, units());
+    if (r.patches) showPatchDefaults(r.resolved);
     $('cli').textContent = commandLine(s);
     showError('');
     setState('ready');
@@ -284,9 +245,11 @@ function draw(r) {
   svg.setAttribute('viewBox', `${(-padL).toFixed(2)} ${(-pad).toFixed(2)} ${(w + padL + pad).toFixed(2)} ${(h + padL + pad).toFixed(2)}`);
   const regionD = r.rings.map((ring) => `M${ring.map(([x, y]) => `${x.toFixed(2)} ${y.toFixed(2)}`).join('L')}Z`).join('');
   const d = pathData(r.xy, r.flags);
+  if (r.patches) updatePatches(r.patches);
+  svg.classList.toggle('top', !!r.patches);
   svg.innerHTML = `<g transform="translate(0 ${h.toFixed(2)}) scale(1 -1)">${ruler(w, h, size)}
-    <path id="regionPath" d="${regionD}" fill-rule="evenodd"/>
-    <path id="stitchPath" d="${d}"/>
+    <path id="regionPath" d="${regionD}" fill-rule="evenodd"/>${r.patches ? patchLayer(r.patches) : ''}
+    <path id="stitchPath" d="${d}"/>${r.ditch ? ditchLayer(r.ditch) : ''}
     <path id="sewPath" d="${d}" stroke-width="${(size / 300).toFixed(3)}" visibility="hidden"/>
     <circle id="needle" r="${(size / 120).toFixed(2)}" visibility="hidden"/></g>`;
   svg.dataset.points = r.flags.length;
@@ -295,19 +258,15 @@ function draw(r) {
   prepareSew(r);
 }
 
-// Empty controls show the value the library resolved for them.
-function showDefaults(resolved) {
-  for (const el of $('params').querySelectorAll('[data-param]')) {
-    const row = table.find((t) => t.name === el.dataset.param);
-    const v = resolved[row.name];
-    if (v === undefined || v === null) continue;
-    if (row.type === 'enum') el.options[0].textContent = `default (${v})`;
-    else el.placeholder = fmt(row.type === 'length' ? v / mmPerUnit() : v, 4);
-  }
-}
-
 function showStats(r) {
   const s = r.stats;
+  $('patchStats').innerHTML = '';
+  if (r.patches) {
+    const t = topStats(r, units());
+    $('stats').innerHTML = t.rows.map(([k, v]) => `<div><dt>${k}</dt><dd data-stat="${k}">${v}</dd></div>`).join('');
+    $('patchStats').innerHTML = t.table;
+    return;
+  }
   const inch = units() === 'in';
   const len = inch ? `${(s.path_length_mm / 25.4).toFixed(1)} in` : `${(s.path_length_mm / 1000).toFixed(2)} m`;
   const thread = inch ? `${(s.thread_mm / 914.4).toFixed(1)} yd` : `${(s.thread_mm / 1000).toFixed(1)} m`;
@@ -327,25 +286,35 @@ function showStats(r) {
 
 function buildDownloads() {
   $('downloads').innerHTML = FORMATS.map(([f, ext, what]) =>
-    `<button type="button" data-format="${f}" data-ext="${ext}" title="${what}">.${ext}</button>`).join('');
+    `<button type="button" data-format="${f}" data-ext="${ext}" title="${what}">.${ext}</button>`).join('') +
+    '<button type="button" id="planDownload" data-format="plan" title="the patches\' patterns, for quiltc quilt --plan" hidden>plan.json</button>';
   for (const b of $('downloads').querySelectorAll('button')) b.addEventListener('click', () => download(b));
+}
+
+function save(name, bytes, type = 'application/octet-stream') {
+  const url = URL.createObjectURL(new Blob([bytes], { type }));
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10000);
 }
 
 async function download(button) {
   try {
     if (busy || dirty) throw new Error('the preview is still being generated; try again in a moment');
     if (!latest) throw new Error('nothing to download yet');
-    const r = await send({ type: 'export', format: button.dataset.format });
+    const f = button.dataset.format;
+    const r = await send({ type: 'export', format: f === 'plan' ? 'pat' : f }); // the worker refuses a stale pattern
     const s = latest.settings;
-    const name = `quiltc-${s.params.family}-${s.seed}.${button.dataset.ext}`;
-    const url = URL.createObjectURL(new Blob([r.bytes], { type: 'application/octet-stream' }));
-    const a = document.createElement('a');
-    a.href = url;
-    a.download = name;
-    document.body.append(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(url), 10000);
+    if (f === 'plan') { // the plan that gave the pattern on screen
+      if (!s.top || !s.plan.length) throw new Error('no patch has its own pattern: nothing to put in a plan');
+      save(planName(), `${JSON.stringify(s.plan, null, 1)}\n`, 'application/json');
+      return;
+    }
+    save(s.top ? `${baseName()}-quilt.${button.dataset.ext}` : `quiltc-${s.params.family}-${s.seed}.${button.dataset.ext}`, r.bytes);
   } catch (err) {
     showError(err.message);
   }
@@ -421,8 +390,24 @@ $('sewSpeed').addEventListener('input', showSpeed);
 showSpeed();
 
 // ---- region and motif files ----
+// An SVG of several patches is a quilt top; one shape (or an SVG the patch
+// reader refuses) is a block outline, as before.
 async function readRegionFile(file) {
-  regionSvg = { name: file.name, text: await file.text() };
+  const text = await file.text();
+  let patches = [];
+  try {
+    patches = (await send({ type: 'probe', svg: text, name: file.name })).patches;
+  } catch {
+    patches = [];
+  }
+  if (patches.length > 1) {
+    top = { name: file.name, text, patches };
+    regionSvg = null;
+    loadTop(patches);
+  } else {
+    top = null;
+    regionSvg = { name: file.name, text };
+  }
   $('shape').querySelector('[value=svg]').disabled = false;
   $('shape').value = 'svg';
   shapeFields();
@@ -433,11 +418,18 @@ function shapeFields() {
   const shape = $('shape').value;
   $('sizeW').hidden = shape === 'svg';
   $('sizeH').hidden = shape !== 'rect';
-  $('sizeW').firstChild.textContent = shape === 'rect' ? 'Width ' : 'Size ';
-  $('regionName').textContent = regionSvg && shape === 'svg' ? regionSvg.name : '';
+  $('sizeW').querySelector('.label-text').textContent = shape === 'rect' ? 'Width' : 'Size';
+  $('regionName').textContent = shape === 'svg' ? (regionSvg || top)?.name || '' : '';
+  $('topBox').hidden = !(top && shape === 'svg');
+  if ($('planDownload')) $('planDownload').hidden = !(top && shape === 'svg');
+  if (top && shape === 'svg') $('topName').textContent = `${top.name}: ${top.patches.length} patches`;
 }
 
-$('regionFile').addEventListener('change', (e) => e.target.files[0] && readRegionFile(e.target.files[0]));
+$('regionFile').addEventListener('change', (e) => {
+  const f = e.target.files[0];
+  e.target.value = ''; // choosing the same file again (fixed, say) reloads it; its name shows below
+  if (f) readRegionFile(f);
+});
 $('motifFile').addEventListener('change', async (e) => {
   const f = e.target.files[0];
   motifSvg = f ? { name: f.name, svg: await f.text() } : null;
@@ -456,6 +448,7 @@ drop.addEventListener('drop', (e) => {
 $('shape').addEventListener('change', () => {
   if ($('shape').value !== 'svg') {
     regionSvg = null;
+    top = null;
     $('regionFile').value = ''; // choosing the same file again reloads it
   }
   shapeFields();
@@ -465,14 +458,25 @@ for (const id of ['shapeW', 'shapeH', 'seed', 'tie']) $(id).addEventListener('in
 $('units').addEventListener('change', () => {
   const f = units() === 'mm' ? 25.4 : 1 / 25.4;
   for (const id of ['shapeW', 'shapeH']) if ($(id).value !== '') $(id).value = fmt($(id).value * f);
+  const lengths = new Set(table.filter((r) => r.type === 'length').map((r) => r.name));
   for (const el of $('params').querySelectorAll('[data-param]')) {
-    const row = table.find((r) => r.name === el.dataset.param);
-    if (row.type === 'length' && el.value !== '') el.value = fmt(el.value * f);
+    if (lengths.has(el.dataset.param) && el.value !== '') el.value = fmt(el.value * f);
   }
+  plan.rescale(lengths, f, fmt);
   buildParams();
+  refreshEditor();
   regenerate();
 });
-$('family').addEventListener('change', () => { buildParams(); regenerate(); });
+$('family').addEventListener('change', () => { buildParams(); refreshEditor(); regenerate(); });
+$('join').addEventListener('change', regenerate);
+initTopView({
+  table: () => table,
+  families: () => families,
+  units,
+  globalFamily: () => $('family').value,
+  changed: regenerateSoon,
+  fail,
+});
 $('shuffle').addEventListener('click', () => {
   $('seed').value = String(Math.floor(Math.random() * 2 ** 32));
   regenerate();

@@ -4,8 +4,8 @@
 // a quilt top (msg.top, msg.plan) also gives patches and ditch;
 // { type: 'export', id, format } -> { type: 'export', id, format, bytes }
 // (refused after a failed generate: never the previous pattern);
-// { type: 'probe', id, svg, name } -> { type: 'probe', id, patches } (how many
-// patches the SVG holds, 0 if it is no top);
+// { type: 'probe', id, svg, name } -> { type: 'probe', id, patches } (the
+// patches the SVG holds as a top, [] if the patch reader refuses it);
 // any failure -> { type: 'error', id, message }.
 import createQuiltc from './quiltc.mjs';
 import { Quiltc } from './quiltc-api.js';
@@ -36,9 +36,9 @@ onmessage = async (e) => {
       current = true;
     } else if (msg.type === 'probe') {
       current = false;
-      let n = 0;
-      try { n = api.topSvg(msg.svg, msg.name).length; } catch { n = 0; }
-      postMessage({ type: 'probe', id: msg.id, patches: n });
+      let patches = [];
+      try { patches = api.topSvg(msg.svg, msg.name); } catch { patches = []; }
+      postMessage({ type: 'probe', id: msg.id, patches });
     } else if (msg.type === 'export') {
       if (!current) throw new Error('nothing to download: the last settings gave no pattern');
       const bytes = api.export(msg.format);
