@@ -310,9 +310,11 @@ static void add_patch_stats(qcw_text *out, const qcw_job *job, size_t i)
     qcw__add(out, ",\"family\":");
     qcw__add_str(out, pr->order == SIZE_MAX ? "none" : qc_family_name(pr->family));
     if (pr->order != SIZE_MAX)
-        qcw__add(out, ",\"order\":%lu,\"length_mm\":%.3f,\"largest_gap_mm\":%.3f,\"pieces\":%lu",
+        qcw__add(out, ",\"order\":%lu,\"length_mm\":%.3f,\"largest_gap_mm\":%.3f,\"pieces\":%lu,"
+                 "\"farthest_fabric_mm\":%.3f,\"seam_bare\":%.4f%s",
                  (unsigned long)pr->order + 1, pr->length_mm, pr->largest_gap_mm,
-                 (unsigned long)pr->pieces);
+                 (unsigned long)pr->pieces, pr->farthest_fabric_mm, pr->seam_bare,
+                 pr->ditch_only ? ",\"ditch_only\":true" : "");
     qcw__add(out, "}");
 }
 

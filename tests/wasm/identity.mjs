@@ -174,6 +174,8 @@ const quiltCases = [
   { name: 'sawtooth_star_no_plan', params: { family: 'stipple', spacing: '0.5' }, seed: '9', oneLine: true },
   { name: 'sawtooth_star_fill_none_jump_mm', units: 'mm', join: 'jump', tie: 0, params: { family: 'echo', spacing: '8' },
     plan: [{ match: { fill: '#e67e22' }, family: 'none' }, { match: { class: 'background' }, family: 'meander', params: { spacing: '9mm' } }] },
+  // star points too small for a 3 in stipple: sewn round in the ditch, alike everywhere
+  { name: 'sawtooth_star_coarse_ditch_only', params: { family: 'stipple', spacing: '3' }, oneLine: true, ditchOnly: 8 },
   { name: 'sawtooth_star_rule_fits_no_patch', plan: [{ match: { id: 'nope' }, family: 'stipple' }], error: true },
 ];
 
@@ -235,6 +237,10 @@ for (const c of quiltCases) {
       const fam = Object.fromEntries(s.patches.map((p) => [p.id, p.family]));
       assert(fam.centre === 'pebbling' && fam['point-top-a'] === 'echo' && fam['goose-top'] === 'stipple' &&
         fam['corner-nw'] === 'spiral', `families ${JSON.stringify(fam)}`);
+    }
+    if (c.ditchOnly) {
+      const ditch = s.patches.filter((p) => p.ditch_only).map((p) => p.id);
+      assert(ditch.length === c.ditchOnly && ditch.every((id) => id.startsWith('point-')), `ditch only: ${ditch}`);
     }
     if (c.join === 'jump') assert(s.unquilted === 8 && s.ditch_mm === 0, `${s.unquilted} unquilted, ditch ${s.ditch_mm} mm`);
     compared++;

@@ -147,7 +147,7 @@ export function topStats(r, units) {
   ];
   const table = `<table><caption>Per patch</caption><thead><tr><th scope="col">patch</th><th scope="col">pattern</th>` +
     `<th scope="col">order</th><th scope="col">length</th></tr></thead><tbody>${s.patches.map((p, i) =>
-      `<tr data-patch-row="${i}"><td>${escape(patchName(r.patches[i]))}</td><td data-patch-family="${escape(p.id)}">${p.family === 'none' ? 'unquilted' : p.family}</td>` +
+      `<tr data-patch-row="${i}"><td>${escape(patchName(r.patches[i]))}</td><td data-patch-family="${escape(p.id)}">${p.family === 'none' ? 'unquilted' : p.ditch_only ? `${p.family}: too small, in the ditch only` : p.family}</td>` +
       `<td>${p.order ?? ''}</td><td>${p.length_mm === undefined ? '' : len(p.length_mm)}</td></tr>`).join('')}</tbody></table>`;
   return { rows, table };
 }
