@@ -411,7 +411,7 @@ svg_warnings_are_one_line_each() {
         [ "$(wc -l < err.txt)" -eq 2 ] &&
         grep -q "w.svg: warning: svg line 1, <use> (element 4): clip-path url(#c) is not applied" err.txt &&
         grep -q "w.svg: warning: svg line 1, <text> (element 5): text is not read" err.txt &&
-        "$QC" convert w.svg w2.pat 2> err2.txt && [ "$(wc -l < err2.txt)" -eq 2 ] &&
+        "$QC" convert -q w.svg w2.pat 2> err2.txt && [ "$(wc -l < err2.txt)" -eq 2 ] &&
         grep -q "N2G01X3.543Y3.543" w2.pat || { cat err.txt err2.txt; head -3 w2.pat; return 1; }
 }
 check svg_warnings_are_one_line_each svg_warnings_are_one_line_each

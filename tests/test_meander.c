@@ -491,7 +491,8 @@ static void meander_should_fit_a_patch_smaller_than_d(void)
 }
 
 /* A tile runs from its left port to the mirrored right port, so copies
- * join into one pantograph that never crosses itself. */
+ * join into one pantograph row that never crosses itself; each row is its
+ * own piece (the quilt is rolled on between rows). */
 static void meander_should_tile_edge_to_edge(void)
 {
     static const int modes[] = {QC_TILE_EDGE_TO_EDGE, QC_TILE_ALL_OVER};
@@ -515,7 +516,7 @@ static void meander_should_tile_edge_to_edge(void)
         qc_params_set(&ctx, &p, "repeat-cols", 3);
         qc_params_set(&ctx, &p, "repeat-rows", 2);
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, NULL, &res));
-        TEST_ASSERT_EQUAL_size_t(1, res.stats.pieces);
+        TEST_ASSERT_EQUAL_size_t(2, res.stats.pieces);
         first = res.path.pt[0];
         last = res.path.pt[res.path.npt - 1];
         /* starts at the first tile's entry, ends at the second row's entry
@@ -533,6 +534,12 @@ static void meander_should_tile_edge_to_edge(void)
             TEST_ASSERT_TRUE(flat.v[i].y >= -0.01 && flat.v[i].y <= 6 * IN + 0.01);
         }
         qc_points_free(&ctx, &flat);
+        qc_result_free(&ctx, &res);
+        /* half-drop: every other row half a tile to the right */
+        qc_params_set(&ctx, &p, "offset", 0.5);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, NULL, &res));
+        TEST_ASSERT_EQUAL_size_t(2, res.stats.pieces);
+        TEST_ASSERT_DOUBLE_WITHIN(0.01, 3.5 * w, res.stats.bbox.max.x - res.stats.bbox.min.x);
         qc_result_free(&ctx, &res);
         qc_region_free(&ctx, &r);
     }

@@ -4,7 +4,7 @@
  * side by side join into one continuous pantograph row. The fill, stipple,
  * branching and meander families build such tiles when params.tile is
  * edge-to-edge or all-over and lay them out repeat_cols x repeat_rows
- * themselves (qc_tile_layout: one piece per row; meander: qc_tile_repeat).
+ * themselves (qc_tile_layout: one piece per row).
  */
 #ifndef QUILTC_TILE_H
 #define QUILTC_TILE_H
@@ -46,7 +46,7 @@ int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 
 int qc_tile_layout(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
                    unsigned rows, double offset, qc_path *out);
 /* The same rows without offset, joined into one piece by a line along the
- * outer side edge (the layout before qc_tile_layout; the meander family's). */
+ * outer side edge (the layout before qc_tile_layout). */
 int qc_tile_repeat(qc_ctx *ctx, const qc_path *tile, double dx, double dy, unsigned cols,
                    unsigned rows, qc_path *out);
 

@@ -100,6 +100,14 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
     memset(&s, 0, sizeof s);
     if (!(d > 0.0))
         return qc__fail(ctx, QC_ERANGE, "meander spacing %g mm must be > 0", d);
+    /* the curve grows to GROW_LEN area / d with vertices d/4 or more apart:
+     * refuse what cannot fit before the distance grid is built */
+    if (4.0 * GROW_LEN * fabs(qc_region_area(region)) / (d * d) > (double)QC_MAX_POINTS)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "meander: about %.0f curve points at spacing %g mm exceed the limit "
+                        "of %lu; raise the spacing",
+                        4.0 * GROW_LEN * fabs(qc_region_area(region)) / (d * d), d,
+                        (unsigned long)QC_MAX_POINTS);
     rc = tiled ? qc_tile_ports(ctx, region, &ports[0], &ports[1]) : QC_OK;
     if (rc == QC_OK)
         rc = qc__sdf_build(ctx, region, sdf_step(region, d), &s);
@@ -148,14 +156,15 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
         else
             stats->largest_gap_mm = g;
     }
-    if (rc == QC_OK && tiled) { /* laid out as stipple lays its tiles (tile.c) */
+    if (rc == QC_OK && tiled) { /* rows as stipple lays them: a piece each (tile.c) */
         qc_bbox box = qc_region_bbox(region);
         unsigned cols = params->repeat_cols >= 1.0 ? (unsigned)params->repeat_cols : 1u;
         unsigned rows = params->repeat_rows >= 1.0 ? (unsigned)params->repeat_rows : 1u;
         double h = box.max.y - box.min.y;
         size_t k;
 
-        rc = qc_tile_repeat(ctx, &one, ports[1].x - ports[0].x, h, cols, rows, &rep);
+        rc = qc_tile_layout(ctx, &one, ports[1].x - ports[0].x, h, cols, rows,
+                            params->row_offset, &rep);
         for (k = 0; k < rep.npt; k++) /* the bottom row on the tile's own box */
             rep.pt[k].y += (double)(rows - 1) * h;
         if (rc == QC_OK)
@@ -176,5 +185,6 @@ const qc_family_desc qc__family_meander = {
     0, /* it samples its own seed tree, 2d apart */
     QC_PARAM_BIT(QC_PARAM_ID_WIGGLE) | QC_PARAM_BIT(QC_PARAM_ID_TURN_RADIUS) |
         QC_PARAM_BIT(QC_PARAM_ID_ITERATIONS) | QC_PARAM_BIT(QC_PARAM_ID_TILE) |
-        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS),
+        QC_PARAM_BIT(QC_PARAM_ID_REPEAT_COLS) | QC_PARAM_BIT(QC_PARAM_ID_REPEAT_ROWS) |
+        QC_PARAM_BIT(QC_PARAM_ID_ROW_OFFSET),
     qc_deco_meander, NULL};
