@@ -18,6 +18,7 @@
 
 #include "sample_internal.h"
 
+#define MARGIN_LINE 1.001
 #define PER_STEP 8      /* boundary samples per step along the row */
 #define PROBE_STEPS 12  /* bisection steps for the local width */
 #define KEEP_APART 0.75 /* from another stretch of the row, times step */
@@ -63,10 +64,13 @@ static double local_offset(const qc__rindex *ix, qc_vec2 q, qc_vec2 n, double of
 static int offer(qc_ctx *ctx, row_walk *w, qc_vec2 q, qc_vec2 n)
 {
     double c = local_offset(w->ix, q, n, w->offset);
-    qc_vec2 p = QC__V2(q.x + c * n.x, q.y + c * n.y);
+    qc_vec2 p;
 
+    if (c < w->margin && 2 * c >= w->margin * MARGIN_LINE)
+        c = w->margin;
     if (!(c >= w->margin))
         return QC_OK;
+    p = QC__V2(q.x + c * n.x, q.y + c * n.y);
     if (w->placed && qc_hypot(p.x - w->last.x, p.y - w->last.y) < w->step)
         return QC_OK;
     if (qc__near_grid_near(&w->grid, w->out, p, KEEP_APART * w->step) ||

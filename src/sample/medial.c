@@ -20,6 +20,8 @@
 #define CORNER_SLACK 1.01 /* just inside the margin, for the admission test */
 #define CORNER_TRIES 80   /* steps down the bisector looking for room */
 #define CORNER_TRY_STEP 0.05 /* times d */
+#define CORNER_REACH 3.0  /* else the nearest room within this * d of the tip */
+#define CORNER_SCAN 8.0   /* on a d / 8 lattice */
 
 typedef struct ridge {
     float f; /* squared boundary distance, cells */
@@ -59,6 +61,26 @@ static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, 
     return 0;
 }
 
+/* The point nearest v (on a d / 8 lattice within CORNER_REACH * d) that
+ * keeps the margin: where the bisector leaves a tip that curves away from
+ * it (a crescent's horn). 0 when there is none. */
+static int nearest_room(const qc__rindex *ix, qc_vec2 v, double d, double margin, qc_vec2 *at)
+{
+    long n = (long)(CORNER_REACH * CORNER_SCAN), i, j;
+    double h = d / CORNER_SCAN, best = HUGE_VAL;
+
+    for (j = -n; j <= n; j++)
+        for (i = -n; i <= n; i++) {
+            qc_vec2 p = QC__V2(v.x + (double)i * h, v.y + (double)j * h);
+            double r = qc_hypot(p.x - v.x, p.y - v.y);
+            if (r < best && qc__rindex_admits(ix, p, margin)) {
+                best = r;
+                *at = p;
+            }
+        }
+    return best < HUGE_VAL;
+}
+
 /* A point on each convex corner's bisector where the margin is just kept
  * from both seams (m / sin(theta / 2) from the corner), the points of out
  * nearer than CORNER_GAP * d to it dropped: the fill's nearest point can lie
@@ -95,7 +117,7 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
                 c = QC__V2(v.x + far * bx / bl, v.y + far * by / bl);
                 far += CORNER_TRY_STEP * d;
             }
-            if (!qc__rindex_admits(ix, c, margin))
+            if (!qc__rindex_admits(ix, c, margin) && !nearest_room(ix, v, d, margin, &c))
                 continue;
             for (k = w = 0; k < out->n; k++) /* drop the points crowding it */
                 if (qc_hypot(out->v[k].x - c.x, out->v[k].y - c.y) >= CORNER_GAP * d)
