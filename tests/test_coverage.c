@@ -281,8 +281,9 @@ static const int to_seams[] = {QC_FAMILY_VINE, QC_FAMILY_BRANCHING, QC_FAMILY_WA
 #define NTO_SEAMS (sizeof to_seams / sizeof to_seams[0])
 
 /* Goal: no fabric farther than 1.0 d from a stitch (worst over spacings and
- * seeds) on the shapes without points sharper than 60 deg, whose tips the
- * margin keeps bare further (docs/coverage.md). */
+ * seeds) on the shapes without points sharper than 60 deg; 1.6 d with them
+ * (the margin keeps a tip bare: a 23 deg horn 1.5 d deep). Measured 0.96 and
+ * 1.55 d at worst (vine; docs/coverage.md). */
 static void families_should_leave_no_fabric_far_from_a_stitch(void)
 {
     char msg[200];
@@ -294,14 +295,16 @@ static void families_should_leave_no_fabric_far_from_a_stitch(void)
             const figs *f = &table[to_seams[m]][k];
             snprintf(msg, sizeof msg, "%s on %s: fabric %.2f d from a stitch",
                      qc_family_name(to_seams[m]), shapes[k].name, f->farthest);
-            if (!shapes[k].sharp && !(f->farthest <= 1.0))
+            if (!(f->farthest <= (shapes[k].sharp ? 1.6 : 1.0)))
                 TEST_FAIL_MESSAGE(msg);
         }
 }
 
 /* Goal: at most 15% of the seams farther than 1/4 in from a stitch at
- * d = 0.35 and 0.6 in on shapes without sharp points; 25% with them (a
- * margin of 0.3 d keeps the last 0.7-1.2 d of a 30-45 deg tip bare). */
+ * d = 0.35 and 0.6 in; asserted 12% on shapes without sharp points and 20%
+ * with them (a margin of 0.3 d keeps the last d or so of a 30-45 deg tip
+ * bare). Measured 10% (wanderer, the heart's cusp) and 17% (vine) at worst
+ * (docs/coverage.md). */
 static void families_should_stitch_along_the_seams(void)
 {
     char msg[200];
@@ -313,7 +316,7 @@ static void families_should_stitch_along_the_seams(void)
             const figs *f = &table[to_seams[m]][k];
             snprintf(msg, sizeof msg, "%s on %s: %.0f%% of the seams farther than 1/4 in",
                      qc_family_name(to_seams[m]), shapes[k].name, 100 * f->seam);
-            if (!(f->seam <= (shapes[k].sharp ? 0.25 : 0.15)))
+            if (!(f->seam <= (shapes[k].sharp ? 0.20 : 0.12)))
                 TEST_FAIL_MESSAGE(msg);
         }
 }

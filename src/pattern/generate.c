@@ -62,6 +62,7 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
 {
     qc_sample_params sp;
     size_t i;
+    int row;
 
     if (p->points == QC_POINTS_GIVEN) {
         if (given == NULL || given->n == 0)
@@ -79,12 +80,14 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
     sp.spacing = p->spacing;
     sp.margin = p->margin;
     sp.seed = p->seed;
-    /* out to the seams, into corners, star points and strips; not for a
-     * family that reaches the seams itself, nor a tile (its copies join at
-     * its sides) */
-    QC__TRY(qc__sample_to_seams(ctx, region, &sp,
-                                !(family->needs & QC_FAMILY_OWN_SEAMS) && !is_tiled(family, p),
-                                out));
+    /* out to the seams, into corners, star points and strips; no row along
+     * the seams for a family that reaches them itself, nor a tile (its
+     * copies join at its sides) */
+    if ((family->needs & QC_FAMILY_OWN_SEAMS) || is_tiled(family, p))
+        row = QC__ROW_NONE;
+    else
+        row = p->skeleton == QC_SKELETON_TSP ? QC__ROW_TOUR : QC__ROW_TREE;
+    QC__TRY(qc__sample_to_seams(ctx, region, &sp, row, out));
     if (out->n == 0)
         return qc__fail(ctx, QC_EEMPTY,
                         "no point fits in the region at spacing %g mm with margin %g mm",

@@ -58,12 +58,14 @@ QC__HIDDEN int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, doubl
                                      double margin, double gap, qc_points *out);
 
 /*
- * The points qc_generate builds on: qc_sample's fill, then (seam_row) a row
- * along the seams with the fill kept clear of it, then corner and medial
- * seeds, then (seam_row) points in the holes left (to_seams.c). Appends;
- * on error out is as on entry.
+ * The points qc_generate builds on: qc_sample's fill, then (row not
+ * QC__ROW_NONE) a row along the seams with the fill kept clear of it, then
+ * corner and medial seeds, then (with a row) points in the holes left
+ * (to_seams.c). The row's step suits the skeleton: QC__ROW_TREE (a spanning
+ * tree chains it) or QC__ROW_TOUR. Appends; on error out is as on entry.
  */
+enum { QC__ROW_NONE = 0, QC__ROW_TREE, QC__ROW_TOUR };
 QC__HIDDEN int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region,
-                                   const qc_sample_params *sp, int seam_row, qc_points *out);
+                                   const qc_sample_params *sp, int row, qc_points *out);
 
 #endif

@@ -9,16 +9,19 @@
 
 #include "sample_internal.h"
 
-/* Times d: the row's offset inside the boundary, its step along it, how far
- * the fill keeps from it (further than the step, so the spanning tree
- * chains the row: its links are the shortest), and the largest hole left. */
+/* Times d: the row's offset inside the boundary; its step along it: for a
+ * tree, shorter than the fill keeps from it (ROW_CLEAR), so the spanning
+ * tree chains the row (its links are the shortest); for a tour, which
+ * follows the row anyway, about the fill's own spacing (a motif at every
+ * point: no denser border); and the largest hole left. */
 #define ROW_OFFSET 0.4
-#define ROW_STEP 0.6
+#define ROW_STEP_TREE 0.6
+#define ROW_STEP_TOUR 0.9
 #define ROW_CLEAR 0.7
 #define HOLE_GAP 0.85
 
 int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp,
-                        int seam_row, qc_points *out)
+                        int row, qc_points *out)
 {
     qc_sample_params fill_sp = *sp;
     qc_points fill = {0};
@@ -26,7 +29,7 @@ int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_pa
     size_t n0 = out->n;
     int rc;
 
-    if (!seam_row) {
+    if (row == QC__ROW_NONE) {
         QC__TRY(qc_sample(ctx, region, sp, out));
         return qc__sample_medial(ctx, region, d, m, out);
     }
@@ -34,7 +37,8 @@ int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_pa
     fill_sp.margin = fmax(m, (ROW_OFFSET + ROW_CLEAR) * d);
     rc = qc_sample(ctx, region, &fill_sp, &fill);
     if (rc == QC_OK)
-        rc = qc__sample_contour(ctx, region, fmax(ROW_OFFSET * d, m), ROW_STEP * d, m, out);
+        rc = qc__sample_contour(ctx, region, fmax(ROW_OFFSET * d, m),
+                                (row == QC__ROW_TOUR ? ROW_STEP_TOUR : ROW_STEP_TREE) * d, m, out);
     if (rc == QC_OK)
         rc = qc__points_append_clear(ctx, out, n0, &fill, ROW_CLEAR * d);
     if (rc == QC_OK)
