@@ -282,7 +282,7 @@ static const int to_seams[] = {QC_FAMILY_VINE, QC_FAMILY_BRANCHING, QC_FAMILY_WA
 
 /* Goal: no fabric farther than 1.0 d from a stitch (worst over spacings and
  * seeds) on the shapes without points sharper than 60 deg; 1.6 d with them
- * (the margin keeps a tip bare: a 23 deg horn 1.5 d deep). Measured 0.96 and
+ * (the margin keeps a tip bare: a 23 deg horn 1.5 d deep). Measured 0.98 and
  * 1.55 d at worst (vine; docs/coverage.md). */
 static void families_should_leave_no_fabric_far_from_a_stitch(void)
 {
@@ -303,7 +303,7 @@ static void families_should_leave_no_fabric_far_from_a_stitch(void)
 /* Goal: at most 15% of the seams farther than 1/4 in from a stitch at
  * d = 0.35 and 0.6 in; asserted 12% on shapes without sharp points and 20%
  * with them (a margin of 0.3 d keeps the last d or so of a 30-45 deg tip
- * bare). Measured 10% (wanderer, the heart's cusp) and 17% (vine) at worst
+ * bare). Measured 9% (wanderer, the heart's cusp) and 17% (vine) at worst
  * (docs/coverage.md). */
 static void families_should_stitch_along_the_seams(void)
 {

@@ -4,7 +4,8 @@
  * fill clear of the seam row leaves a band where neither reaches. Such a
  * hole is a bare patch in every family (the path runs through or round
  * the points), so points go where the distance to the nearest point
- * (a d / 4 raster) exceeds gap, farthest first, until none does.
+ * (a d / 8 raster: a coarser one misses a hole by a tenth of d) exceeds
+ * gap, farthest first, until none does.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -12,7 +13,7 @@
 #include "sample_internal.h"
 #include "../measure/measure_internal.h"
 
-#define CELLS_PER_D 4.0 /* raster: d / 4 */
+#define CELLS_PER_D 8.0 /* raster: d / 8 */
 
 typedef struct hole {
     float f; /* squared distance to the nearest point, cells */

@@ -51,7 +51,7 @@ QC__HIDDEN int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0,
 QC__HIDDEN int qc__sample_contour(qc_ctx *ctx, const qc_region *region, double offset,
                                   double step, double margin, qc_points *out);
 
-/* Adds points, farthest first, wherever a place inside (on a d / 4 raster)
+/* Adds points, farthest first, wherever a place inside (on a d / 8 raster)
  * lies farther than gap from every point of out, each at least margin
  * inside (holes.c). Appends. */
 QC__HIDDEN int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d,
