@@ -22,6 +22,7 @@
 #define CORNER_TRY_STEP 0.05 /* times d */
 #define CORNER_REACH 3.0  /* else the nearest room within this * d of the tip */
 #define CORNER_SCAN 8.0   /* on a d / 8 lattice */
+#define CORNER_SCANS 64   /* tips scanned so, at most (a serrated outline has thousands) */
 
 typedef struct ridge {
     float f; /* squared boundary distance, cells */
@@ -88,7 +89,7 @@ static int nearest_room(const qc__rindex *ix, qc_vec2 v, double d, double margin
 static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix, double d,
                         double margin, qc_points *out)
 {
-    size_t q, rs = 0, i, k, w;
+    size_t q, rs = 0, i, k, w, scans = 0;
 
     for (q = 0; q < region->nrings; q++) {
         size_t end = region->ring_end[q];
@@ -117,7 +118,8 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
                 c = QC__V2(v.x + far * bx / bl, v.y + far * by / bl);
                 far += CORNER_TRY_STEP * d;
             }
-            if (!qc__rindex_admits(ix, c, margin) && !nearest_room(ix, v, d, margin, &c))
+            if (!qc__rindex_admits(ix, c, margin) &&
+                (scans++ >= CORNER_SCANS || !nearest_room(ix, v, d, margin, &c)))
                 continue;
             for (k = w = 0; k < out->n; k++) /* drop the points crowding it */
                 if (qc_hypot(out->v[k].x - c.x, out->v[k].y - c.y) >= CORNER_GAP * d)
