@@ -11,14 +11,15 @@
  * or a quarter of the local width where that is less: the largest empty
  * disc touching the boundary there has radius R (found by bisection), and
  * R / 2 puts two rows a quarter of the width in from either side of a
- * strip, and runs the row into a convex corner along a line from its tip
- * until the margin stops it.
+ * strip, and runs the row into a convex corner along a line from its tip;
+ * where that falls inside the margin, the row runs on along the margin
+ * while the margin still fits (R above it), deeper into the corner.
  */
 #include <math.h>
 
 #include "sample_internal.h"
 
-#define MARGIN_LINE 1.001
+#define MARGIN_LINE 1.001 /* R at least this * margin: room for a point on the margin */
 #define PER_STEP 8      /* boundary samples per step along the row */
 #define PROBE_STEPS 12  /* bisection steps for the local width */
 #define KEEP_APART 0.75 /* from another stretch of the row, times step */
