@@ -373,6 +373,6 @@ int qc_deco_packing(qc_ctx *ctx, const qc_region *region, const qc_params *param
 
 const qc_family_desc qc__family_packing = {
     QC_FAMILY_PACKING, "packing", "pebbles replaced by motifs, one path (paper §5.3.2)",
-    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS,
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_NEEDS_MOTIFS | QC_FAMILY_OWN_SEAMS,
     QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED), qc_deco_packing,
     qc__pebble_param_default};

@@ -207,5 +207,5 @@ int qc__pebble_param_default(const qc_params *p, int id, double *value)
 
 const qc_family_desc qc__family_pebbling = {
     QC_FAMILY_PEBBLING, "pebbling", "packed circles drawn as one path (paper §5.3.1)",
-    QC_FAMILY_NEEDS_POINTS, QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED),
-    qc_deco_pebbling, qc__pebble_param_default};
+    QC_FAMILY_NEEDS_POINTS | QC_FAMILY_OWN_SEAMS,
+    QC_PARAM_BIT(QC_PARAM_ID_EDGE) | QC_PARAM_BIT(QC_PARAM_ID_R_SEED), qc_deco_pebbling, qc__pebble_param_default};

@@ -176,6 +176,9 @@ fail:
 
 /* ---- walking ---- */
 
+/* A turn whose sine is below this is no turn. */
+#define STRAIGHT 1e-9
+
 /* The half-edge after h turning by sense (+1 right-hand, -1 left-hand). */
 static uint32_t next_he(const qc__ftree *t, uint32_t h, int sense)
 {
@@ -282,7 +285,10 @@ static int join(qc_ctx *ctx, const qc__ftree *t, uint32_t h, uint32_t h2, int se
             return qc_points_push(ctx, out, add(c, b, R));
         return arc(ctx, out, c, R, a, b, sense, st->arc_step);
     }
-    if (sense * cr < 0.0 || (cr == 0.0 && dt > 0.0)) { /* inward: the mitre */
+    /* inward: the mitre; so too a turn too slight to round (collinear
+     * points, as a row along a straight seam: the arc would take a
+     * rounding error's turn for a full circle) */
+    if (sense * cr < 0.0 || (fabs(cr) <= STRAIGHT && dt > 0.0)) {
         double k = 1.0 + (n1.x * n2.x + n1.y * n2.y);
         qc_vec2 m;
 

@@ -49,11 +49,20 @@ int qc__check_given_inside(qc_ctx *ctx, const qc_region *region, const qc_points
                     box.min.y, box.max.y, margin);
 }
 
+/* Whether the family lays the region out as a tile (many regions: no
+ * seams at its sides); a family without tiles ignores the parameter. */
+static int is_tiled(const qc_family_desc *family, const qc_params *p)
+{
+    return (family->params & QC_PARAM_BIT(QC_PARAM_ID_TILE)) &&
+           (p->tile == QC_TILE_EDGE_TO_EDGE || p->tile == QC_TILE_ALL_OVER);
+}
+
 static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *p,
-                         const qc_points *given, qc_points *out)
+                         const qc_family_desc *family, const qc_points *given, qc_points *out)
 {
     qc_sample_params sp;
     size_t i;
+    int row;
 
     if (p->points == QC_POINTS_GIVEN) {
         if (given == NULL || given->n == 0)
@@ -71,9 +80,14 @@ static int sample_points(qc_ctx *ctx, const qc_region *region, const qc_params *
     sp.spacing = p->spacing;
     sp.margin = p->margin;
     sp.seed = p->seed;
-    QC__TRY(qc_sample(ctx, region, &sp, out));
-    /* into corners, star points and strips the fill cannot reach */
-    QC__TRY(qc__sample_medial(ctx, region, p->spacing, p->margin, out));
+    /* out to the seams, into corners, star points and strips; no row along
+     * the seams for a family that reaches them itself, nor a tile (its
+     * copies join at its sides) */
+    if ((family->needs & QC_FAMILY_OWN_SEAMS) || is_tiled(family, p))
+        row = QC__ROW_NONE;
+    else
+        row = p->skeleton == QC_SKELETON_TSP ? QC__ROW_TOUR : QC__ROW_TREE;
+    QC__TRY(qc__sample_to_seams(ctx, region, &sp, row, out));
     if (out->n == 0)
         return qc__fail(ctx, QC_EEMPTY,
                         "no point fits in the region at spacing %g mm with margin %g mm",
@@ -194,13 +208,15 @@ int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *give
         return qc__fail(ctx, QC_EEMPTY, "the region has no outline");
     if (family->needs & QC_FAMILY_NEEDS_POINTS) {
         trace(ctx, "sample");
-        QC__TRY(sample_points(ctx, region, p, given, &res->points));
+        QC__TRY(sample_points(ctx, region, p, family, given, &res->points));
     }
     QC__TRY(build_skeleton(ctx, region, p, res, &skel));
     trace(ctx, "decorate");
     QC__TRY(family->run(ctx, region, p, &skel, motifs, &res->path, &res->stats));
-    if (p->tile != QC_TILE_EDGE_TO_EDGE && p->tile != QC_TILE_ALL_OVER) /* tiles: many regions */
+    if (!is_tiled(family, p)) {
         QC__TRY(qc__path_keep_inside(ctx, region, family->name, &res->path, NULL));
+        qc__path_hull_in_box(&res->path, qc_region_bbox(region));
+    }
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
                         family->name);

@@ -18,56 +18,11 @@
 #define CORNER_MAX 150.0 /* corners sharper than this, degrees, get a point */
 #define CORNER_GAP 0.6   /* a corner point drops fill points nearer than this * d */
 #define CORNER_SLACK 1.01 /* just inside the margin, for the admission test */
-
-typedef struct near_grid {
-    double x0, y0, cell;
-    size_t gx, gy;
-    size_t *head, *next; /* chains over pts; SIZE_MAX ends */
-    size_t cap;
-} near_grid;
-
-static size_t ncell(const near_grid *g, qc_vec2 p, size_t *cx, size_t *cy)
-{
-    double fx = floor((p.x - g->x0) / g->cell), fy = floor((p.y - g->y0) / g->cell);
-
-    fx = fx < 0 ? 0 : (fx > (double)(g->gx - 1) ? (double)(g->gx - 1) : fx);
-    fy = fy < 0 ? 0 : (fy > (double)(g->gy - 1) ? (double)(g->gy - 1) : fy);
-    *cx = (size_t)fx;
-    *cy = (size_t)fy;
-    return *cy * g->gx + *cx;
-}
-
-static int grid_add(qc_ctx *ctx, near_grid *g, const qc_points *pts, size_t i)
-{
-    size_t cx, cy, c = ncell(g, pts->v[i], &cx, &cy);
-
-    if (i >= g->cap) {
-        size_t nc = g->cap * 2 + 64;
-        size_t *t = qc__realloc(ctx, g->next, g->cap * sizeof *t, nc * sizeof *t);
-        if (t == NULL)
-            return QC_ENOMEM;
-        g->next = t;
-        g->cap = nc;
-    }
-    g->next[i] = g->head[c];
-    g->head[c] = i;
-    return QC_OK;
-}
-
-static int grid_near(const near_grid *g, const qc_points *pts, qc_vec2 p, double r)
-{
-    size_t cx, cy, x, y;
-
-    ncell(g, p, &cx, &cy);
-    for (y = cy ? cy - 1 : 0; y <= cy + 1 && y < g->gy; y++)
-        for (x = cx ? cx - 1 : 0; x <= cx + 1 && x < g->gx; x++) {
-            size_t i;
-            for (i = g->head[y * g->gx + x]; i != SIZE_MAX; i = g->next[i])
-                if (qc_hypot(pts->v[i].x - p.x, pts->v[i].y - p.y) < r)
-                    return 1;
-        }
-    return 0;
-}
+#define CORNER_TRIES 80   /* steps down the bisector looking for room */
+#define CORNER_TRY_STEP 0.05 /* times d */
+#define CORNER_REACH 3.0  /* else the nearest room within this * d of the tip */
+#define CORNER_SCAN 8.0   /* on a d / 8 lattice */
+#define CORNER_SCANS 64   /* tips scanned so, at most (a serrated outline has thousands) */
 
 typedef struct ridge {
     float f; /* squared boundary distance, cells */
@@ -107,6 +62,26 @@ static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, 
     return 0;
 }
 
+/* The point nearest v (on a d / 8 lattice within CORNER_REACH * d) that
+ * keeps the margin: where the bisector leaves a tip that curves away from
+ * it (a crescent's horn). 0 when there is none. */
+static int nearest_room(const qc__rindex *ix, qc_vec2 v, double d, double margin, qc_vec2 *at)
+{
+    long n = (long)(CORNER_REACH * CORNER_SCAN), i, j;
+    double h = d / CORNER_SCAN, best = HUGE_VAL;
+
+    for (j = -n; j <= n; j++)
+        for (i = -n; i <= n; i++) {
+            qc_vec2 p = QC__V2(v.x + (double)i * h, v.y + (double)j * h);
+            double r = qc_hypot(p.x - v.x, p.y - v.y);
+            if (r < best && qc__rindex_admits(ix, p, margin)) {
+                best = r;
+                *at = p;
+            }
+        }
+    return best < HUGE_VAL;
+}
+
 /* A point on each convex corner's bisector where the margin is just kept
  * from both seams (m / sin(theta / 2) from the corner), the points of out
  * nearer than CORNER_GAP * d to it dropped: the fill's nearest point can lie
@@ -114,7 +89,7 @@ static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, 
 static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix, double d,
                         double margin, qc_points *out)
 {
-    size_t q, rs = 0, i, k, w;
+    size_t q, rs = 0, i, k, w, scans = 0;
 
     for (q = 0; q < region->nrings; q++) {
         size_t end = region->ring_end[q];
@@ -135,7 +110,16 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
                 continue;
             far = CORNER_SLACK * fmax(margin, 1e-3) / qc_sin(0.5 * th);
             c = QC__V2(v.x + far * bx / bl, v.y + far * by / bl);
-            if (!qc__rindex_admits(ix, c, margin))
+            /* flanks that curve in (a heart's cusp) leave the floor point
+             * too near a seam, or beyond the shape: the first point down
+             * the bisector that keeps the margin */
+            far = CORNER_SLACK * fmax(margin, 1e-3);
+            for (k = 0; !qc__rindex_admits(ix, c, margin) && k < CORNER_TRIES; k++) {
+                c = QC__V2(v.x + far * bx / bl, v.y + far * by / bl);
+                far += CORNER_TRY_STEP * d;
+            }
+            if (!qc__rindex_admits(ix, c, margin) &&
+                (scans++ >= CORNER_SCANS || !nearest_room(ix, v, d, margin, &c)))
                 continue;
             for (k = w = 0; k < out->n; k++) /* drop the points crowding it */
                 if (qc_hypot(out->v[k].x - c.x, out->v[k].y - c.y) >= CORNER_GAP * d)
@@ -153,7 +137,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
 {
     qc__gap_grid g;
     qc__rindex ix;
-    near_grid ng;
+    qc__near_grid ng;
     unsigned char *mask = NULL;
     ridge *rg = NULL;
     size_t cells, k, nr = 0, i, j;
@@ -166,13 +150,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     cells = g.nx * g.ny;
     g.f = qc__alloc_array(ctx, cells, sizeof *g.f);
     mask = qc__alloc(ctx, cells);
-    ng.cell = d;
-    ng.x0 = box.min.x;
-    ng.y0 = box.min.y;
-    ng.gx = (size_t)((box.max.x - box.min.x) / d) + 1;
-    ng.gy = (size_t)((box.max.y - box.min.y) / d) + 1;
-    ng.head = qc__alloc_array(ctx, ng.gx * ng.gy, sizeof *ng.head);
-    if (g.f == NULL || mask == NULL || ng.head == NULL) {
+    if (g.f == NULL || mask == NULL) {
         rc = QC_ENOMEM;
         goto out;
     }
@@ -205,28 +183,27 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
         have_ix = 1;
     if (rc == QC_OK)
         rc = corner_seeds(ctx, region, &ix, d, margin, out);
-    for (k = 0; k < ng.gx * ng.gy; k++)
-        ng.head[k] = SIZE_MAX;
+    if (rc == QC_OK)
+        rc = qc__near_grid_init(ctx, &ng, box, d);
     for (i = 0; i < out->n && rc == QC_OK; i++)
-        rc = grid_add(ctx, &ng, out, i);
+        rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nr && rc == QC_OK; k++) {
         qc_vec2 p;
         i = rg[k].at % g.nx;
         j = rg[k].at / g.nx;
         p.x = g.x0 + ((double)i + 0.5) * g.h;
         p.y = g.y0 + ((double)j + 0.5) * g.h;
-        if (grid_near(&ng, out, p, SEED_GAP * d) || !qc__rindex_admits(&ix, p, margin))
+        if (qc__near_grid_near(&ng, out, p, SEED_GAP * d) || !qc__rindex_admits(&ix, p, margin))
             continue;
         rc = qc_points_push(ctx, out, p);
         if (rc == QC_OK)
-            rc = grid_add(ctx, &ng, out, out->n - 1);
+            rc = qc__near_grid_add(ctx, &ng, out, out->n - 1);
     }
 out:
     if (have_ix)
         qc__rindex_free(ctx, &ix);
     qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
-    qc__free(ctx, ng.head, ng.gx * ng.gy * sizeof *ng.head);
-    qc__free(ctx, ng.next, ng.cap * sizeof *ng.next);
+    qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
     qc__free(ctx, mask, cells);
     return rc;

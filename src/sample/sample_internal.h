@@ -20,4 +20,52 @@ QC__HIDDEN int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, d
 QC__HIDDEN int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d,
                                  double margin, qc_points *out);
 
+/* Points of a growing set near a query point: a uniform grid of chains
+ * (near_grid.c). Queries answer for radii up to the cell size. */
+typedef struct qc__near_grid {
+    double x0, y0, cell;
+    size_t gx, gy;
+    size_t *head, *next; /* chains over the points; SIZE_MAX ends */
+    size_t cap;
+} qc__near_grid;
+
+QC__HIDDEN int qc__near_grid_init(qc_ctx *ctx, qc__near_grid *g, qc_bbox box, double cell);
+QC__HIDDEN void qc__near_grid_free(qc_ctx *ctx, qc__near_grid *g);
+/* Files point i of pts (pts may grow between calls; add in any order). */
+QC__HIDDEN int qc__near_grid_add(qc_ctx *ctx, qc__near_grid *g, const qc_points *pts, size_t i);
+/* Whether a filed point of pts lies nearer than r (<= cell) to p. */
+QC__HIDDEN int qc__near_grid_near(const qc__near_grid *g, const qc_points *pts, qc_vec2 p,
+                                  double r);
+/* Appends the points of cand that lie at least r from every point of
+ * out[ref0, out->n) (the ones appended are not compared with each other). */
+QC__HIDDEN int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0,
+                                       const qc_points *cand, double r);
+
+/*
+ * A row of points along the contour offset inside every ring (holes too):
+ * offset mm from the boundary, at most a quarter of the local width there
+ * (so a strip gets two rows and a corner's rows run into it), step mm
+ * apart along it, none nearer the boundary than margin (contour.c).
+ * Appends to out.
+ */
+QC__HIDDEN int qc__sample_contour(qc_ctx *ctx, const qc_region *region, double offset,
+                                  double step, double margin, qc_points *out);
+
+/* Adds points, farthest first, wherever a place inside (on a d / 8 raster)
+ * lies farther than gap from every point of out, each at least margin
+ * inside (holes.c). Appends. */
+QC__HIDDEN int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d,
+                                     double margin, double gap, qc_points *out);
+
+/*
+ * The points qc_generate builds on: qc_sample's fill, then (row not
+ * QC__ROW_NONE) a row along the seams with the fill kept clear of it, then
+ * corner and medial seeds, then (with a row) points in the holes left
+ * (to_seams.c). The row's step suits the skeleton: QC__ROW_TREE (a spanning
+ * tree chains it) or QC__ROW_TOUR. Appends; on error out is as on entry.
+ */
+enum { QC__ROW_NONE = 0, QC__ROW_TREE, QC__ROW_TOUR };
+QC__HIDDEN int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region,
+                                   const qc_sample_params *sp, int row, qc_points *out);
+
 #endif

@@ -1,0 +1,108 @@
+/*
+ * Holes in a point set: Bridson's sampler tries k candidates round each
+ * point, so it can leave a place more than d from every point, and the
+ * fill clear of the seam row leaves a band where neither reaches. Such a
+ * hole is a bare patch in every family (the path runs through or round
+ * the points), so points go where the distance to the nearest point
+ * (a d / 8 raster: a coarser one misses a hole by a tenth of d) exceeds
+ * gap, farthest first, until none does.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "sample_internal.h"
+#include "../measure/measure_internal.h"
+
+#define CELLS_PER_D 8.0 /* raster: d / 8 */
+
+typedef struct hole {
+    float f; /* squared distance to the nearest point, cells */
+    uint32_t at;
+} hole;
+
+static int cmp_hole(const void *pa, const void *pb) /* farthest first */
+{
+    const hole *a = pa, *b = pb;
+
+    if (a->f != b->f)
+        return a->f > b->f ? -1 : 1;
+    return (a->at > b->at) - (a->at < b->at);
+}
+
+int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double margin,
+                          double gap, qc_points *out)
+{
+    qc__gap_grid g;
+    qc__rindex ix;
+    qc__near_grid ng;
+    unsigned char *mask = NULL;
+    hole *hs = NULL;
+    size_t cells, k, nh = 0, i;
+    qc_bbox box = qc_region_bbox(region);
+    double lim;
+    int rc, have_ix = 0;
+
+    if (out->n == 0 || !(gap > 0))
+        return QC_OK;
+    qc__gap_grid_size(&g, box, d / CELLS_PER_D);
+    cells = g.nx * g.ny;
+    lim = gap / g.h;
+    lim *= lim;
+    g.f = qc__alloc_array(ctx, cells, sizeof *g.f);
+    mask = qc__alloc(ctx, cells);
+    qc__near_grid_init(ctx, &ng, box, fmax(gap, d)); /* head NULL on failure */
+    if (g.f == NULL || mask == NULL || ng.head == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx, g.ny,
+                           mask);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < cells; k++)
+        g.f[k] = (float)QC__GAP_FAR;
+    for (i = 0; i < out->n; i++)
+        qc__gap_seed_segment(&g, out->v[i], out->v[i]);
+    rc = qc__gap_transform(ctx, &g);
+    if (rc < 0)
+        goto out;
+    for (k = 0; k < cells; k++)
+        nh += mask[k] && (double)g.f[k] > lim;
+    if (nh == 0)
+        goto out;
+    hs = qc__alloc_array(ctx, nh, sizeof *hs);
+    if (hs == NULL) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
+    nh = 0;
+    for (k = 0; k < cells; k++)
+        if (mask[k] && (double)g.f[k] > lim) {
+            hs[nh].f = g.f[k];
+            hs[nh].at = (uint32_t)k;
+            nh++;
+        }
+    qsort(hs, nh, sizeof *hs, cmp_hole);
+    rc = qc__rindex_build(ctx, region, &ix);
+    have_ix = rc == QC_OK;
+    for (i = 0; i < out->n && rc == QC_OK; i++)
+        rc = qc__near_grid_add(ctx, &ng, out, i);
+    for (k = 0; k < nh && rc == QC_OK; k++) {
+        qc_vec2 p = QC__V2(g.x0 + ((double)(hs[k].at % g.nx) + 0.5) * g.h,
+                           g.y0 + ((double)(hs[k].at / g.nx) + 0.5) * g.h);
+
+        if (qc__near_grid_near(&ng, out, p, gap) || !qc__rindex_admits(&ix, p, margin))
+            continue;
+        rc = qc_points_push(ctx, out, p);
+        if (rc == QC_OK)
+            rc = qc__near_grid_add(ctx, &ng, out, out->n - 1);
+    }
+out:
+    if (have_ix)
+        qc__rindex_free(ctx, &ix);
+    qc__free(ctx, hs, nh * sizeof *hs);
+    qc__near_grid_free(ctx, &ng);
+    qc__free(ctx, g.f, cells * sizeof *g.f);
+    qc__free(ctx, mask, cells);
+    return rc;
+}
