@@ -61,7 +61,7 @@ check_per_patch() {
         grep -q '^patch 1 (id "centre"): ' out.txt && python3 -c '
 import re
 v = [float(m) for m in re.findall(r"farthest fabric (?:from a stitch: )?([0-9.]+) mm", open("out.txt").read())]
-assert len(v) == 18 and v[0] <= max(v[1:]), v  # a patch is measured against every stitch of the top
+assert len(v) == 18 and abs(v[0] - max(v[1:])) <= 0.6, v  # the top is its farthest patch, within a 0.5 mm cell
 '
 }
 check check_gives_each_patch_its_figures check_per_patch
