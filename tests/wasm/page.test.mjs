@@ -375,7 +375,7 @@ async function labelsAndNames(page, cdp) {
   return out;
 }
 
-const JARGON = /\b(mst|tsp|tsp-time|r-seed|tip)\b/i;
+const JARGON = /\b(mst|tsp|tsp-time|r-seed|tip|or3opt|oropt|2opt)\b/i;
 await report.run('labels_quilters_words_and_accessible_names', async () => {
   if (!topLoaded) throw new Skip('no top loaded');
   // a top dropped on the preview, as one chosen with the file button

@@ -27,13 +27,14 @@ export const PARAM_LABELS = {
   wiggle: 'Wiggle',
   'turn-radius': 'Tightest turn',
   iterations: 'Meander rounds',
+  offset: 'Row offset (× tile width)',
 };
 
 export const CHOICE_LABELS = {
   points: { triangle: 'triangle grid', square: 'square grid', hex: 'hexagon grid', snub: 'snub grid', poisson: 'random, even' },
   skeleton: { mst: 'branching tree', tsp: 'one closed loop' },
   mst: { delaunay: 'nearby points', complete: 'every pair' },
-  tsp: { greedy: 'quick', '2opt': 'untangled', oropt: 'most refined' },
+  tsp: { greedy: 'quick', '2opt': 'untangled', oropt: 'refined', or3opt: 'most refined' },
   edge: { strict: 'kept inside', overgrow: 'trimmed at the edge' },
   tile: { none: 'no', 'edge-to-edge': 'edge to edge', 'all-over': 'all over' },
   tip: { none: 'plain', circle: 'small circles' },
