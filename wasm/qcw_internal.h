@@ -41,6 +41,7 @@ struct qcw_job {
     size_t *chosen;       /* per patch: its rule + 1, 0 for the defaults */
     qc_quilt_result quilt;
     int sewn;             /* plan and region hold the top's line and outlines */
+    struct qcw_text *warnings; /* the last SVG read's warnings, JSON strings */
 };
 
 typedef struct qcw_text {
@@ -64,5 +65,8 @@ int qcw__fail(qcw_job *job, int status, const char *fmt, const char *arg);
 void qcw__drop_result(qcw_job *job);
 /* Frees the top, its plan and its line. */
 void qcw__drop_top(qcw_job *job);
+/* Options for reading an SVG whose warnings the job keeps (the last read's
+ * only: qcw_svg_warnings_json). */
+void qcw__svg_opts(qcw_job *job, qc_svg_opts *opts);
 
 #endif

@@ -69,6 +69,9 @@ void qcw_free(qcw_job *job)
     qc_motif_set_free(&job->ctx, &job->motifs);
     free(job->bytes);
     free(job->json);
+    if (job->warnings != NULL)
+        free(job->warnings->s);
+    free(job->warnings);
     free(job);
 }
 
@@ -219,8 +222,50 @@ static int place_region(qcw_job *job, int rc)
     return QC_OK;
 }
 
+static void keep_warning(void *ud, const char *text)
+{
+    qcw_text *t = (qcw_text *)ud;
+
+    if (t->n)
+        qcw__add(t, ",");
+    qcw__add_str(t, text);
+}
+
+/* Forgets the last SVG's warnings (a new outline is on its way). */
+static void forget_warnings(qcw_job *job)
+{
+    if (job->warnings == NULL)
+        return;
+    free(job->warnings->s);
+    memset(job->warnings, 0, sizeof *job->warnings);
+}
+
+void qcw__svg_opts(qcw_job *job, qc_svg_opts *opts)
+{
+    memset(opts, 0, sizeof *opts);
+    forget_warnings(job);
+    if (job->warnings == NULL)
+        job->warnings = (qcw_text *)calloc(1, sizeof *job->warnings);
+    if (job->warnings == NULL)
+        return; /* warnings dropped, the reading goes on */
+    opts->warn = keep_warning;
+    opts->warn_ud = job->warnings;
+}
+
+const char *qcw_svg_warnings_json(qcw_job *job)
+{
+    qcw_text t = {0};
+
+    qcw__add(&t, "[");
+    if (job->warnings != NULL && job->warnings->n > 0 && !job->warnings->failed)
+        qcw__add(&t, "%s", job->warnings->s);
+    qcw__add(&t, "]");
+    return qcw__finish_json(job, &t);
+}
+
 int qcw_region_shape(qcw_job *job, const char *spec, double mm_per_unit)
 {
+    forget_warnings(job);
     qcw__drop_top(job);
     qc_region_free(&job->ctx, &job->region);
     qc_clear_error(&job->ctx);
@@ -231,7 +276,7 @@ int qcw_region_svg(qcw_job *job, const char *svg, size_t len)
 {
     qc_svg_opts opts;
 
-    memset(&opts, 0, sizeof opts);
+    qcw__svg_opts(job, &opts);
     qcw__drop_top(job);
     qc_region_free(&job->ctx, &job->region);
     qc_clear_error(&job->ctx);

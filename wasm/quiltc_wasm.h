@@ -40,6 +40,9 @@ const char *qcw_resolved_json(qcw_job *job);
  * exactly as the CLI loads it. On failure the job has no region. */
 int qcw_region_shape(qcw_job *job, const char *spec, double mm_per_unit);
 int qcw_region_svg(qcw_job *job, const char *svg, size_t len);
+/* What the last SVG read (a block's outline or a top) could not honour: a
+ * JSON array of one-line warnings naming the element, as the CLI prints. */
+const char *qcw_svg_warnings_json(qcw_job *job);
 const double *qcw_region_xy(const qcw_job *job); /* x,y pairs */
 size_t qcw_region_vertices(const qcw_job *job);
 const uint32_t *qcw_region_ring_ends(const qcw_job *job);

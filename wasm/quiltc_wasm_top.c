@@ -47,6 +47,7 @@ int qcw_top_svg(qcw_job *job, const char *svg, size_t len, double mm_per_unit,
     size_t a, b;
     qc_vec2 at;
     char an[160], bn[160], line[512];
+    qc_svg_opts opts;
     int rc;
 
     qcw__drop_top(job);
@@ -54,7 +55,8 @@ int qcw_top_svg(qcw_job *job, const char *svg, size_t len, double mm_per_unit,
     qc_clear_error(&job->ctx);
     if (!(mm_per_unit > 0))
         return qcw__fail(job, QC_EINVAL, "units: %s", "mm per unit must be positive");
-    rc = qc_io_read_svg_patches(&job->ctx, svg, len, NULL, &job->patches);
+    qcw__svg_opts(job, &opts);
+    rc = qc_io_read_svg_patches(&job->ctx, svg, len, &opts, &job->patches);
     if (rc == QC_OK && qc_patches_overlap(&job->patches, 0, &a, &b, &at)) {
         patch_name(&job->patches.p[a], an, sizeof an);
         patch_name(&job->patches.p[b], bn, sizeof bn);

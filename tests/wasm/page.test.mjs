@@ -224,6 +224,23 @@ await report.run('svg_region_upload', async () => {
   await shot(page, '05-svg-region');
 });
 
+// What the reader cannot honour is said on the page as the CLI says it.
+await report.run('svg_warnings_shown_not_silent', async () => {
+  if (!svgReader) throw new Skip('the SVG reader is not in the library yet');
+  assert(await page.isHidden('#svgWarnings'), 'warnings shown for an SVG without any');
+  const g = await generation(page);
+  await page.setInputFiles('#regionFile', path.join(FIX, 'block-with-text.svg'));
+  await waitDrawn(page, g);
+  const lines = await page.$$eval('#svgWarnings li', (li) => li.map((x) => x.textContent));
+  assert(lines.length === 1 && /^warning: svg line 3, <text id="label">: text is not read/.test(lines[0]),
+    `warnings: ${JSON.stringify(lines)}`);
+  assert(await page.isVisible('#svgWarnings'), 'the warning is not visible');
+  const g2 = await generation(page);
+  await page.setInputFiles('#regionFile', path.join(FIX, 'block-hole.svg'));
+  await waitDrawn(page, g2);
+  assert(await page.isHidden('#svgWarnings'), 'the last SVG\'s warnings stayed');
+});
+
 await report.run('malformed_svg_shows_message', async () => {
   if (!svgReader) throw new Skip('the SVG reader is not in the library yet');
   const d = await attr(page, '#stitchPath', 'd');
@@ -262,6 +279,7 @@ async function clickPatch(page, id) {
   assert(i >= 0, `no patch ${id} drawn`);
   const at = await page.evaluate((k) => {
     const el = document.querySelector(`#preview [data-patch="${k}"]`);
+    el.scrollIntoView({ block: 'center', inline: 'center' }); // a click lands only in the viewport
     const pts = el.getAttribute('d').split('Z')[0].slice(1).split('L').map((xy) => xy.split(' ').map(Number));
     const c = pts.reduce(([x, y], [px, py]) => [x + px / pts.length, y + py / pts.length], [0, 0]);
     const p = new DOMPoint(c[0], c[1]).matrixTransform(el.getScreenCTM());

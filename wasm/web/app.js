@@ -149,6 +149,18 @@ function showError(message) {
   if (message) document.dispatchEvent(new CustomEvent('quiltc:error', { detail: message }));
 }
 
+// The SVG reader's warnings (a clip it cannot apply, text, ...): shown, never
+// a silent misread.
+function showWarnings(lines) {
+  const list = $('svgWarnings');
+  list.replaceChildren(...(lines || []).map((w) => {
+    const li = document.createElement('li');
+    li.textContent = `warning: ${w}`;
+    return li;
+  }));
+  list.hidden = !(lines && lines.length);
+}
+
 function fail(message) {
   setState('error');
   showError(message);
@@ -184,6 +196,7 @@ async function regenerate() {
     r.drawMs = performance.now() - t1;
     r.totalMs = performance.now() - t0;
     showStats(r);
+    showWarnings(r.warnings);
     showDefaultsIn($('params'), table, r.resolved, units());
     if (r.patches) showPatchDefaults(r.resolved);
     $('cli').textContent = commandLine(s);

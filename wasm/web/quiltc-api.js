@@ -63,6 +63,11 @@ export class Quiltc {
     this.withString(text, (p, n) => this.check(this.m._qcw_region_svg(this.job, p, n)));
   }
 
+  // What the last SVG read could not honour (a clip, text, ...): one line each.
+  svgWarnings() {
+    return this.json(this.m._qcw_svg_warnings_json(this.job));
+  }
+
   // settings.region: { shape: 'rect:8x8' } in settings.units, or { svg: text, name }.
   // SVG errors name the file, as the CLI's do (the library's shape errors name the shape).
   region(settings) {

@@ -1,6 +1,7 @@
 // Generation off the page's thread, so the page never freezes while the core
 // works. Messages: { type: 'generate', id, units, region, params, seed,
-// motifs, tie } -> { type: 'result', id, rings, resolved, xy, flags, stats, ms };
+// motifs, tie } -> { type: 'result', id, rings, resolved, warnings, xy, flags, stats, ms }
+// (warnings: what the SVG reader could not honour, one line each);
 // a quilt top (msg.top, msg.plan) also gives patches and ditch;
 // { type: 'export', id, format } -> { type: 'export', id, format, bytes }
 // (refused after a failed generate: never the previous pattern);
@@ -31,7 +32,8 @@ onmessage = async (e) => {
       const t0 = performance.now();
       const out = api.generate(msg);
       const ms = performance.now() - t0;
-      postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), resolved: api.resolved(), ...out, ms },
+      postMessage({ type: 'result', id: msg.id, rings: api.regionRings(), resolved: api.resolved(),
+        warnings: api.svgWarnings(), ...out, ms },
         [out.xy.buffer, out.flags.buffer]);
       current = true;
     } else if (msg.type === 'probe') {
