@@ -329,20 +329,10 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
     if (!(seam_mm > 0.0))
         seam_mm = SEAM_DEFAULT_MM;
     memset(&r, 0, sizeof r);
-    qc__gap_grid_size(&r.g, qc_region_bbox(region), resolution);
+    rc = qc__gap_grid_inside(ctx, region, resolution, &r.g, &mask);
     cells = r.g.nx * r.g.ny;
-    r.g.f = qc__alloc_array(ctx, cells, sizeof *r.g.f);
-    mask = qc__alloc(ctx, cells);
-    if (r.g.f == NULL || mask == NULL) {
-        rc = QC_ENOMEM;
-        goto out;
-    }
-    rc = qc__raster_inside(ctx, region, r.g.x0 + 0.5 * r.g.h, r.g.y0 + 0.5 * r.g.h, r.g.h,
-                           r.g.nx, r.g.ny, mask);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        r.g.f[k] = (float)QC__GAP_FAR;
     for (q = 0; q < np; q++) {
         size_t e = ends != NULL ? ends[q] : n, i;
         if (e > n)

@@ -127,13 +127,37 @@ static double clearance(const qc_region *region, const pieces *pc, qc_vec2 c)
     return sqrt(b2);
 }
 
+int qc__gap_grid_inside(qc_ctx *ctx, const qc_region *region, double resolution,
+                        qc__gap_grid *g, unsigned char **mask)
+{
+    size_t cells, k;
+    int rc = QC_ENOMEM;
+
+    qc__gap_grid_size(g, qc_region_bbox(region), resolution);
+    cells = g->nx * g->ny;
+    g->f = qc__alloc_array(ctx, cells, sizeof *g->f);
+    *mask = qc__alloc(ctx, cells);
+    if (g->f != NULL && *mask != NULL)
+        rc = qc__raster_inside(ctx, region, g->x0 + 0.5 * g->h, g->y0 + 0.5 * g->h, g->h,
+                               g->nx, g->ny, *mask);
+    if (rc < 0) {
+        qc__free(ctx, g->f, cells * sizeof *g->f);
+        qc__free(ctx, *mask, cells);
+        g->f = NULL;
+        *mask = NULL;
+        return rc;
+    }
+    for (k = 0; k < cells; k++)
+        g->f[k] = (float)QC__GAP_FAR;
+    return QC_OK;
+}
+
 static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
                       double resolution, qc_vec2 *centre_out)
 {
     const qc_vec2 *pts = pc->pts;
     size_t n = pc->n;
     qc__gap_grid g;
-    qc_bbox box;
     unsigned char *mask = NULL;
     size_t i, j, k, best_at = 0;
     double best = -1.0, r;
@@ -155,20 +179,9 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
         if (!isfinite(region->v[i].x) || !isfinite(region->v[i].y))
             return qc__fail(ctx, QC_ERANGE, "largest gap: region vertex %lu is not finite",
                             (unsigned long)i);
-    box = qc_region_bbox(region);
-    qc__gap_grid_size(&g, box, resolution);
-    g.f = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.f);
-    mask = qc__alloc(ctx, g.nx * g.ny);
-    if (g.f == NULL || mask == NULL) {
-        rc = QC_ENOMEM;
-        goto out;
-    }
-    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx,
-                           g.ny, mask);
+    rc = qc__gap_grid_inside(ctx, region, resolution, &g, &mask);
     if (rc < 0)
         goto out;
-    for (k = 0; k < g.nx * g.ny; k++)
-        g.f[k] = (float)QC__GAP_FAR;
     {
         size_t b = 0, q;
         for (q = 0; q < (pc->ends != NULL ? pc->nends : 1); q++) {

@@ -20,6 +20,11 @@ typedef struct qc__gap_grid {
 
 /* Sizes g over box at resolution (raised until at most 2^22 cells); f NULL. */
 QC__HIDDEN void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution);
+/* The raster every use starts from: g sized over the region's box at
+ * resolution, every cell QC__GAP_FAR, and *mask (nx * ny bytes) 1 where a
+ * cell's centre is inside. QC_OK, or an error with g->f and *mask NULL. */
+QC__HIDDEN int qc__gap_grid_inside(qc_ctx *ctx, const qc_region *region, double resolution,
+                                   qc__gap_grid *g, unsigned char **mask);
 /* Zeroes the cells segment ab passes through (points up to a cell outside
  * the box go to its edge cells). */
 QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);

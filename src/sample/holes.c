@@ -9,6 +9,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "sample_internal.h"
 #include "../measure/measure_internal.h"
@@ -44,23 +45,15 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
 
     if (out->n == 0 || !(gap > 0))
         return QC_OK;
-    qc__gap_grid_size(&g, box, d / CELLS_PER_D);
+    memset(&ng, 0, sizeof ng);
+    rc = qc__gap_grid_inside(ctx, region, d / CELLS_PER_D, &g, &mask);
     cells = g.nx * g.ny;
     lim = gap / g.h;
     lim *= lim;
-    g.f = qc__alloc_array(ctx, cells, sizeof *g.f);
-    mask = qc__alloc(ctx, cells);
-    qc__near_grid_init(ctx, &ng, box, fmax(gap, d)); /* head NULL on failure */
-    if (g.f == NULL || mask == NULL || ng.head == NULL) {
-        rc = QC_ENOMEM;
-        goto out;
-    }
-    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx, g.ny,
-                           mask);
+    if (rc == QC_OK)
+        rc = qc__near_grid_init(ctx, &ng, box, fmax(gap, d));
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        g.f[k] = (float)QC__GAP_FAR;
     for (i = 0; i < out->n; i++)
         qc__gap_seed_segment(&g, out->v[i], out->v[i]);
     rc = qc__gap_transform(ctx, &g);

@@ -146,20 +146,10 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
 
     memset(&ng, 0, sizeof ng);
     memset(&ix, 0, sizeof ix);
-    qc__gap_grid_size(&g, box, d / CELLS_PER_D);
+    rc = qc__gap_grid_inside(ctx, region, d / CELLS_PER_D, &g, &mask);
     cells = g.nx * g.ny;
-    g.f = qc__alloc_array(ctx, cells, sizeof *g.f);
-    mask = qc__alloc(ctx, cells);
-    if (g.f == NULL || mask == NULL) {
-        rc = QC_ENOMEM;
-        goto out;
-    }
-    rc = qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h, g.nx, g.ny,
-                           mask);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        g.f[k] = (float)QC__GAP_FAR;
     qc__gap_seed_region(&g, region);
     rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
