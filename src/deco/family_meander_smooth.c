@@ -25,69 +25,11 @@
 #define BEND_INNER 0.05 /* the bend's new vertex lies this far inside, times d */
 #define BEND_STEPS 16   /* places tried across the chord, each side */
 
-/* The segments of a flattened path, binned in a uniform grid. */
-typedef struct seg_bins {
-    size_t gx, gy;
-    double x0, y0, h;
-    size_t *start;  /* gx gy + 1 */
-    uint32_t *seg;  /* segment numbers, cell by cell */
-    size_t nseg, cap_start, cap_seg;
-} seg_bins;
-
-static void cell_range(const seg_bins *b, qc_vec2 p, qc_vec2 q, size_t *x0, size_t *x1,
-                       size_t *y0, size_t *y1)
+/* Segment k of an open polyline ends at the next point. */
+static uint32_t next_point(const void *ud, uint32_t k)
 {
-    double ax = (fmin(p.x, q.x) - b->x0) / b->h, bx = (fmax(p.x, q.x) - b->x0) / b->h;
-    double ay = (fmin(p.y, q.y) - b->y0) / b->h, by = (fmax(p.y, q.y) - b->y0) / b->h;
-
-    *x0 = ax <= 0.0 ? 0 : ax >= (double)(b->gx - 1) ? b->gx - 1 : (size_t)ax;
-    *x1 = bx <= 0.0 ? 0 : bx >= (double)(b->gx - 1) ? b->gx - 1 : (size_t)bx;
-    *y0 = ay <= 0.0 ? 0 : ay >= (double)(b->gy - 1) ? b->gy - 1 : (size_t)ay;
-    *y1 = by <= 0.0 ? 0 : by >= (double)(b->gy - 1) ? b->gy - 1 : (size_t)by;
-}
-
-/* Bins the segments p[i] p[i + 1] of the open polyline p[0..n). */
-static int bin_segments(qc_ctx *ctx, seg_bins *b, const qc_vec2 *p, size_t n, double h)
-{
-    qc_vec2 lo = p[0], hi = p[0];
-    size_t i, ns = n - 1, nc, total = 0;
-
-    for (i = 1; i < n; i++) {
-        lo.x = fmin(lo.x, p[i].x), lo.y = fmin(lo.y, p[i].y);
-        hi.x = fmax(hi.x, p[i].x), hi.y = fmax(hi.y, p[i].y);
-    }
-    while ((hi.x - lo.x) / h * ((hi.y - lo.y) / h) > 4.0 * (double)ns + 64.0)
-        h *= 1.5;
-    b->h = h;
-    b->x0 = lo.x;
-    b->y0 = lo.y;
-    b->gx = (size_t)((hi.x - lo.x) / h) + 1;
-    b->gy = (size_t)((hi.y - lo.y) / h) + 1;
-    nc = b->gx * b->gy;
-    QC__TRY(QC__RESERVE(ctx, b->start, b->cap_start, nc + 1));
-    memset(b->start, 0, (nc + 1) * sizeof *b->start);
-    for (i = 0; i < ns; i++) { /* count per cell */
-        size_t x0, x1, y0, y1, x, y;
-        cell_range(b, p[i], p[i + 1], &x0, &x1, &y0, &y1);
-        for (y = y0; y <= y1; y++)
-            for (x = x0; x <= x1; x++)
-                b->start[y * b->gx + x + 1]++;
-    }
-    for (i = 0; i < nc; i++)
-        b->start[i + 1] += b->start[i];
-    total = b->start[nc];
-    QC__TRY(QC__RESERVE(ctx, b->seg, b->cap_seg, total ? total : 1));
-    for (i = 0; i < ns; i++) { /* fill: start[c] advances to the end of cell c */
-        size_t x0, x1, y0, y1, x, y;
-        cell_range(b, p[i], p[i + 1], &x0, &x1, &y0, &y1);
-        for (y = y0; y <= y1; y++)
-            for (x = x0; x <= x1; x++)
-                b->seg[b->start[y * b->gx + x]++] = (uint32_t)i;
-    }
-    memmove(b->start + 1, b->start, nc * sizeof *b->start);
-    b->start[0] = 0;
-    b->nseg = ns;
-    return QC_OK;
+    (void)ud;
+    return k + 1;
 }
 
 static int crosses(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
@@ -105,7 +47,6 @@ typedef struct smooth {
     qc_points flat;    /* the whole path flattened */
     uint32_t *owner;   /* per flat segment: its span */
     size_t owner_cap;
-    seg_bins bins;
     qc__rindex ix;     /* the region's outline, with an sdf */
 } smooth;
 
@@ -163,6 +104,7 @@ static int find_crossings(qc_ctx *ctx, smooth *w, const qc_path *path, size_t sp
                           const qc__sdf *sdf, double h, unsigned char *hit, size_t *found)
 {
     size_t k, i, j, c, pi = 1, nf;
+    qc__seg_grid grid;
 
     w->flat.n = 0;
     *found = 0;
@@ -194,18 +136,19 @@ static int find_crossings(qc_ctx *ctx, smooth *w, const qc_path *path, size_t sp
         }
     if (nf < 4)
         return QC_OK;
-    QC__TRY(bin_segments(ctx, &w->bins, w->flat.v, nf, h));
-    for (c = 0; c < w->bins.gx * w->bins.gy; c++)
-        for (i = w->bins.start[c]; i < w->bins.start[c + 1]; i++)
-            for (j = i + 1; j < w->bins.start[c + 1]; j++) {
-                size_t s = w->bins.seg[i], t = w->bins.seg[j], gap = s > t ? s - t : t - s;
-                if (gap < 2 || gap + 1 == w->bins.nseg) /* neighbours (a closed path's ends meet) */
+    QC__TRY(qc__seg_grid_build(ctx, &grid, w->flat.v, nf - 1, next_point, NULL, h, 4.0));
+    for (c = 0; c < grid.gx * grid.gy; c++)
+        for (i = grid.start[c]; i < grid.start[c + 1]; i++)
+            for (j = i + 1; j < grid.start[c + 1]; j++) {
+                size_t s = grid.seg[i], t = grid.seg[j], gap = s > t ? s - t : t - s;
+                if (gap < 2 || gap + 2 == nf) /* neighbours (a closed path's ends meet) */
                     continue;
                 if (!crosses(w->flat.v[s], w->flat.v[s + 1], w->flat.v[t], w->flat.v[t + 1]))
                     continue;
                 (*found)++;
                 hit[w->owner[s]] = hit[w->owner[t]] = 1;
             }
+    qc__seg_grid_free(ctx, &grid);
     return QC_OK;
 }
 
@@ -348,7 +291,5 @@ done:
     if (sdf != NULL)
         qc__rindex_free(ctx, &w.ix);
     qc__free(ctx, w.owner, w.owner_cap * sizeof *w.owner);
-    qc__free(ctx, w.bins.start, w.bins.cap_start * sizeof *w.bins.start);
-    qc__free(ctx, w.bins.seg, w.bins.cap_seg * sizeof *w.bins.seg);
     return rc;
 }
