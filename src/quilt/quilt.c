@@ -256,6 +256,15 @@ static int sew_ditch_only(quilter *q, size_t i, qc_vec2 entry)
     return QC_OK;
 }
 
+/* Patch i takes its place in the sewing order, with the family used. */
+static void mark_sewn(quilter *q, size_t i, int family)
+{
+    q->out->patch[i].family = family;
+    q->out->patch[i].order = q->out->norder;
+    q->out->order[q->out->norder++] = (uint32_t)i;
+    q->sewn[i] = 1;
+}
+
 static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
 {
     const qc_patch_job *job = &q->jobs[i];
@@ -274,10 +283,7 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
         qc_params resolved;
 
         QC__TRY(qc_params_resolve(q->ctx, &p, &resolved));
-        pr->family = resolved.family;
-        pr->order = q->out->norder;
-        q->out->order[q->out->norder++] = (uint32_t)i;
-        q->sewn[i] = 1;
+        mark_sewn(q, i, resolved.family);
         return sew_ditch_only(q, i, entry);
     }
     if (rc < 0) {
@@ -291,15 +297,12 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
                         pa->id != NULL && pa->id[0] ? pa->id : "",
                         pa->id != NULL && pa->id[0] ? "\")" : "", msg);
     }
-    pr->family = res.params.family;
+    mark_sewn(q, i, res.params.family);
     pr->length_mm = qc_curve_length(&res.path, 0.05);
     pr->largest_gap_mm = res.stats.largest_gap_mm;
     pr->farthest_fabric_mm = res.stats.farthest_fabric_mm;
     pr->seam_bare = res.stats.seam_bare;
     pr->pieces = qc_path_pieces(&res.path);
-    pr->order = q->out->norder;
-    q->out->order[q->out->norder++] = (uint32_t)i;
-    q->sewn[i] = 1;
     for (c = 0; c <= res.path.ncmd && rc >= 0; c++) {
         if (c == res.path.ncmd || (res.path.cmd[c] == QC_PATH_MOVE && c > c0)) {
             if (c > c0)
