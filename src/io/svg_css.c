@@ -15,7 +15,7 @@
 const char *const qc__css_prop_name[QC__CSS_NPROPS] = {
     "fill", "fill-rule", "stroke-dasharray", "display", "visibility", "clip-path", "mask"};
 
-static void trim(const char **s, size_t *n)
+void qc__svg_trim(const char **s, size_t *n)
 {
     while (*n > 0 && qc__is_space(**s)) {
         (*s)++;
@@ -44,11 +44,11 @@ int qc__css_decl(const char *s, size_t n, const char *prop, const char **val, si
             nn = colon - i;
             v = s + colon + 1;
             vn = j - colon - 1;
-            trim(&name, &nn);
-            trim(&v, &vn);
+            qc__svg_trim(&name, &nn);
+            qc__svg_trim(&v, &vn);
             if (vn >= 10 && memcmp(v + vn - 10, "!important", 10) == 0) {
                 vn -= 10;
-                trim(&v, &vn);
+                qc__svg_trim(&v, &vn);
             }
             if (nn == plen && memcmp(name, prop, plen) == 0) {
                 *val = v;
@@ -205,7 +205,7 @@ static int parse_chunk(qc__css *c, const qc__css_chunk *ch, qc__svg_warner *warn
             const char *w = s + i;
             size_t wn = open - i;
 
-            trim(&w, &wn);
+            qc__svg_trim(&w, &wn);
             qc__svg_warn(warn, "svg line %lu, <style>: \"%.*s\" is not a rule quiltc reads: "
                                "skipped", ch->line, short_len(wn), w);
             i = open + 1;
@@ -216,7 +216,7 @@ static int parse_chunk(qc__css *c, const qc__css_chunk *ch, qc__svg_warner *warn
             const char *w = s + i;
             size_t wn = open - i;
 
-            trim(&w, &wn);
+            qc__svg_trim(&w, &wn);
             qc__svg_warn(warn, "svg line %lu, <style>: \"%.*s\" (an at-rule) is not read: its "
                                "rules are skipped", ch->line, short_len(wn), w);
             i = close + 1;
@@ -233,7 +233,7 @@ static int parse_chunk(qc__css *c, const qc__css_chunk *ch, qc__svg_warner *warn
                 continue;
             sel = s + from;
             sn = k - from;
-            trim(&sel, &sn);
+            qc__svg_trim(&sel, &sn);
             from = k + 1;
             if (simple_selector(sel, sn, &kind, &name, &len)) {
                 if (c->n >= QC__CSS_MAX_RULES) {

@@ -238,6 +238,8 @@ QC__HIDDEN void qc__css_match_element(const qc__css *c, const char *type, size_t
                                       const char *id, const char *cls, qc__css_match *m);
 /* The cascaded value of property p among the matched rules: 1 and *val. */
 QC__HIDDEN int qc__css_get(const qc__css_match *m, int p, const char **val, size_t *vlen);
+/* Drops white space (newlines too) from both ends of s[0..n). */
+QC__HIDDEN void qc__svg_trim(const char **s, size_t *n);
 /* The last declaration of prop in a declaration list ("a:b; c:d"), value
  * trimmed and without !important: 1 and *val. */
 QC__HIDDEN int qc__css_decl(const char *s, size_t n, const char *prop, const char **val,

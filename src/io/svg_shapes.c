@@ -81,16 +81,6 @@ static int name_is(const walker *k, const char *name)
 
 /* ---- style and presentation attributes ---- */
 
-static void trim(const char **s, size_t *n)
-{
-    while (*n > 0 && qc__is_space(**s)) {
-        (*s)++;
-        (*n)--;
-    }
-    while (*n > 0 && qc__is_space((*s)[*n - 1]))
-        (*n)--;
-}
-
 /* A presentation property p: the style attribute's declaration, else the
  * style sheets' rules, else the attribute of the same name. */
 static int property(const walker *k, int p, const char **val, size_t *vlen)
@@ -107,7 +97,7 @@ static int property(const walker *k, int p, const char **val, size_t *vlen)
         return 0;
     *val = a->value;
     *vlen = a->value_len;
-    trim(val, vlen);
+    qc__svg_trim(val, vlen);
     return 1;
 }
 
