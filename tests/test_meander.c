@@ -359,12 +359,17 @@ static void meander_should_meet_the_goals_on_every_shape(void)
             TEST_ASSERT_EQUAL_size_t_MESSAGE(0, m[k][s].crossings, msg);
             /* inside (the two pieces are joined by one straight jump) */
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].outside < (k == S_PIECES ? 1.0 : 0.02) * IN, msg);
-            /* the curve grows to the length of lines d apart */
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].seq > 0.9 * dd[k] && m[k][s].seq < 1.1 * dd[k], msg);
+            /* the curve grows to the length of lines d apart, the outermost
+             * nearer the seam than d/2 (a narrow shape is mostly rim) */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].seq > 0.8 * dd[k] && m[k][s].seq < 1.1 * dd[k], msg);
             /* today's bounds, short of the goals (farthest fabric 0.65 d,
-             * evenness 1.4, turn d/4, straight 2 d): they catch regressions */
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].farthest <= (acute ? 1.9 : 1.0), msg);
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.65, msg);
+             * evenness 1.4, turn d/4, straight 2 d): they catch regressions
+             * (farthest fabric 0.76-0.79 d on the blocks while the curve
+             * kept 0.4 d off the seams, 0.69-0.71 d now; evenness 1.36-1.55
+             * then, up to 1.65 now: the thread near the seams is not in
+             * the middle) */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].farthest <= (acute ? 1.9 : k == S_BLOCK || k == S_HOLES ? 0.74 : 1.0), msg);
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.7, msg);
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].turn >= 0.12 * dd[k], msg);
             /* (the pieces' figure is the jump between them: generate sews each piece on its own) */
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 12.0 : 4.0), msg);
@@ -650,15 +655,17 @@ static void meander_should_grow_along_strips_and_into_star_points(void)
 /* Issue 16's corner goals on its pieced corpus (test_coverage measures
  * every family the same way): the nearest stitch to every 90, 45, 36 and
  * 31 degree corner within 0.9, 1.3, 1.5 and 1.6 d, at d = 0.35 and 0.6 in,
- * seeds 1 and 2 (before the tongues: 3.03 d at 45, 4.45 d at 31); and no
- * crossing anywhere. */
-static void meander_should_reach_into_the_corners_of_pieced_shapes(void)
+ * seeds 1 and 2 (before the tongues: 3.03 d at 45, 4.45 d at 31); no
+ * crossing anywhere; and issue 17's seam goal: at most 15% of the seams
+ * farther than 1/4 in from a stitch (49-92% while the curve kept 0.4 d
+ * off the boundary with waves out to 0.56 d: 1/4 in is 0.42 d at 0.6 in). */
+static void meander_should_reach_into_the_corners_and_along_the_seams(void)
 {
     static const double lo[4] = {80, 41, 34, 25}, hi[4] = {100, 50, 41, 34};
     static const double goal[4] = {0.9, 1.3, 1.5, 1.6}, spacing[2] = {0.35, 0.6};
     size_t nshapes, k, i;
     const pieced_shape *shapes = pieced_shapes(&nshapes);
-    double worst[4] = {0, 0, 0, 0};
+    double worst[4] = {0, 0, 0, 0}, seam = 0;
     int s, e, b;
 
     for (k = 0; k < nshapes; k++) {
@@ -678,7 +685,8 @@ static void meander_should_reach_into_the_corners_of_pieced_shapes(void)
                 TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, (uint64_t)e, NULL, 0, &res));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &res.path, 0.01, &flat, &ends));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_fabric_measure(&ctx, &r, flat.v, flat.n, ends.i,
-                                                               ends.n, d / 10, 0, corner, &fab));
+                                                               ends.n, fmin(d / 10, 0.5), 0,
+                                                               corner, &fab));
                 for (i = 0; i < ends.n; i++) {
                     size_t n = 0;
                     TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v + from,
@@ -688,6 +696,10 @@ static void meander_should_reach_into_the_corners_of_pieced_shapes(void)
                 }
                 snprintf(msg, sizeof msg, "%s d %.2f in seed %d", shapes[k].name, spacing[s], e);
                 TEST_ASSERT_EQUAL_size_t_MESSAGE(0, c, msg);
+                seam = fmax(seam, fab.seam_bare);
+                snprintf(msg, sizeof msg, "%s d %.2f in seed %d: %.1f%% of the seams bare",
+                         shapes[k].name, spacing[s], e, 100 * fab.seam_bare);
+                TEST_ASSERT_TRUE_MESSAGE(fab.seam_bare <= 0.15, msg);
                 for (i = 0; i < r.nv; i++) {
                     double a = qc_region_corner_angle(&r, i);
                     for (b = 0; b < 4; b++)
@@ -705,8 +717,8 @@ static void meander_should_reach_into_the_corners_of_pieced_shapes(void)
             }
         qc_region_free(&ctx, &r);
     }
-    printf("corner reach, worst: 90 %.2f d, 45 %.2f d, 36 %.2f d, 31 %.2f d\n", worst[0], worst[1],
-           worst[2], worst[3]);
+    printf("corner reach, worst: 90 %.2f d, 45 %.2f d, 36 %.2f d, 31 %.2f d; seams bare %.1f%%\n",
+           worst[0], worst[1], worst[2], worst[3], 100 * seam);
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
@@ -750,7 +762,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(meander_should_meet_the_goals_on_every_shape);
     RUN_TEST(meander_should_grow_along_strips_and_into_star_points);
-    RUN_TEST(meander_should_reach_into_the_corners_of_pieced_shapes);
+    RUN_TEST(meander_should_reach_into_the_corners_and_along_the_seams);
     RUN_TEST(meander_should_be_more_even_than_stipple);
     RUN_TEST(meander_should_give_the_same_bytes_for_the_same_seed);
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);

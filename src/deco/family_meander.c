@@ -14,9 +14,12 @@
 #include "family_meander.h"
 #include "../curve/keep_inside.h"
 
-#define CLEAR 0.4         /* distance kept from the boundary, times d */
+#define CLEAR 0.22        /* distance kept from the boundary, times d: the
+                           * seam within 1/4 in (0.42 d at d = 0.6 in) of a
+                           * stitch, the mouths of the channels too */
 #define SDF_STEP (1.0 / 3.0) /* distance grid, times d */
-#define GROW_LEN 1.0      /* the curve grows to area / d times this */
+#define GROW_LEN 1.0      /* the curve grows to area / d times this ... */
+#define RIM_LEN 1.0       /* ... and the rim's share of what the clearance frees */
 #define GAP_RES (1.0 / 6.0)
 #define CHECK_TOL 0.01   /* flattening for the crossing check, mm (as the tests measure) */
 
@@ -27,6 +30,22 @@ static double sdf_step(const qc_region *region, double d)
     double side = fmin(b.max.x - b.min.x, b.max.y - b.min.y);
 
     return fmin(SDF_STEP * d, side / 8.0);
+}
+
+/* The length of region's rings, mm. */
+static double perimeter(const qc_region *r)
+{
+    double len = 0.0;
+    size_t k, i = 0;
+
+    for (k = 0; k < r->nrings; k++) {
+        size_t first = i, end = r->ring_end[k];
+        for (; i < end; i++) {
+            qc_vec2 a = r->v[i], b = r->v[i + 1 < end ? i + 1 : first];
+            len += qc_hypot(b.x - a.x, b.y - a.y);
+        }
+    }
+    return len;
 }
 
 /* The boundary point nearest p. */
@@ -119,7 +138,10 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
     o.turn = params->turn_radius;
     o.wiggle = params->wiggle;
     o.iterations = (size_t)params->iterations;
-    o.max_len = GROW_LEN * fabs(qc_region_area(region)) / d;
+    /* lines d apart, the outermost CLEAR d (not d/2) in from the boundary:
+     * a strip of width W holds (W + d - 2 CLEAR d) / d of them */
+    o.max_len = GROW_LEN * (fabs(qc_region_area(region)) +
+                            RIM_LEN * (0.5 - CLEAR) * d * perimeter(region)) / d;
     o.seed = params->seed;
     o.sdf = &s;
     o.open = tiled;

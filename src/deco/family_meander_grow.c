@@ -25,8 +25,12 @@
 #define REACH 1.5        /* repulsion radius, times d: beyond d, so that with
                           * the length fixed the lines even out at d */
 
-#define CLEAR_WAVE 2.5   /* wavelength of the clearance's waves, times d */
-#define CLEAR_SWING 0.4  /* their amplitude, times the clearance */
+#define CLEAR_WAVE 2.0   /* wavelength of the clearance's waves, times d */
+#define CLEAR_SWING 0.3  /* their amplitude, times the clearance (waves out
+                          * past 1/4 in at d = 0.6 in leave the seam bare) */
+#define RIM_BAND 0.5     /* vertices this far (times d) beyond the clearance ... */
+#define RIM_PULL 0.3     /* ... are drawn onto it by this share of the excess:
+                          * lobes near a seam flatten into runs along it */
 #define LINE_TABLE 64
 #define WALL 0.25        /* the hard wall, times the clearance (the mirror pushes first) */
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
@@ -365,7 +369,8 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         qc_vec2 f = g->f[i], m;
         double w = circumradius(a, p, b) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
-        double push = 0.0;
+        double push = 0.0, pull = 0.0;
+        qc_vec2 pull_dir = QC__V2(0.0, 0.0);
         double mx, my, len, v;
 
         if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
@@ -380,6 +385,13 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
                            : mirror(g, v * d / (clearance(g, o, p) * scale_at(g, p)), d);
             f.x += push * grad.x;
             f.y += push * grad.y;
+            if (v > 0.0) { /* the rim: drawn onto the clearance contour */
+                double c = clearance(g, o, p) * scale_at(g, p), e = v - c;
+                if (e > 0.0 && e < RIM_BAND * d) {
+                    pull = RIM_PULL * e * (1.0 - e / (RIM_BAND * d));
+                    pull_dir = grad;
+                }
+            }
         }
         if (push > g->line_f[LINE_TABLE / 2]) /* pressed to the wall: keep it smooth */
             w = FAIR_TIGHT;
@@ -387,8 +399,8 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         m.y = w * (0.5 * (a.y + b.y) - p.y) + REPEL * d * f.y;
         mx = amp * (2.0 * qc_rng_unit(rng) - 1.0);
         my = amp * (2.0 * qc_rng_unit(rng) - 1.0);
-        m.x += mx;
-        m.y += my;
+        m.x += mx - pull * pull_dir.x;
+        m.y += my - pull * pull_dir.y;
         len = qc_hypot(m.x, m.y);
         if (len > cap) {
             m.x *= cap / len;
