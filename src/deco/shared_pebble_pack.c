@@ -871,26 +871,30 @@ static size_t reach_tries(const qc_region *region, double d)
     return n;
 }
 
-/* Distance from x to the nearest pebble's edge (negative inside one). */
-static double bare(pack *P, qc_vec2 x)
+/* Distance from x to the nearest pebble's edge when at most reach (its
+ * pebble in *a), else HUGE_VAL. */
+static double bare(pack *P, qc_vec2 x, double reach, uint32_t *a)
 {
-    uint32_t a = nearest(P, x);
+    uint32_t near[NEAR];
 
-    return a == QC__PEB_NONE ? HUGE_VAL : dist(x, P->pb->c[a]) - P->pb->r[a];
+    if (nearest_few(P, x, reach, near) == 0)
+        return HUGE_VAL;
+    *a = near[0];
+    return dist(x, P->pb->c[near[0]]) - P->pb->r[near[0]];
 }
 
 /* Pebble (x, c), clear of every pebble and the boundary, hung from the
- * nearest pebble: tangent to it, through a filler, or by a bridge. */
+ * nearest pebble: tangent to it, else through a filler, else slid to
+ * touch it when too near for a filler; else left out. */
 static void attach(pack *P, qc_vec2 x, double c)
 {
     qc__pebbles *pb = P->pb;
-    uint32_t a = nearest(P, x);
+    uint32_t a = QC__PEB_NONE;
     qc_vec2 u, x0;
-    double gap, f;
+    double gap = bare(P, x, c + 2 * pb->r_first, &a) - c, f;
 
     if (a == QC__PEB_NONE)
         return;
-    gap = dist(x, pb->c[a]) - pb->r[a] - c;
     if (gap <= pb->touch) {
         place(P, x, c, a, QC__PEB_NONE, 0);
         return;
@@ -924,11 +928,12 @@ static void into_corner(pack *P, qc_vec2 p, qc_vec2 v, qc_vec2 q)
     qc__pebbles *pb = P->pb;
     qc_vec2 e1 = unit_from(v, p), e2 = unit_from(v, q), u;
     double cosa = e1.x * e2.x + e1.y * e2.y, s, lo, hi, cap;
+    uint32_t a;
     int it;
 
     if (e1.x * e2.y - e1.y * e2.x <= 0 || cosa < qc_cos(CORNER_DEG * QC_PI / 180))
         return; /* reflex, straight, or blunt */
-    if (bare(P, v) <= CORNER_OK_D * P->d)
+    if (bare(P, v, CORNER_OK_D * P->d, &a) <= CORNER_OK_D * P->d)
         return;
     u = unit_from(QC__V2(0, 0), QC__V2(e1.x + e2.x, e1.y + e2.y));
     s = sqrt(fmax(0, 0.5 * (1 - cosa))); /* sine of half the angle */
@@ -969,7 +974,8 @@ static void along_seam(pack *P, qc_vec2 a, qc_vec2 b)
     for (j = 0; j < m; j++) {
         double at = (j + 0.5) * len / (double)m, r;
         qc_vec2 s = QC__V2(a.x + t.x * at, a.y + t.y * at), x0;
-        if (bare(P, s) <= SEAM_D * P->d)
+        uint32_t near;
+        if (bare(P, s, SEAM_D * P->d, &near) <= SEAM_D * P->d)
             continue;
         x0 = QC__V2(s.x + n.x * lift, s.y + n.y * lift);
         r = ray(P, x0, 0, n, pb->r_first, QC__PEB_NONE, QC__PEB_NONE);
