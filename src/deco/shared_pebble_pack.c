@@ -6,6 +6,8 @@
  * towards its parent until it touches it. Phase 2 grows leaves away from
  * their parent and pebbles touching two others along the two's common
  * tangent circles, until they touch one more pebble or the boundary.
+ * Phase 3 (ours, issue 16) puts pebbles into the corners and along the
+ * seams the first two left bare.
  *
  * Every growth keeps the pebble tangent to what it hangs from: a circle
  * (x0 + u s, r0 + s) keeps the point x0 - u r0 and grows nested, so the
