@@ -25,7 +25,7 @@ void tearDown(void)
 {
 }
 
-enum { R_SQUARE, R_HOLE, R_CIRCLE, R_STAR };
+enum { R_SQUARE, R_HOLE, R_CIRCLE, R_STAR, R_TRIANGLE };
 enum { L_SQUARE, L_TRIANGLE, L_JITTER };
 
 static void make_region(int kind, qc_region *r)
@@ -34,6 +34,11 @@ static void make_region(int kind, qc_region *r)
     qc_vec2 hole[4] = {{35, 35}, {35, 65}, {65, 65}, {65, 35}};
 
     memset(r, 0, sizeof *r);
+    if (kind == R_TRIANGLE) { /* a half-square triangle: 90 and two 45 deg corners */
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, r, sq, 3));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, r));
+        return;
+    }
     if (kind == R_CIRCLE || kind == R_STAR) {
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, kind == R_CIRCLE ? "circle:100"
                                                                             : "star:120", 1, r));
@@ -384,6 +389,71 @@ static void pebbling_should_repeat_for_a_seed(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Distance from x to the nearest pebble's edge. */
+static double to_pebbles(const qc__pebbles *pb, qc_vec2 x)
+{
+    double best = HUGE_VAL;
+    size_t i;
+
+    for (i = 0; i < pb->n; i++)
+        best = fmin(best, qc_hypot(x.x - pb->c[i].x, x.y - pb->c[i].y) - pb->r[i]);
+    return best;
+}
+
+/* Phase 3: every corner sharper than 150 deg has a pebble within 1 d of its
+ * tip (0.8 d already, or one put there at the radius that brings it 1 d
+ * from the tip), and the seams, looked at every d / 10, lie at most 0.35 d
+ * from a pebble but where none fits (asserted: 93% of them; measured 97%,
+ * 97% and 99% on the triangle, the star and the square with a hole; the
+ * triangle 85%, its 45 deg corners 1.07 d from a pebble, without phase 3);
+ * the invariants (no overlap, tangent to the parent, one path that never
+ * crosses) hold with the pebbles phase 3 adds (check_pattern). */
+static void pebbling_should_reach_into_corners_and_along_seams(void)
+{
+    static const int regions[] = {R_TRIANGLE, R_STAR, R_HOLE};
+    size_t k;
+
+    for (k = 0; k < 3; k++) {
+        qc_region r;
+        tskel t;
+        qc_skeleton sk;
+        qc_params par = base_params(10, 0.7, QC_EDGE_STRICT);
+        qc__pebbles pb;
+        qc_path out = {0};
+        result res;
+        size_t i, ring, samples = 0, near = 0, corners = 0;
+
+        make_region(regions[k], &r);
+        make_skeleton(&r, 10, L_JITTER, 3, &t);
+        check_pattern(&r, &t, &par, &res);
+        sk = as_skel(&t);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbling_run(&ctx, &r, &par, &sk, &out, NULL, &pb));
+        for (ring = 0; ring < r.nrings; ring++) {
+            size_t lo = ring ? r.ring_end[ring - 1] : 0, hi = r.ring_end[ring];
+            for (i = lo; i < hi; i++) {
+                qc_vec2 a = r.v[i], b = r.v[i + 1 < hi ? i + 1 : lo];
+                double len = qc_hypot(b.x - a.x, b.y - a.y), at;
+                if (qc_region_corner_angle(&r, i) < 150) {
+                    corners++;
+                    TEST_ASSERT_TRUE(to_pebbles(&pb, a) <= 10 * (1 + 1e-9));
+                }
+                for (at = 0.5; at < len; at += 1) {
+                    qc_vec2 x = {a.x + (b.x - a.x) * at / len, a.y + (b.y - a.y) * at / len};
+                    samples++;
+                    near += to_pebbles(&pb, x) <= 3.5 * (1 + 1e-9);
+                }
+            }
+        }
+        TEST_ASSERT_TRUE(corners >= 3);
+        TEST_ASSERT_TRUE(near >= 0.93 * (double)samples);
+        qc_path_free(&ctx, &out);
+        qc__pebbles_free(&ctx, &pb);
+        free_skeleton(&t);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* A lone point: one circle, r_seed d unless the boundary is nearer. */
 static void pebbling_should_draw_a_lone_point_as_one_circle(void)
 {
@@ -538,6 +608,7 @@ int main(void)
     RUN_TEST(pebbling_should_give_equal_pebbles_for_half_r_seed);
     RUN_TEST(pebbling_should_vary_sizes_with_r_seed);
     RUN_TEST(pebbling_should_repeat_for_a_seed);
+    RUN_TEST(pebbling_should_reach_into_corners_and_along_seams);
     RUN_TEST(pebbling_should_draw_a_lone_point_as_one_circle);
     RUN_TEST(pebbling_should_follow_a_tour);
     RUN_TEST(pebbling_should_refuse_empty_tiny_and_bad_input);

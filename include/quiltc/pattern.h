@@ -247,8 +247,8 @@ typedef int (*qc_family_fn)(qc_ctx *ctx, const qc_region *region,
 #define QC_FAMILY_NEEDS_POINTS 1u /* sampled or given points; else an empty skeleton */
 #define QC_FAMILY_NEEDS_TREE   2u /* refuses a tour: the skeleton must be the tree */
 #define QC_FAMILY_NEEDS_MOTIFS 4u /* draws motifs (the motifs argument, --motif) */
-#define QC_FAMILY_OWN_SEAMS    8u /* reaches the seams itself (pebbles grown to the
-                                     boundary): no row of points along the seams */
+#define QC_FAMILY_OWN_SEAMS    8u /* reaches the seams itself (pebbles put into the
+                                     corners and along the seams): no row of points */
 
 /*
  * A family as the library registers it: one per src/deco/family_NAME.c.

@@ -76,7 +76,8 @@ QC__HIDDEN void qc__pebbles_free(qc_ctx *ctx, qc__pebbles *pb);
 /*
  * Phases 1 and 2 of §5.3.1 over skel inside region: pebbles sized in the
  * skeleton's visiting order (fillers in the gaps), then leaves and pebbles
- * touching two others grown until they touch a third or the boundary.
+ * touching two others grown until they touch a third or the boundary;
+ * then pebbles into the corners and along the seams left bare (phase 3).
  * b holds region's edges. *pb is filled (zeroed first). Errors: QC_EEMPTY
  * (no point, or no pebble fits), QC_ERANGE (spacing, r_seed), QC_EINVAL
  * (a skeleton index out of range), QC_ENOMEM.

@@ -6,6 +6,8 @@
  * towards its parent until it touches it. Phase 2 grows leaves away from
  * their parent and pebbles touching two others along the two's common
  * tangent circles, until they touch one more pebble or the boundary.
+ * Phase 3 (ours, issue 16) puts pebbles into the corners and along the
+ * seams the first two left bare.
  *
  * Every growth keeps the pebble tangent to what it hangs from: a circle
  * (x0 + u s, r0 + s) keeps the point x0 - u r0 and grows nested, so the
@@ -16,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "pebble_internal.h"
+#include "pebble_pack.h"
 
 #define R_MIN 0.1     /* smallest pebble, times d */
 #define GROW_MAX 1.5  /* phase 2 radius cap, times r_seed d */
@@ -25,17 +27,7 @@
 #define OVER_K 0.5    /* overgrow: a centre stays OVER_K r inside */
 #define ARG_BOUND 0xFFFFFFFEu
 
-typedef struct pack {
-    qc_ctx *ctx;
-    qc__pbound *b;
-    qc__pebbles *pb;
-    double x0, y0, h;  /* the pebble grid */
-    uint32_t nx, ny;
-    uint32_t *head;
-    uint32_t *next, *cellof; /* per pebble */
-    double rmax;       /* largest radius so far */
-    double d;
-} pack;
+typedef qc__pack pack;
 
 void qc__pebbles_free(qc_ctx *ctx, qc__pebbles *pb)
 {
@@ -818,15 +810,51 @@ static int phase2(pack *P)
                 pb->grown_pair += (size_t)grow_pair(P, (uint32_t)i, ids[0], ids[1]);
         }
     }
-    for (i = 0; i < n; i++) {
+    qc__free(ctx, nkid, n * sizeof *nkid);
+    qc__free(ctx, kid2, 2 * n * sizeof *kid2);
+    return QC_OK;
+}
+
+static void count_contacts(pack *P)
+{
+    qc__pebbles *pb = P->pb;
+    size_t i;
+
+    for (i = 0; i < pb->n; i++) {
         uint32_t ids[3];
         int bound;
         unsigned cnt = contacts(P, (uint32_t)i, ids, &bound) + (unsigned)bound;
         pb->contacts[i] = (unsigned char)(cnt > 255 ? 255 : cnt);
     }
-    qc__free(ctx, nkid, n * sizeof *nkid);
-    qc__free(ctx, kid2, 2 * n * sizeof *kid2);
-    return QC_OK;
+}
+
+/* ---- what phase 3 (shared_pebble_reach.c) asks of the packing ---- */
+
+uint32_t qc__pack_place(qc__pack *P, qc_vec2 c, double r, uint32_t parent, unsigned flags)
+{
+    return place(P, c, r, parent, QC__PEB_NONE, flags);
+}
+
+double qc__pack_clearance(qc__pack *P, qc_vec2 x, double cap, uint32_t ex)
+{
+    return clearance(P, x, cap, ex, QC__PEB_NONE, QC__PEB_NONE, NULL);
+}
+
+double qc__pack_ray(qc__pack *P, qc_vec2 x0, qc_vec2 u, double cap, uint32_t ex)
+{
+    return ray(P, x0, 0, u, cap, ex, QC__PEB_NONE);
+}
+
+int qc__pack_same_side(qc__pack *P, qc_vec2 p, qc_vec2 q)
+{
+    return same_side(P, p, q);
+}
+
+uint32_t qc__pack_nearest(qc__pack *P, qc_vec2 x, double reach)
+{
+    uint32_t near[NEAR];
+
+    return nearest_few(P, x, reach, near) > 0 ? near[0] : QC__PEB_NONE;
 }
 
 /* ---- the run ---- */
@@ -884,7 +912,9 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
     pb->r_min = R_MIN * d;
     pb->touch = TOUCH * d;
     pb->k = params->edge == QC_EDGE_OVERGROW ? OVER_K : 1;
-    cap = 2 * n + 1; /* each point adds a pebble and at most one filler */
+    /* each point adds a pebble and at most one filler; so does each place
+     * reach() tries */
+    cap = 2 * n + 1 + 2 * qc__pack_reach_tries(region, d);
     rc = alloc_pebbles(ctx, pb, cap);
     P.ctx = ctx;
     P.b = b;
@@ -921,6 +951,10 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
                       "at any of the %lu points", pb->r_min, (unsigned long)n);
     if (rc == QC_OK)
         rc = phase2(&P);
+    if (rc == QC_OK) {
+        qc__pack_reach(&P);
+        count_contacts(&P);
+    }
     qc__free(ctx, P.head, (size_t)P.nx * P.ny * sizeof *P.head);
     qc__free(ctx, P.next, cap * sizeof *P.next);
     qc__free(ctx, P.cellof, cap * sizeof *P.cellof);
