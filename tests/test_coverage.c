@@ -302,10 +302,10 @@ static void families_should_leave_no_fabric_far_from_a_stitch(void)
 }
 
 /* Goal: at most 15% of the seams farther than 1/4 in from a stitch at
- * d = 0.35 and 0.6 in; asserted 12% on shapes without sharp points and 20%
+ * d = 0.35 and 0.6 in; asserted 12% on shapes without sharp points and 15%
  * with them (a margin of 0.3 d keeps the last d or so of a 30-45 deg tip
- * bare). Measured 9% (wanderer, the heart's cusp) and 17% (vine) at worst
- * (docs/coverage.md). */
+ * bare). Measured 10% (wanderer, the heart's cusp) and 13% (vine, fill:
+ * the crescent and the 5-point star at 0.6 in) at worst (docs/coverage.md). */
 static void families_should_stitch_along_the_seams(void)
 {
     char msg[200];
@@ -317,7 +317,7 @@ static void families_should_stitch_along_the_seams(void)
             const figs *f = &table[to_seams[m]][k];
             snprintf(msg, sizeof msg, "%s on %s: %.0f%% of the seams farther than 1/4 in",
                      qc_family_name(to_seams[m]), shapes[k].name, 100 * f->seam);
-            if (!(f->seam <= (shapes[k].sharp ? 0.20 : 0.12)))
+            if (!(f->seam <= (shapes[k].sharp ? 0.15 : 0.12)))
                 TEST_FAIL_MESSAGE(msg);
         }
 }
