@@ -93,9 +93,10 @@ static int cmp_peak(const void *pa, const void *pb)
 }
 
 /* The farthest from the rings of the node and the points h / 2 round it
- * that lie at least as deep as the margin. */
+ * that lie deeper than the margin (the node alone when none can be
+ * farther than limit). */
 static peak peak_refine(const qc__contour *c, const qc__seg_grid *g, const uint32_t *next,
-                        qc_vec2 at, double reach)
+                        qc_vec2 at, double reach, double limit)
 {
     peak best;
     int dx, dy;
@@ -103,6 +104,8 @@ static peak peak_refine(const qc__contour *c, const qc__seg_grid *g, const uint3
     best.at = at;
     best.far = ring_dist(g, c->rings.pts.v, next, at, reach);
     best.depth = qc__sdf_at(&c->sdf, at);
+    if (best.far < limit - 0.71 * c->sdf.h) /* no point h / 2 away gets past limit */
+        return best;
     for (dy = -2; dy <= 2; dy++)
         for (dx = -2; dx <= 2; dx++) {
             qc_vec2 q;
@@ -130,10 +133,10 @@ static int add_cap(qc_ctx *ctx, qc__rings *r, const peak *pk, double d, double l
     int k;
 
     for (k = 0; k < CAP_SIDES; k++) {
-        double a = 2.0 * 3.14159265358979323846 * k / CAP_SIDES;
+        double a = 2.0 * QC_PI * k / CAP_SIDES;
         qc_vec2 v;
-        v.x = pk->at.x + rad * cos(a);
-        v.y = pk->at.y + rad * sin(a);
+        v.x = pk->at.x + rad * qc_cos(a); /* the core's own: the same bytes everywhere */
+        v.y = pk->at.y + rad * qc_sin(a);
         QC__TRY(qc_points_push(ctx, &r->pts, v));
     }
     QC__TRY(qc_order_push(ctx, &r->end, (uint32_t)r->pts.n));
@@ -176,7 +179,7 @@ int qc__contour_cap_peaks(qc_ctx *ctx, qc__contour *c, double d)
                 continue;
             at.x = s->x0 + (double)i * s->h;
             at.y = s->y0 + (double)jy * s->h;
-            p = peak_refine(c, &g, next, at, reach);
+            p = peak_refine(c, &g, next, at, reach, CAP_FAR * d);
             if (!(p.far > CAP_FAR * d))
                 continue;
             rc = QC__RESERVE(ctx, pk, cap, npk + 1);
