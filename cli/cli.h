@@ -103,6 +103,10 @@ int cli_write_plan(qc_ctx *ctx, const char *path, int format, const qc_plan *pla
  * no writer emits a point another would refuse. */
 int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
                      const qc_region *region, const char *region_name, const char *what);
+/* The same for the curve of path flattened to 0.01 mm (its control points
+ * not checked): CLI_OK, CLI_RUNTIME, or a CLI_* status if flattening fails. */
+int cli_check_path_inside(qc_ctx *ctx, const qc_path *path, const qc_params *resolved,
+                          const qc_region *region, const char *region_name, const char *what);
 
 /* Reads a .pat or .svg pattern into a plan. CLI_* status. */
 int cli_read_plan(qc_ctx *ctx, const char *path, qc_plan *plan);

@@ -119,8 +119,8 @@ static int make_block(qc_ctx *ctx, block *b)
                                     motifs.n ? &motifs : NULL, &res) < 0)
         rc = cli_fail(ctx, b->label, ctx->status);
     if (rc == CLI_OK)
-        rc = cli_check_inside(res.path.pt, res.path.npt, &res.params, &region,
-                              b->pat.region != NULL ? b->pat.region : "rect:8x8", b->label);
+        rc = cli_check_path_inside(ctx, &res.path, &res.params, &region,
+                                   b->pat.region != NULL ? b->pat.region : "rect:8x8", b->label);
     if (rc == CLI_OK) {
         place(b, &res.path, &region, origin);
         b->path = res.path; /* keep the path, free the rest */

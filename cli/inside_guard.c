@@ -3,11 +3,14 @@
  * at --margin 0 may stray 2 mm past the edge) is refused with one message
  * for every output format, before any file is opened. Before this, .pat
  * alone refused (a negative coordinate) while .svg, .dxf and .gcode were
- * written silently.
+ * written silently. What is sewn is checked: the stitches, or a path's
+ * curves flattened (a cubic's control points may lie past the seam while
+ * the curve stays inside).
  */
 #include "cli.h"
 
 #define SLACK_MM 1e-6 /* rounding in the tile layout; nothing a machine would sew */
+#define FLAT_TOL_MM 0.01 /* the curve within this of its flattened points */
 
 int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
                      const qc_region *region, const char *region_name, const char *what)
@@ -40,4 +43,17 @@ int cli_check_inside(const qc_vec2 *p, size_t n, const qc_params *resolved,
               what, qc_family_name(resolved->family), got.min.x, got.max.x, got.min.y, got.max.y,
               region_name, box.min.x, box.max.x, box.min.y, box.max.y);
     return CLI_RUNTIME;
+}
+
+int cli_check_path_inside(qc_ctx *ctx, const qc_path *path, const qc_params *resolved,
+                          const qc_region *region, const char *region_name, const char *what)
+{
+    qc_points flat = {0};
+    int rc;
+
+    if (qc_curve_flatten(ctx, path, FLAT_TOL_MM, &flat, NULL) < 0)
+        return cli_fail(ctx, what, ctx->status);
+    rc = cli_check_inside(flat.v, flat.n, resolved, region, region_name, what);
+    qc_points_free(ctx, &flat);
+    return rc;
 }

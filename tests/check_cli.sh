@@ -286,6 +286,21 @@ job_errors() {
 }
 check job_file_errors_name_the_key job_errors
 
+# The job's guard checks what is sewn, the curves flattened: a pebbling block
+# whose cubics' control points lie past the seam (curves inside) is written;
+# a tiled block at margin 0, 2 mm past the edge, is refused with one line.
+job_guard_checks_the_curve() {
+    d=$(mktemp -d "$WORK/jobguard.XXXXXX") && cd "$d" || return 1
+    echo '{"units": "in", "blocks": [{"region": "rect:8x8", "family": "pebbling",
+        "params": {"spacing": 0.4}}]}' > peb.json
+    "$QC" job -q peb.json -o peb.pat && "$QC" check peb.pat >/dev/null || return 1
+    echo '{"blocks": [{"region": "rect:8x8", "params": {"tile": "edge-to-edge", "margin": 0}}]}' > out.json
+    expect_fail 1 "job: blocks\[0\]: the stipple pattern reaches .* outside the region rect:8x8 (0..203.2, 0..203.2 mm); no file is written" \
+        "$QC" job out.json -o out.pat || return 1
+    [ ! -e out.pat ]
+}
+check job_guard_checks_the_flattened_curve job_guard_checks_the_curve
+
 # Names in a job file (region and motif SVGs, point files, listed outputs)
 # are relative to the job file, wherever quiltc runs; -o is relative to here.
 job_relative_names() {

@@ -306,6 +306,10 @@ typedef struct qc__contour {
  * QC_ENOMEM. On failure *c holds nothing. */
 QC__HIDDEN int qc__contour_build(qc_ctx *ctx, const qc_region *region, double d, double margin,
                                  int equal_area, const char *who, qc__contour *c);
+/* shared_contour_caps.c: a small ring (a cap) on each peak of the distance
+ * field farther than 0.97 d from every ring, so no fabric lies much farther
+ * than d from a stitch. Errors: QC_ENOMEM. */
+QC__HIDDEN int qc__contour_cap_peaks(qc_ctx *ctx, qc__contour *c, double d);
 /* The rings joined (qc__rings_join, spiral mode or not) from the ring point
  * nearest start and appended to *out as one polyline (all or nothing);
  * stats: largest gap (unless params->skip_gap_stat), joins unfixed. */

@@ -89,6 +89,8 @@ int qc__contour_build(qc_ctx *ctx, const qc_region *region, double d, double mar
     if (rc == QC_OK && c->rings.end.n == 0)
         rc = qc__fail(ctx, QC_EEMPTY, "%s: no ring fits inside the margin of %g mm", who, c->l0);
     if (rc == QC_OK)
+        rc = qc__contour_cap_peaks(ctx, c, d);
+    if (rc == QC_OK)
         return QC_OK;
 fail:
     qc__contour_free(ctx, c);

@@ -213,10 +213,8 @@ int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *give
     QC__TRY(build_skeleton(ctx, region, p, res, &skel));
     trace(ctx, "decorate");
     QC__TRY(family->run(ctx, region, p, &skel, motifs, &res->path, &res->stats));
-    if (!is_tiled(family, p)) {
+    if (!is_tiled(family, p))
         QC__TRY(qc__path_keep_inside(ctx, region, family->name, &res->path, NULL));
-        qc__path_hull_in_box(&res->path, qc_region_bbox(region));
-    }
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
                         family->name);

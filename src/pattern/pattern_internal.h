@@ -15,12 +15,6 @@ QC__HIDDEN int qc__check_given_inside(qc_ctx *ctx, const qc_region *region,
  * the region is one piece. */
 QC__HIDDEN int qc__generate_pieces(qc_ctx *ctx, const qc_region *region, const qc_points *given,
                                    const qc_motif_set *motifs, qc_result *out, int *handled);
-/* Pulls the points of path into box where the curve is in it within
- * keeping inside's tolerance (hull_in_box.c): ends onto the box's edge,
- * control points towards their ends (tangent directions kept), so such a
- * curve, in its control points' hull, stays in the box. A curve astray
- * further is left as it is. */
-QC__HIDDEN void qc__path_hull_in_box(qc_path *path, qc_bbox box);
 
 #define QC__STATS_TOL_MM 0.05
 
