@@ -63,36 +63,67 @@ void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
     g->f = NULL;
 }
 
+/* The columns of a seeded raster (cells 0 or FAR): each cell's squared
+ * distance to the nearest seed in its column, capped at FAR, which is what
+ * the parabola envelope gives for such a column. Two sweeps down and up the
+ * rows in memory order, with no division; run[i] counts cells since the
+ * last seed in column i (-1: none yet). */
+static void columns_by_sweeps(qc__gap_grid *g, long *run)
+{
+    const double far = (double)(float)QC__GAP_FAR;
+    size_t i, j, nx = g->nx, ny = g->ny;
+
+    for (i = 0; i < nx; i++)
+        run[i] = -1;
+    for (j = 0; j < ny; j++) { /* down: f holds the distance from above, or -1 */
+        float *row = g->f + j * nx;
+        for (i = 0; i < nx; i++) {
+            run[i] = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            row[i] = (float)run[i];
+        }
+    }
+    for (i = 0; i < nx; i++)
+        run[i] = -1;
+    for (j = ny; j-- > 0;) { /* up: the nearer of the two, squared */
+        float *row = g->f + j * nx;
+        for (i = 0; i < nx; i++) {
+            long up = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            long down = (long)row[i], best = down < 0 || (up >= 0 && up < down) ? up : down;
+            double sq = (double)best * (double)best;
+            run[i] = up;
+            row[i] = (float)(best < 0 || sq > far ? far : sq);
+        }
+    }
+}
+
 int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
     size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
     double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
     int *v = qc__alloc_array(ctx, m, sizeof *v);
+    long *run = qc__alloc_array(ctx, g->nx, sizeof *run);
     double *out, *z;
 
-    if (col == NULL || v == NULL) {
+    if (col == NULL || v == NULL || run == NULL) {
         qc__free(ctx, col, (3 * m + 1) * sizeof *col);
         qc__free(ctx, v, m * sizeof *v);
+        qc__free(ctx, run, g->nx * sizeof *run);
         return QC_ENOMEM;
     }
     out = col + m;
     z = out + m;
-    for (i = 0; i < g->nx; i++) {
-        for (j = 0; j < g->ny; j++)
-            col[j] = (double)g->f[j * g->nx + i];
-        qc__edt_1d(col, g->ny, out, v, z);
-        for (j = 0; j < g->ny; j++)
-            g->f[j * g->nx + i] = (float)out[j];
-    }
+    columns_by_sweeps(g, run);
     for (j = 0; j < g->ny; j++) {
+        float *row = g->f + j * g->nx;
         for (i = 0; i < g->nx; i++)
-            col[i] = (double)g->f[j * g->nx + i];
+            col[i] = (double)row[i];
         qc__edt_1d(col, g->nx, out, v, z);
         for (i = 0; i < g->nx; i++)
-            g->f[j * g->nx + i] = (float)out[i];
+            row[i] = (float)out[i];
     }
     qc__free(ctx, col, (3 * m + 1) * sizeof *col);
     qc__free(ctx, v, m * sizeof *v);
+    qc__free(ctx, run, g->nx * sizeof *run);
     return QC_OK;
 }
 

@@ -30,7 +30,8 @@ QC__HIDDEN int qc__gap_grid_inside(qc_ctx *ctx, const qc_region *region, double 
 QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);
 /* Zeroes the cells every ring edge of region passes through. */
 QC__HIDDEN void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region);
-/* f becomes each cell's squared distance (in cells) to the nearest zero cell. */
+/* f, seeded (every cell 0 or QC__GAP_FAR), becomes each cell's squared distance
+ * (in cells) to the nearest zero cell, capped at QC__GAP_FAR. */
 QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
 
 #endif
