@@ -42,9 +42,10 @@ static size_t cell_of(double v, double lo, double cell, size_t count)
  * always in a cell the query scans. */
 static size_t bin_of(double v, double lo, double inv, size_t count)
 {
-    double f = floor((v - lo) * inv), m = (double)(count - 1);
+    double f = (v - lo) * inv, m = (double)(count - 1);
 
-    return f > 0.0 ? (size_t)(f < m ? f : m) : 0;
+    /* floor by truncation, which agrees for f >= 0 (floor is a call) */
+    return f > 0.0 ? (f < m ? (size_t)f : count - 1) : 0;
 }
 
 static void seg_ends(const seg_index *s, size_t k, qc_vec2 *a, qc_vec2 *b)
@@ -60,10 +61,18 @@ static void seg_cells(const seg_index *s, size_t k, size_t c[4])
     qc_vec2 a, b;
 
     seg_ends(s, k, &a, &b);
-    c[0] = bin_of(fmin(a.x, b.x), s->x0, s->inv, s->gx);
-    c[1] = bin_of(fmin(a.y, b.y), s->y0, s->inv, s->gy);
-    c[2] = bin_of(fmax(a.x, b.x), s->x0, s->inv, s->gx);
-    c[3] = bin_of(fmax(a.y, b.y), s->y0, s->inv, s->gy);
+    if (a.x > b.x) { /* ordered by comparisons: fmin and fmax are calls */
+        double t = a.x;
+        a.x = b.x, b.x = t;
+    }
+    if (a.y > b.y) {
+        double t = a.y;
+        a.y = b.y, b.y = t;
+    }
+    c[0] = bin_of(a.x, s->x0, s->inv, s->gx);
+    c[1] = bin_of(a.y, s->y0, s->inv, s->gy);
+    c[2] = bin_of(b.x, s->x0, s->inv, s->gx);
+    c[3] = bin_of(b.y, s->y0, s->inv, s->gy);
 }
 
 static void seg_index_free(qc_ctx *ctx, seg_index *s)
@@ -177,8 +186,10 @@ static double seg_index_dist(const seg_index *s, qc_vec2 q, double bound)
             size_t c = y * s->gx + x;
             for (k = s->start[c]; k < s->start[c + 1]; k++) {
                 qc_vec2 a, e;
+                double d2;
                 seg_ends(s, s->item[k], &a, &e);
-                best = fmin(best, qc__seg_dist2(q, a, e));
+                d2 = qc__seg_dist2(q, a, e);
+                best = d2 < best ? d2 : best;
             }
         }
     return sqrt(best);

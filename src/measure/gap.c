@@ -11,7 +11,7 @@
 void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y);
-    double steps = ceil(len / (0.5 * g->h));
+    double steps = ceil(len / (0.5 * g->h)), xn = (double)g->nx, yn = (double)g->ny;
     size_t m, k;
 
     if (!(steps < 1e9))
@@ -23,9 +23,10 @@ void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
         double y = (a.y + (b.y - a.y) * t - g->y0) / g->h;
 
         /* the box's far sides (x == nx) belong to the last cells */
-        if (x >= -1.0 && y >= -1.0 && x < (double)g->nx + 1.0 && y < (double)g->ny + 1.0) {
-            x = fmin(fmax(x, 0.0), (double)(g->nx - 1));
-            y = fmin(fmax(y, 0.0), (double)(g->ny - 1));
+        if (x >= -1.0 && y >= -1.0 && x < xn + 1.0 && y < yn + 1.0) {
+            /* clamped by comparisons: fmin and fmax are calls, per sample */
+            x = x > 0.0 ? (x < xn - 1.0 ? x : xn - 1.0) : 0.0;
+            y = y > 0.0 ? (y < yn - 1.0 ? y : yn - 1.0) : 0.0;
             g->f[(size_t)y * g->nx + (size_t)x] = 0.0f;
         }
     }
@@ -96,6 +97,36 @@ static void columns_by_sweeps(qc__gap_grid *g, long *run)
     }
 }
 
+/* A row's exact transform by looking out from each cell only as far as the
+ * best found so far reaches: d[q] <= f[q], and a cell k away adds k^2, so
+ * with near seeds (the usual raster: a path every few cells) it beats the
+ * parabola envelope's divisions. Integers in doubles: exact, so it gives
+ * the envelope's very values. 0 when the row needs more than budget looks
+ * (far seeds, an unseeded column): the caller runs the envelope instead. */
+static int row_by_looking_out(const double *f, size_t n, double *d, size_t budget)
+{
+    const double far = (double)(float)QC__GAP_FAR;
+    size_t q, k, looks = 0;
+
+    for (q = 0; q < n; q++) {
+        double best = f[q];
+        if (best >= far)
+            return 0;
+        for (k = 1; (double)k * (double)k < best; k++) {
+            double kk = (double)k * (double)k;
+            if (q >= k && kk + f[q - k] < best)
+                best = kk + f[q - k];
+            if (q + k < n && kk + f[q + k] < best)
+                best = kk + f[q + k];
+        }
+        looks += k;
+        if (looks > budget)
+            return 0;
+        d[q] = best;
+    }
+    return 1;
+}
+
 int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
     size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
@@ -117,7 +148,8 @@ int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
         float *row = g->f + j * g->nx;
         for (i = 0; i < g->nx; i++)
             col[i] = (double)row[i];
-        qc__edt_1d(col, g->nx, out, v, z);
+        if (!row_by_looking_out(col, g->nx, out, 8 * g->nx + 64))
+            qc__edt_1d(col, g->nx, out, v, z);
         for (i = 0; i < g->nx; i++)
             row[i] = (float)out[i];
     }
