@@ -101,18 +101,17 @@ static void columns_by_sweeps(qc__gap_grid *g, long *run)
  * best found so far reaches: d[q] <= f[q], and a cell k away adds k^2, so
  * with near seeds (the usual raster: a path every few cells) it beats the
  * parabola envelope's divisions. Integers in doubles: exact, so it gives
- * the envelope's very values. 0 when the row needs more than budget looks
- * (far seeds, an unseeded column): the caller runs the envelope instead. */
+ * the envelope's very values (an unseeded column's QC__GAP_FAR included).
+ * 0 when the row needs more than budget looks (far seeds): the caller runs
+ * the envelope instead. */
 static int row_by_looking_out(const double *f, size_t n, double *d, size_t budget)
 {
-    const double far = (double)(float)QC__GAP_FAR;
     size_t q, k, looks = 0;
 
     for (q = 0; q < n; q++) {
         double best = f[q];
-        if (best >= far)
-            return 0;
-        for (k = 1; (double)k * (double)k < best; k++) {
+        size_t reach = q > n - 1 - q ? q : n - 1 - q; /* no cell lies farther */
+        for (k = 1; k <= reach && (double)k * (double)k < best; k++) {
             double kk = (double)k * (double)k;
             if (q >= k && kk + f[q - k] < best)
                 best = kk + f[q - k];
