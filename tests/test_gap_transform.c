@@ -101,6 +101,7 @@ void test_gap_transform_should_carry_a_lone_column_row_or_cell_across(void)
     check(31, 17, 1, 0);
     check(31, 17, 2, 0);
     check(31, 17, 3, 0);
+    check(5, 1, 3, 0);   /* the far end of a row is looked at */
     check(200, 3, 3, 0); /* seeds too far apart for looking out: the envelope */
     check(200, 3, 1, 0);
 }
