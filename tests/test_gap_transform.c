@@ -87,6 +87,67 @@ static void check(size_t nx, size_t ny, int kind, unsigned every)
     testalloc_fn(&ta, want, cells * sizeof *want, 0);
 }
 
+/* qc__gap_transform_above against the full transform on the same seeds and
+ * a scattered mask: the same first greatest cell over the mask (raise), the
+ * exact value wherever a masked cell exceeds the floor (no raise), and an
+ * upper bound everywhere. */
+static void check_above(size_t nx, size_t ny, unsigned every, double floor)
+{
+    const float far = (float)QC__GAP_FAR;
+    qc__gap_grid full, lazy;
+    unsigned char *mask;
+    size_t i, cells = nx * ny, at, want_at = SIZE_MAX;
+    double best = -1.0;
+    int raise;
+
+    mask = (unsigned char *)testalloc_fn(&ta, NULL, 0, cells);
+    TEST_ASSERT_NOT_NULL(mask);
+    for (raise = 0; raise < 2; raise++) {
+        memset(&full, 0, sizeof full);
+        full.nx = nx;
+        full.ny = ny;
+        full.h = 1.0;
+        lazy = full;
+        full.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *full.f);
+        lazy.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *lazy.f);
+        TEST_ASSERT_NOT_NULL(full.f);
+        TEST_ASSERT_NOT_NULL(lazy.f);
+        for (i = 0; i < cells; i++) {
+            int s = every > 0 ? seeded(i % nx, i / nx, every, 3u)
+                              : (i % nx) % 7 == 0 && (i / nx) % 5 == 0; /* ties */
+            full.f[i] = lazy.f[i] = s ? 0.0f : far;
+            mask[i] = (unsigned char)!seeded(i % nx, i / nx, 4, 9u);
+        }
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform(&ctx, &full));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform_above(&ctx, &lazy, mask,
+                                                             raise ? -1.0 : floor, raise, &at));
+        for (i = 0; i < cells; i++) {
+            TEST_ASSERT_TRUE(lazy.f[i] >= full.f[i]);
+            if (!raise && mask[i] && (double)full.f[i] > floor)
+                TEST_ASSERT_EQUAL_FLOAT(full.f[i], lazy.f[i]);
+            if (raise && mask[i] && (double)full.f[i] > best) {
+                best = (double)full.f[i];
+                want_at = i;
+            }
+        }
+        if (raise) {
+            TEST_ASSERT_EQUAL_size_t(want_at, at);
+            TEST_ASSERT_EQUAL_FLOAT(full.f[want_at], lazy.f[at]);
+        }
+        testalloc_fn(&ta, full.f, cells * sizeof *full.f, 0);
+        testalloc_fn(&ta, lazy.f, cells * sizeof *lazy.f, 0);
+    }
+    testalloc_fn(&ta, mask, cells, 0);
+}
+
+void test_gap_transform_above_should_agree_where_it_matters(void)
+{
+    check_above(61, 47, 23, 9.0);
+    check_above(47, 61, 150, 30.0);
+    check_above(300, 4, 900, 2.0); /* rows past the looking-out budget */
+    check_above(50, 40, 0, 5.0);   /* a lattice of seeds: the greatest value ties */
+}
+
 void test_gap_transform_should_match_brute_force_on_scattered_seeds(void)
 {
     check(37, 23, 0, 11);
@@ -117,5 +178,6 @@ int main(void)
     RUN_TEST(test_gap_transform_should_match_brute_force_on_scattered_seeds);
     RUN_TEST(test_gap_transform_should_carry_a_lone_column_row_or_cell_across);
     RUN_TEST(test_gap_transform_should_leave_an_unseeded_raster_far);
+    RUN_TEST(test_gap_transform_above_should_agree_where_it_matters);
     return UNITY_END();
 }

@@ -201,7 +201,8 @@ typedef struct fabric_run {
 } fabric_run;
 
 /* An upper bound on q's distance to the path from the raster (HUGE_VAL when
- * no seeded cell is known): cell centre to seed centre, plus the half cells
+ * no seeded cell is known; the raster holds exact squared distances where a
+ * cell could be the farthest, upper bounds elsewhere): cell centre to seed centre, plus the half cells
  * either side and the clamping of seeds just outside the box. */
 static double bound_at(const fabric_run *r, qc_vec2 q)
 {
@@ -411,17 +412,18 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
             qc__gap_seed_segment(&r.g, pts[i - 1], pts[i]);
         b = e > b ? e : b;
     }
-    rc = qc__gap_transform(ctx, &r.g);
+    /* exact only where a cell may win; elsewhere f keeps an upper bound,
+     * all bound_at needs */
+    rc = qc__gap_transform_above(ctx, &r.g, mask, -1.0, 1, &k);
     if (rc < 0)
         goto out;
+    if (k != SIZE_MAX) {
+        best_at = k;
+        best = (double)r.g.f[k];
+    }
     rc = seg_index_build(ctx, &r.s, pts, n, ends, nends);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        if (mask[k] && (double)r.g.f[k] > best) {
-            best = (double)r.g.f[k];
-            best_at = k;
-        }
     if (best >= 0.0) {
         qc_vec2 c;
         c.x = r.g.x0 + ((double)(best_at % r.g.nx) + 0.5) * r.g.h;

@@ -126,35 +126,123 @@ static int row_by_looking_out(const double *f, size_t n, double *d, size_t budge
     return 1;
 }
 
-int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
-{
-    size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
-    double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
-    int *v = qc__alloc_array(ctx, m, sizeof *v);
-    long *run = qc__alloc_array(ctx, g->nx, sizeof *run);
-    double *out, *z;
+/* Scratch of the row passes: the envelope's, and a row of doubles. */
+typedef struct row_scratch {
+    double *col, *out, *z;
+    int *v;
+    long *run;
+    size_t m;
+} row_scratch;
 
-    if (col == NULL || v == NULL || run == NULL) {
-        qc__free(ctx, col, (3 * m + 1) * sizeof *col);
-        qc__free(ctx, v, m * sizeof *v);
-        qc__free(ctx, run, g->nx * sizeof *run);
+static void scratch_free(qc_ctx *ctx, row_scratch *r, size_t nx)
+{
+    qc__free(ctx, r->col, (3 * r->m + 1) * sizeof *r->col);
+    qc__free(ctx, r->v, r->m * sizeof *r->v);
+    qc__free(ctx, r->run, nx * sizeof *r->run);
+}
+
+static int scratch_alloc(qc_ctx *ctx, row_scratch *r, const qc__gap_grid *g)
+{
+    r->m = g->nx > g->ny ? g->nx : g->ny;
+    r->col = qc__alloc_array(ctx, 3 * r->m + 1, sizeof *r->col);
+    r->v = qc__alloc_array(ctx, r->m, sizeof *r->v);
+    r->run = qc__alloc_array(ctx, g->nx, sizeof *r->run);
+    if (r->col == NULL || r->v == NULL || r->run == NULL) {
+        scratch_free(ctx, r, g->nx);
         return QC_ENOMEM;
     }
-    out = col + m;
-    z = out + m;
-    columns_by_sweeps(g, run);
+    r->out = r->col + r->m;
+    r->z = r->out + r->m;
+    return QC_OK;
+}
+
+/* Row j's exact transform into r->out, from its column values in r->col. */
+static void row_exact(row_scratch *r, size_t nx)
+{
+    if (!row_by_looking_out(r->col, nx, r->out, 8 * nx + 64))
+        qc__edt_1d(r->col, nx, r->out, r->v, r->z);
+}
+
+int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
+{
+    row_scratch r;
+    size_t i, j;
+
+    QC__TRY(scratch_alloc(ctx, &r, g));
+    columns_by_sweeps(g, r.run);
     for (j = 0; j < g->ny; j++) {
         float *row = g->f + j * g->nx;
         for (i = 0; i < g->nx; i++)
-            col[i] = (double)row[i];
-        if (!row_by_looking_out(col, g->nx, out, 8 * g->nx + 64))
-            qc__edt_1d(col, g->nx, out, v, z);
+            r.col[i] = (double)row[i];
+        row_exact(&r, g->nx);
         for (i = 0; i < g->nx; i++)
-            row[i] = (float)out[i];
+            row[i] = (float)r.out[i];
     }
-    qc__free(ctx, col, (3 * m + 1) * sizeof *col);
-    qc__free(ctx, v, m * sizeof *v);
-    qc__free(ctx, run, g->nx * sizeof *run);
+    scratch_free(ctx, &r, g->nx);
+    return QC_OK;
+}
+
+/* Cell q's exact value from its row's column values, looking out no
+ * farther than its best; *looks counts the cells looked at. */
+static double cell_exact(const double *f, size_t n, size_t q, size_t *looks)
+{
+    double best = f[q];
+    size_t k, reach = q > n - 1 - q ? q : n - 1 - q;
+
+    for (k = 1; k <= reach && (double)k * (double)k < best; k++) {
+        double kk = (double)k * (double)k;
+        if (q >= k && kk + f[q - k] < best)
+            best = kk + f[q - k];
+        if (q + k < n && kk + f[q + k] < best)
+            best = kk + f[q + k];
+    }
+    *looks += k;
+    return best;
+}
+
+int qc__gap_transform_above(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *mask,
+                            double floor, int raise, size_t *best_at)
+{
+    row_scratch r;
+    size_t i, j, nx = g->nx, budget = 8 * nx + 64;
+
+    QC__TRY(scratch_alloc(ctx, &r, g));
+    columns_by_sweeps(g, r.run); /* f: squared column distances, upper bounds */
+    *best_at = SIZE_MAX;
+    for (j = 0; j < g->ny; j++) {
+        float *row = g->f + j * nx;
+        const unsigned char *in = mask + j * nx;
+        double floor0 = floor;
+        size_t at0 = *best_at, looks = 0;
+
+        for (i = 0; i < nx; i++)
+            r.out[i] = r.col[i] = (double)row[i];
+        /* cell by cell in index order, exact only where the upper bound
+         * passes the floor, so the first cell of the greatest value wins
+         * as a scan of the whole transform would pick it */
+        for (i = 0; i < nx && looks <= budget; i++)
+            if (in[i] && r.col[i] > floor) {
+                double d = cell_exact(r.col, nx, i, &looks);
+                r.out[i] = d;
+                if (raise && d > floor) {
+                    floor = d;
+                    *best_at = j * nx + i;
+                }
+            }
+        if (looks > budget) { /* far seeds: the whole row, then its scan */
+            floor = floor0;
+            *best_at = at0;
+            row_exact(&r, nx);
+            for (i = 0; i < nx; i++)
+                if (raise && in[i] && r.out[i] > floor) {
+                    floor = r.out[i];
+                    *best_at = j * nx + i;
+                }
+        }
+        for (i = 0; i < nx; i++)
+            row[i] = (float)r.out[i];
+    }
+    scratch_free(ctx, &r, nx);
     return QC_OK;
 }
 
@@ -256,14 +344,13 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
         }
     }
     qc__gap_seed_region(&g, region);
-    rc = qc__gap_transform(ctx, &g);
+    rc = qc__gap_transform_above(ctx, &g, mask, -1.0, 1, &k);
     if (rc < 0)
         goto out;
-    for (k = 0; k < g.nx * g.ny; k++)
-        if (mask[k] && (double)g.f[k] > best) {
-            best = (double)g.f[k];
-            best_at = k;
-        }
+    if (k != SIZE_MAX) {
+        best_at = k;
+        best = (double)g.f[k];
+    }
 out:
     if (rc < 0) {
         qc__free(ctx, g.f, g.nx * g.ny * sizeof *g.f);

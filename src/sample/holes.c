@@ -56,7 +56,8 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         goto out;
     for (i = 0; i < out->n; i++)
         qc__gap_seed_segment(&g, out->v[i], out->v[i]);
-    rc = qc__gap_transform(ctx, &g);
+    /* exact only above lim: the cells below it are no hole whatever they hold */
+    rc = qc__gap_transform_above(ctx, &g, mask, lim, 0, &k);
     if (rc < 0)
         goto out;
     for (k = 0; k < cells; k++)
