@@ -183,13 +183,14 @@ int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 }
 
 /* Cell q's exact value from its row's column values, looking out no
- * farther than its best; *looks counts the cells looked at. */
-static double cell_exact(const double *f, size_t n, size_t q, size_t *looks)
+ * farther than its best, or as soon as that falls to stop or below (then
+ * an upper bound, <= stop); *looks counts the cells looked at. */
+static double cell_exact(const double *f, size_t n, size_t q, double stop, size_t *looks)
 {
     double best = f[q];
     size_t k, reach = q > n - 1 - q ? q : n - 1 - q;
 
-    for (k = 1; k <= reach && (double)k * (double)k < best; k++) {
+    for (k = 1; k <= reach && (double)k * (double)k < best && best > stop; k++) {
         double kk = (double)k * (double)k;
         if (q >= k && kk + f[q - k] < best)
             best = kk + f[q - k];
@@ -222,7 +223,8 @@ int qc__gap_transform_above(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *m
          * as a scan of the whole transform would pick it */
         for (i = 0; i < nx && looks <= budget; i++)
             if (in[i] && r.col[i] > floor) {
-                double d = cell_exact(r.col, nx, i, &looks);
+                /* a cell that falls to the floor is out: its bound will do */
+                double d = cell_exact(r.col, nx, i, floor, &looks);
                 r.out[i] = d;
                 if (raise && d > floor) {
                     floor = d;
