@@ -240,8 +240,9 @@ int qc__rindex_box_inside(const qc__rindex *ix, qc_bbox b)
             for (i = ix->cell_start[c]; i < ix->cell_start[c + 1]; i++) {
                 uint32_t e = ix->cell_edge[i];
                 qc_vec2 p = v[e], q = v[ix->next[e]];
-                if (fmax(p.x, q.x) >= b.min.x && fmin(p.x, q.x) <= b.max.x &&
-                    fmax(p.y, q.y) >= b.min.y && fmin(p.y, q.y) <= b.max.y)
+                /* the edge's box meets b (comparisons: fmin and fmax are calls) */
+                if ((p.x >= b.min.x || q.x >= b.min.x) && (p.x <= b.max.x || q.x <= b.max.x) &&
+                    (p.y >= b.min.y || q.y >= b.min.y) && (p.y <= b.max.y || q.y <= b.max.y))
                     return 0;
             }
         }

@@ -44,12 +44,16 @@ static int hull_inside(const kin *k, const qc_vec2 *q, size_t n)
     size_t i;
 
     b.min = b.max = q[0];
-    for (i = 1; i < n; i++) {
-        b.min.x = fmin(b.min.x, q[i].x), b.max.x = fmax(b.max.x, q[i].x);
-        b.min.y = fmin(b.min.y, q[i].y), b.max.y = fmax(b.max.y, q[i].y);
+    for (i = 1; i < n; i++) { /* comparisons: fmin and fmax are calls */
+        b.min.x = q[i].x < b.min.x ? q[i].x : b.min.x;
+        b.max.x = q[i].x > b.max.x ? q[i].x : b.max.x;
+        b.min.y = q[i].y < b.min.y ? q[i].y : b.min.y;
+        b.max.y = q[i].y > b.max.y ? q[i].y : b.max.y;
     }
-    pad = 1e-9 * (1.0 + fmax(fmax(fabs(b.min.x), fabs(b.max.x)),
-                             fmax(fabs(b.min.y), fabs(b.max.y))));
+    pad = -b.min.x > b.max.x ? -b.min.x : b.max.x;
+    pad = -b.min.y > pad ? -b.min.y : pad;
+    pad = b.max.y > pad ? b.max.y : pad;
+    pad = 1e-9 * (1.0 + pad);
     b.min.x -= pad, b.min.y -= pad, b.max.x += pad, b.max.y += pad;
     return qc__rindex_box_inside(&k->ix, b);
 }
