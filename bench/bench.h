@@ -13,6 +13,8 @@ void bench_tour(void);
 void bench_tsplib(void);
 void bench_pebbling(void);
 void bench_families(void);
+/* Every family at 10^3 points beside issue 21's 5 ms / 15 ms goals (bench_families_1k.c). */
+void bench_families_1k(void);
 void bench_meander(void);
 void bench_quilt(void);
 

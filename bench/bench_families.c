@@ -98,6 +98,7 @@ void bench_families(void)
     size_t k;
     int f;
 
+    bench_families_1k();
     printf("families: best of a few runs of qc_generate (d = %g mm, largest-gap stat off)\n",
            SPACING);
     for (k = 0; k < sizeof sizes / sizeof *sizes; k++)

@@ -242,6 +242,10 @@ int cmd_generate(int argc, char **argv)
         g.out[g.nout++] = "pattern.svg";
     }
     rc = cli_pattern_finish(&ctx, &g.pat);
+    /* the largest gap and the farthest fabric are figures for --stats only
+     * (the path is the same without them): measured when asked */
+    if (rc == CLI_OK && !g.stats)
+        g.pat.params.skip_gap_stat = 1;
     if (rc == CLI_OK)
         cli_pattern_warn_ignored(&g.pat);
     if (rc == CLI_OK)

@@ -39,6 +39,15 @@ same_bytes() {
 }
 check same_seed_same_bytes_other_seed_differs same_bytes
 
+# The figures (largest gap, farthest fabric) are measured only for --stats:
+# the pattern is the same bytes with and without them.
+figures_when_asked() {
+    "$QC" generate -o s.pat --family fill --stats 2>s.json &&
+        "$QC" generate -o n.pat --family fill && cmp s.pat n.pat &&
+        grep -q '"farthest_fabric_mm":[1-9]' s.json && grep -q '"largest_gap_mm":[1-9]' s.json
+}
+check figures_only_for_stats_same_pattern figures_when_asked
+
 units_agree() {
     "$QC" generate -o a.pat --spacing 10mm --region rect:8x8 &&
         "$QC" generate -o b.pat --units mm --spacing 10 --region rect:203.2x203.2 && cmp a.pat b.pat

@@ -236,6 +236,50 @@ static void test_index_agrees_with_brute_force(void)
     qc_region_free(&ctx, &r);
 }
 
+/* A box the index calls inside holds only inside points, none on the
+ * boundary; boxes round the hole, across the outline or outside are not. */
+static void test_index_box_inside_is_never_wrong(void)
+{
+    qc_region r;
+    qc__rindex ix;
+    qc_rng rng;
+    qc_vec2 hole[4];
+    qc_bbox b;
+    size_t i, yes = 0, a, c;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "heart:120", 1.0, &r));
+    hole[0] = v2(50, 40); hole[1] = v2(70, 40); hole[2] = v2(70, 60); hole[3] = v2(50, 60);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, hole, 4));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__rindex_build(&ctx, &r, &ix));
+    qc_rng_seed(&rng, 11);
+    for (i = 0; i < 3000; i++) {
+        double w = qc_rng_unit(&rng) * 12, h = qc_rng_unit(&rng) * 12;
+        b.min = v2(qc_rng_unit(&rng) * 140 - 10, qc_rng_unit(&rng) * 140 - 10);
+        b.max = v2(b.min.x + w, b.min.y + h);
+        if (!qc__rindex_box_inside(&ix, b))
+            continue;
+        yes++;
+        for (a = 0; a <= 8; a++)
+            for (c = 0; c <= 8; c++) {
+                qc_vec2 p = v2(b.min.x + w * (double)a / 8, b.min.y + h * (double)c / 8);
+                TEST_ASSERT_TRUE(qc_region_contains(&r, p));
+                TEST_ASSERT_TRUE(qc_region_boundary_distance(&r, p) > 0.0);
+            }
+    }
+    TEST_ASSERT_TRUE(yes > 300); /* the fast path does answer inside the heart */
+    b.min = v2(45, 35), b.max = v2(75, 65); /* holds the hole */
+    TEST_ASSERT_FALSE(qc__rindex_box_inside(&ix, b));
+    b.min = v2(52, 42), b.max = v2(68, 58); /* inside the hole */
+    TEST_ASSERT_FALSE(qc__rindex_box_inside(&ix, b));
+    b.min = v2(-5, -5), b.max = v2(-1, -1); /* outside */
+    TEST_ASSERT_FALSE(qc__rindex_box_inside(&ix, b));
+    b.min = v2(-5, 50), b.max = v2(20, 52); /* across the outline */
+    TEST_ASSERT_FALSE(qc__rindex_box_inside(&ix, b));
+    qc__rindex_free(&ctx, &ix);
+    qc_region_free(&ctx, &r);
+}
+
 /* A comb of 20000 thin teeth would make the crossing check quadratic
  * (minutes): it is refused at once, by name. */
 static void test_dense_comb_is_refused_in_bounded_time(void)
@@ -362,6 +406,7 @@ int main(void)
     RUN_TEST(test_index_agrees_with_brute_force);
     RUN_TEST(test_dense_comb_is_refused_in_bounded_time);
     RUN_TEST(test_many_holes_are_oriented);
+    RUN_TEST(test_index_box_inside_is_never_wrong);
     RUN_TEST(test_orientation_does_not_depend_on_earlier_reversals);
     RUN_TEST(test_out_of_memory_is_reported_and_leaks_nothing);
     return UNITY_END();

@@ -213,3 +213,39 @@ int qc__rindex_admits(const qc__rindex *ix, qc_vec2 p, double margin)
         return 0;
     return margin <= 0.0 || !qc__rindex_near(ix, p, margin);
 }
+
+/* The grid cells a box covers, at most MAX_BOX_CELLS of them: a larger box
+ * is answered by the caller's sampling instead. */
+#define MAX_BOX_CELLS 64
+
+int qc__rindex_box_inside(const qc__rindex *ix, qc_bbox b)
+{
+    const qc_vec2 *v = ix->region->v;
+    size_t x0, x1, y0, y1, x, y;
+
+    if (ix->region->nv == 0 || !(b.min.x > ix->box.min.x) || !(b.max.x < ix->box.max.x) ||
+        !(b.min.y > ix->box.min.y) || !(b.max.y < ix->box.max.y))
+        return 0;
+    x0 = cell_of(b.min.x, ix->box.min.x, ix->cell, ix->nx);
+    x1 = cell_of(b.max.x, ix->box.min.x, ix->cell, ix->nx);
+    y0 = cell_of(b.min.y, ix->box.min.y, ix->cell, ix->ny);
+    y1 = cell_of(b.max.y, ix->box.min.y, ix->cell, ix->ny);
+    if ((x1 - x0 + 1) * (y1 - y0 + 1) > MAX_BOX_CELLS)
+        return 0;
+    /* an edge is filed in every cell its own box covers, so any edge whose
+     * box meets b is filed in a cell that b covers */
+    for (y = y0; y <= y1; y++)
+        for (x = x0; x <= x1; x++) {
+            size_t c = y * ix->nx + x, i;
+            for (i = ix->cell_start[c]; i < ix->cell_start[c + 1]; i++) {
+                uint32_t e = ix->cell_edge[i];
+                qc_vec2 p = v[e], q = v[ix->next[e]];
+                /* the edge's box meets b (comparisons: fmin and fmax are calls) */
+                if ((p.x >= b.min.x || q.x >= b.min.x) && (p.x <= b.max.x || q.x <= b.max.x) &&
+                    (p.y >= b.min.y || q.y >= b.min.y) && (p.y <= b.max.y || q.y <= b.max.y))
+                    return 0;
+            }
+        }
+    /* no edge meets b: all of it lies on one side, that of its centre */
+    return qc__rindex_contains(ix, QC__V2(0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y)));
+}

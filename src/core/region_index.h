@@ -37,5 +37,10 @@ QC__HIDDEN int qc__rindex_contains(const qc__rindex *ix, qc_vec2 p);
 QC__HIDDEN int qc__rindex_near(const qc__rindex *ix, qc_vec2 p, double r);
 /* Inside and at least margin from every edge. */
 QC__HIDDEN int qc__rindex_admits(const qc__rindex *ix, qc_vec2 p, double margin);
+/* 1 when all of box b lies inside the region, no boundary edge's box
+ * meeting it; 0 when it may not (near an edge, outside, or a box too large
+ * to check cheaply): a fast path for callers that would otherwise sample
+ * the box's contents point by point. */
+QC__HIDDEN int qc__rindex_box_inside(const qc__rindex *ix, qc_bbox b);
 
 #endif

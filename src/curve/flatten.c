@@ -141,6 +141,13 @@ typedef struct measure {
     int any;
 } measure;
 
+/* fmin(a, b) by comparisons (fmin is a call, per flattened point): b
+ * when it is smaller or a is NaN, as fmin does; signed zeros aside. */
+static double lesser(double a, double b)
+{
+    return b < a || a != a ? b : a;
+}
+
 static int measure_point(void *ud, qc_vec2 p, int start)
 {
     measure *m = (measure *)ud;
@@ -151,10 +158,10 @@ static int measure_point(void *ud, qc_vec2 p, int start)
         m->box.min = p;
         m->box.max = p;
     } else {
-        m->box.min.x = fmin(m->box.min.x, p.x);
-        m->box.min.y = fmin(m->box.min.y, p.y);
-        m->box.max.x = fmax(m->box.max.x, p.x);
-        m->box.max.y = fmax(m->box.max.y, p.y);
+        m->box.min.x = lesser(m->box.min.x, p.x);
+        m->box.min.y = lesser(m->box.min.y, p.y);
+        m->box.max.x = -lesser(-m->box.max.x, -p.x);
+        m->box.max.y = -lesser(-m->box.max.y, -p.y);
     }
     m->last = p;
     m->any = 1;

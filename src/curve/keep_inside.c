@@ -34,11 +34,39 @@ static int ok_point(const kin *k, qc_vec2 p)
     return qc__rindex_contains(&k->ix, p) || qc__rindex_near(&k->ix, p, QC__INSIDE_TOL_MM);
 }
 
+/* Whether the box of q[0..n) (a hair wider than rounding can carry a
+ * sample) lies inside the region: then every sample of the command is
+ * inside and need not be tested one by one. */
+static int hull_inside(const kin *k, const qc_vec2 *q, size_t n)
+{
+    qc_bbox b;
+    double pad;
+    size_t i;
+
+    b.min = b.max = q[0];
+    for (i = 1; i < n; i++) { /* comparisons: fmin and fmax are calls */
+        b.min.x = q[i].x < b.min.x ? q[i].x : b.min.x;
+        b.max.x = q[i].x > b.max.x ? q[i].x : b.max.x;
+        b.min.y = q[i].y < b.min.y ? q[i].y : b.min.y;
+        b.max.y = q[i].y > b.max.y ? q[i].y : b.max.y;
+    }
+    pad = -b.min.x > b.max.x ? -b.min.x : b.max.x;
+    pad = -b.min.y > pad ? -b.min.y : pad;
+    pad = b.max.y > pad ? b.max.y : pad;
+    pad = 1e-9 * (1.0 + pad);
+    b.min.x -= pad, b.min.y -= pad, b.max.x += pad, b.max.y += pad;
+    return qc__rindex_box_inside(&k->ix, b);
+}
+
 static int seg_ok(const kin *k, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y), m = ceil(len / STEP_MM);
     size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
+    qc_vec2 ab[2];
 
+    ab[0] = a, ab[1] = b;
+    if (hull_inside(k, ab, 2))
+        return 1;
     for (i = 0; i <= n; i++) {
         double t = (double)i / (double)n;
         if (!ok_point(k, QC__V2(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t)))
@@ -55,6 +83,8 @@ static int cubic_ok(const kin *k, const qc_vec2 *q)
     double m = ceil(len / STEP_MM);
     size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
 
+    if (hull_inside(k, q, 4))
+        return 1;
     for (i = 0; i <= n; i++)
         if (!ok_point(k, qc_cubic_point(q, (double)i / (double)n)))
             return 0;

@@ -23,7 +23,7 @@ typedef struct seg_index {
     const qc_vec2 *pts;
     uint32_t *seg;
     size_t nseg;
-    double x0, y0, cell;
+    double x0, y0, cell, inv; /* inv = 1 / cell: build and query bin alike */
     size_t gx, gy;
     size_t *start;   /* gx * gy + 1, CSR over item */
     uint32_t *item;  /* segment numbers */
@@ -35,6 +35,17 @@ static size_t cell_of(double v, double lo, double cell, size_t count)
     double f = floor((v - lo) / cell), m = (double)(count - 1);
 
     return f > 0.0 ? (size_t)(f < m ? f : m) : 0;
+}
+
+/* Bins by multiplying with the inverse cell size: build and query use it
+ * alike, and it is monotone, so a segment within reach of a query point is
+ * always in a cell the query scans. */
+static size_t bin_of(double v, double lo, double inv, size_t count)
+{
+    double f = (v - lo) * inv, m = (double)(count - 1);
+
+    /* floor by truncation, which agrees for f >= 0 (floor is a call) */
+    return f > 0.0 ? (f < m ? (size_t)f : count - 1) : 0;
 }
 
 static void seg_ends(const seg_index *s, size_t k, qc_vec2 *a, qc_vec2 *b)
@@ -50,10 +61,18 @@ static void seg_cells(const seg_index *s, size_t k, size_t c[4])
     qc_vec2 a, b;
 
     seg_ends(s, k, &a, &b);
-    c[0] = cell_of(fmin(a.x, b.x), s->x0, s->cell, s->gx);
-    c[1] = cell_of(fmin(a.y, b.y), s->y0, s->cell, s->gy);
-    c[2] = cell_of(fmax(a.x, b.x), s->x0, s->cell, s->gx);
-    c[3] = cell_of(fmax(a.y, b.y), s->y0, s->cell, s->gy);
+    if (a.x > b.x) { /* ordered by comparisons: fmin and fmax are calls */
+        double t = a.x;
+        a.x = b.x, b.x = t;
+    }
+    if (a.y > b.y) {
+        double t = a.y;
+        a.y = b.y, b.y = t;
+    }
+    c[0] = bin_of(a.x, s->x0, s->inv, s->gx);
+    c[1] = bin_of(a.y, s->y0, s->inv, s->gy);
+    c[2] = bin_of(b.x, s->x0, s->inv, s->gx);
+    c[3] = bin_of(b.y, s->y0, s->inv, s->gy);
 }
 
 static void seg_index_free(qc_ctx *ctx, seg_index *s)
@@ -106,6 +125,7 @@ static int seg_index_build(qc_ctx *ctx, seg_index *s, const qc_vec2 *pts, size_t
     side = fmax(box.max.x - box.min.x, box.max.y - box.min.y);
     s->cell = qc__fit_cell(box, fmax(side / sqrt((double)s->nseg + 1.0), 1e-3),
                            (double)s->nseg + 64.0);
+    s->inv = 1.0 / s->cell;
     s->x0 = box.min.x;
     s->y0 = box.min.y;
     s->gx = (size_t)((box.max.x - box.min.x) / s->cell) + 1;
@@ -156,18 +176,20 @@ static double seg_index_dist(const seg_index *s, qc_vec2 q, double bound)
         x1 = s->gx - 1;
         y1 = s->gy - 1;
     } else {
-        x0 = cell_of(q.x - bound, s->x0, s->cell, s->gx);
-        x1 = cell_of(q.x + bound, s->x0, s->cell, s->gx);
-        y0 = cell_of(q.y - bound, s->y0, s->cell, s->gy);
-        y1 = cell_of(q.y + bound, s->y0, s->cell, s->gy);
+        x0 = bin_of(q.x - bound, s->x0, s->inv, s->gx);
+        x1 = bin_of(q.x + bound, s->x0, s->inv, s->gx);
+        y0 = bin_of(q.y - bound, s->y0, s->inv, s->gy);
+        y1 = bin_of(q.y + bound, s->y0, s->inv, s->gy);
     }
     for (y = y0; y <= y1; y++)
         for (x = x0; x <= x1; x++) {
             size_t c = y * s->gx + x;
             for (k = s->start[c]; k < s->start[c + 1]; k++) {
                 qc_vec2 a, e;
+                double d2;
                 seg_ends(s, s->item[k], &a, &e);
-                best = fmin(best, qc__seg_dist2(q, a, e));
+                d2 = qc__seg_dist2(q, a, e);
+                best = d2 < best ? d2 : best;
             }
         }
     return sqrt(best);
@@ -179,7 +201,8 @@ typedef struct fabric_run {
 } fabric_run;
 
 /* An upper bound on q's distance to the path from the raster (HUGE_VAL when
- * no seeded cell is known): cell centre to seed centre, plus the half cells
+ * no seeded cell is known; the raster holds exact squared distances where a
+ * cell could be the farthest, upper bounds elsewhere): cell centre to seed centre, plus the half cells
  * either side and the clamping of seeds just outside the box. */
 static double bound_at(const fabric_run *r, qc_vec2 q)
 {
@@ -269,29 +292,73 @@ static int check_args(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
     return QC_OK;
 }
 
+/* Upper bounds carried along the boundary walk: the distance to the path
+ * grows by at most the step taken (it is 1-Lipschitz), so a sample whose
+ * bound is already below both the seam allowance and the farthest figure
+ * cannot change either and needs no exact query. The slack covers the
+ * rounding of the sums, so the figures are those of an exact query at
+ * every sample. */
+#define CHAIN_SLACK 1e-9
+
+typedef struct chain {
+    qc_vec2 at;
+    double bound; /* HUGE_VAL: none yet */
+} chain;
+
+/* The exact distance at c, or a bound no greater than needed when that
+ * decides nothing (*exact 0); the chain moves to c. */
+static double chained_at(const fabric_run *r, chain *ch, qc_vec2 c, double below, int *exact)
+{
+    double ub = bound_at(r, c), d;
+
+    if (ch->bound < HUGE_VAL)
+        ub = fmin(ub, ch->bound + qc_hypot(c.x - ch->at.x, c.y - ch->at.y) + CHAIN_SLACK);
+    ch->at = c;
+    if (ub + CHAIN_SLACK < below) {
+        ch->bound = ub;
+        *exact = 0;
+        return ub;
+    }
+    d = seg_index_dist(&r->s, c, ub < HUGE_VAL ? ub + CHAIN_SLACK : ub);
+    ch->bound = d;
+    *exact = 1;
+    return d;
+}
+
 /* The boundary walk: seam share, the farthest boundary point, the corners. */
 static void walk_boundary(const fabric_run *r, const qc_region *region, double seam_mm,
                           double *corner_mm, qc_fabric *out)
 {
     double step = fmin(r->g.h, BOUNDARY_STEP_MM), total = 0.0, bare = 0.0;
     size_t k, rs = 0, i;
+    int exact;
 
     for (k = 0; k < region->nrings; k++) {
         size_t end = region->ring_end[k], p = end - 1;
+        chain ch;
 
+        ch.bound = HUGE_VAL;
         for (i = rs; i < end; p = i++) {
             qc_vec2 a = region->v[p], b = region->v[i];
-            double len = qc_hypot(b.x - a.x, b.y - a.y), dv = exact_at(r, b);
-            double m = ceil(len / step), t;
+            double len = qc_hypot(b.x - a.x, b.y - a.y), dv, m = ceil(len / step), t;
             size_t q, mm = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
+            chain at_b = ch;
+            int sharp = qc_region_corner_angle(region, i) < SHARP_DEG;
 
+            /* the corner: exact where it is reported, else only when it may
+             * raise the farthest or the worst corner */
+            dv = chained_at(r, &at_b, b,
+                            corner_mm != NULL ? -HUGE_VAL
+                            : sharp ? fmin(out->farthest_mm, out->worst_corner_mm)
+                                    : out->farthest_mm,
+                            &exact);
             if (corner_mm != NULL)
                 corner_mm[i] = dv;
-            if (dv > out->farthest_mm) {
+            if (exact && dv > out->farthest_mm) {
                 out->farthest_mm = dv;
                 out->farthest_at = b;
             }
-            if (qc_region_corner_angle(region, i) < SHARP_DEG && dv > out->worst_corner_mm)
+            if (exact && sharp && dv > out->worst_corner_mm)
                 out->worst_corner_mm = dv;
             for (q = 0; q < mm; q++) {
                 qc_vec2 c;
@@ -299,7 +366,9 @@ static void walk_boundary(const fabric_run *r, const qc_region *region, double s
                 t = ((double)q + 0.5) / (double)mm;
                 c.x = a.x + (b.x - a.x) * t;
                 c.y = a.y + (b.y - a.y) * t;
-                dc = exact_at(r, c);
+                dc = chained_at(r, &ch, c, fmin(seam_mm, out->farthest_mm), &exact);
+                if (!exact)
+                    continue;
                 if (dc > seam_mm)
                     bare += len / (double)mm;
                 if (dc > out->farthest_mm) {
@@ -343,17 +412,18 @@ int qc_fabric_measure(qc_ctx *ctx, const qc_region *region, const qc_vec2 *pts, 
             qc__gap_seed_segment(&r.g, pts[i - 1], pts[i]);
         b = e > b ? e : b;
     }
-    rc = qc__gap_transform(ctx, &r.g);
+    /* exact only where a cell may win; elsewhere f keeps an upper bound,
+     * all bound_at needs */
+    rc = qc__gap_transform_above(ctx, &r.g, mask, -1.0, 1, &k);
     if (rc < 0)
         goto out;
+    if (k != SIZE_MAX) {
+        best_at = k;
+        best = (double)r.g.f[k];
+    }
     rc = seg_index_build(ctx, &r.s, pts, n, ends, nends);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        if (mask[k] && (double)r.g.f[k] > best) {
-            best = (double)r.g.f[k];
-            best_at = k;
-        }
     if (best >= 0.0) {
         qc_vec2 c;
         c.x = r.g.x0 + ((double)(best_at % r.g.nx) + 0.5) * r.g.h;

@@ -11,7 +11,7 @@
 void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y);
-    double steps = ceil(len / (0.5 * g->h));
+    double steps = ceil(len / (0.5 * g->h)), xn = (double)g->nx, yn = (double)g->ny;
     size_t m, k;
 
     if (!(steps < 1e9))
@@ -23,9 +23,10 @@ void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b)
         double y = (a.y + (b.y - a.y) * t - g->y0) / g->h;
 
         /* the box's far sides (x == nx) belong to the last cells */
-        if (x >= -1.0 && y >= -1.0 && x < (double)g->nx + 1.0 && y < (double)g->ny + 1.0) {
-            x = fmin(fmax(x, 0.0), (double)(g->nx - 1));
-            y = fmin(fmax(y, 0.0), (double)(g->ny - 1));
+        if (x >= -1.0 && y >= -1.0 && x < xn + 1.0 && y < yn + 1.0) {
+            /* clamped by comparisons: fmin and fmax are calls, per sample */
+            x = x > 0.0 ? (x < xn - 1.0 ? x : xn - 1.0) : 0.0;
+            y = y > 0.0 ? (y < yn - 1.0 ? y : yn - 1.0) : 0.0;
             g->f[(size_t)y * g->nx + (size_t)x] = 0.0f;
         }
     }
@@ -63,36 +64,187 @@ void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
     g->f = NULL;
 }
 
-int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
+/* The columns of a seeded raster (cells 0 or FAR): each cell's squared
+ * distance to the nearest seed in its column, capped at FAR, which is what
+ * the parabola envelope gives for such a column. Two sweeps down and up the
+ * rows in memory order, with no division; run[i] counts cells since the
+ * last seed in column i (-1: none yet). */
+static void columns_by_sweeps(qc__gap_grid *g, long *run)
 {
-    size_t m = g->nx > g->ny ? g->nx : g->ny, i, j;
-    double *col = qc__alloc_array(ctx, 3 * m + 1, sizeof *col);
-    int *v = qc__alloc_array(ctx, m, sizeof *v);
-    double *out, *z;
+    const double far = (double)(float)QC__GAP_FAR;
+    size_t i, j, nx = g->nx, ny = g->ny;
 
-    if (col == NULL || v == NULL) {
-        qc__free(ctx, col, (3 * m + 1) * sizeof *col);
-        qc__free(ctx, v, m * sizeof *v);
+    for (i = 0; i < nx; i++)
+        run[i] = -1;
+    for (j = 0; j < ny; j++) { /* down: f holds the distance from above, or -1 */
+        float *row = g->f + j * nx;
+        for (i = 0; i < nx; i++) {
+            run[i] = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            row[i] = (float)run[i];
+        }
+    }
+    for (i = 0; i < nx; i++)
+        run[i] = -1;
+    for (j = ny; j-- > 0;) { /* up: the nearer of the two, squared */
+        float *row = g->f + j * nx;
+        for (i = 0; i < nx; i++) {
+            long up = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            long down = (long)row[i], best = down < 0 || (up >= 0 && up < down) ? up : down;
+            double sq = (double)best * (double)best;
+            run[i] = up;
+            row[i] = (float)(best < 0 || sq > far ? far : sq);
+        }
+    }
+}
+
+/* A row's exact transform by looking out from each cell only as far as the
+ * best found so far reaches: d[q] <= f[q], and a cell k away adds k^2, so
+ * with near seeds (the usual raster: a path every few cells) it beats the
+ * parabola envelope's divisions. Integers in doubles: exact, so it gives
+ * the envelope's very values (an unseeded column's QC__GAP_FAR included).
+ * 0 when the row needs more than budget looks (far seeds): the caller runs
+ * the envelope instead. */
+static int row_by_looking_out(const double *f, size_t n, double *d, size_t budget)
+{
+    size_t q, k, looks = 0;
+
+    for (q = 0; q < n; q++) {
+        double best = f[q];
+        size_t reach = q > n - 1 - q ? q : n - 1 - q; /* no cell lies farther */
+        for (k = 1; k <= reach && (double)k * (double)k < best; k++) {
+            double kk = (double)k * (double)k;
+            if (q >= k && kk + f[q - k] < best)
+                best = kk + f[q - k];
+            if (q + k < n && kk + f[q + k] < best)
+                best = kk + f[q + k];
+        }
+        looks += k;
+        if (looks > budget)
+            return 0;
+        d[q] = best;
+    }
+    return 1;
+}
+
+/* Scratch of the row passes: the envelope's, and a row of doubles. */
+typedef struct row_scratch {
+    double *col, *out, *z;
+    int *v;
+    long *run;
+    size_t m;
+} row_scratch;
+
+static void scratch_free(qc_ctx *ctx, row_scratch *r, size_t nx)
+{
+    qc__free(ctx, r->col, (3 * r->m + 1) * sizeof *r->col);
+    qc__free(ctx, r->v, r->m * sizeof *r->v);
+    qc__free(ctx, r->run, nx * sizeof *r->run);
+}
+
+static int scratch_alloc(qc_ctx *ctx, row_scratch *r, const qc__gap_grid *g)
+{
+    r->m = g->nx > g->ny ? g->nx : g->ny;
+    r->col = qc__alloc_array(ctx, 3 * r->m + 1, sizeof *r->col);
+    r->v = qc__alloc_array(ctx, r->m, sizeof *r->v);
+    r->run = qc__alloc_array(ctx, g->nx, sizeof *r->run);
+    if (r->col == NULL || r->v == NULL || r->run == NULL) {
+        scratch_free(ctx, r, g->nx);
         return QC_ENOMEM;
     }
-    out = col + m;
-    z = out + m;
-    for (i = 0; i < g->nx; i++) {
-        for (j = 0; j < g->ny; j++)
-            col[j] = (double)g->f[j * g->nx + i];
-        qc__edt_1d(col, g->ny, out, v, z);
-        for (j = 0; j < g->ny; j++)
-            g->f[j * g->nx + i] = (float)out[j];
-    }
+    r->out = r->col + r->m;
+    r->z = r->out + r->m;
+    return QC_OK;
+}
+
+/* Row j's exact transform into r->out, from its column values in r->col. */
+static void row_exact(row_scratch *r, size_t nx)
+{
+    if (!row_by_looking_out(r->col, nx, r->out, 8 * nx + 64))
+        qc__edt_1d(r->col, nx, r->out, r->v, r->z);
+}
+
+int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
+{
+    row_scratch r;
+    size_t i, j;
+
+    QC__TRY(scratch_alloc(ctx, &r, g));
+    columns_by_sweeps(g, r.run);
     for (j = 0; j < g->ny; j++) {
+        float *row = g->f + j * g->nx;
         for (i = 0; i < g->nx; i++)
-            col[i] = (double)g->f[j * g->nx + i];
-        qc__edt_1d(col, g->nx, out, v, z);
+            r.col[i] = (double)row[i];
+        row_exact(&r, g->nx);
         for (i = 0; i < g->nx; i++)
-            g->f[j * g->nx + i] = (float)out[i];
+            row[i] = (float)r.out[i];
     }
-    qc__free(ctx, col, (3 * m + 1) * sizeof *col);
-    qc__free(ctx, v, m * sizeof *v);
+    scratch_free(ctx, &r, g->nx);
+    return QC_OK;
+}
+
+/* Cell q's exact value from its row's column values, looking out no
+ * farther than its best, or as soon as that falls to stop or below (then
+ * an upper bound, <= stop); *looks counts the cells looked at. */
+static double cell_exact(const double *f, size_t n, size_t q, double stop, size_t *looks)
+{
+    double best = f[q];
+    size_t k, reach = q > n - 1 - q ? q : n - 1 - q;
+
+    for (k = 1; k <= reach && (double)k * (double)k < best && best > stop; k++) {
+        double kk = (double)k * (double)k;
+        if (q >= k && kk + f[q - k] < best)
+            best = kk + f[q - k];
+        if (q + k < n && kk + f[q + k] < best)
+            best = kk + f[q + k];
+    }
+    *looks += k;
+    return best;
+}
+
+int qc__gap_transform_above(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *mask,
+                            double floor, int raise, size_t *best_at)
+{
+    row_scratch r;
+    size_t i, j, nx = g->nx, budget = 8 * nx + 64;
+
+    QC__TRY(scratch_alloc(ctx, &r, g));
+    columns_by_sweeps(g, r.run); /* f: squared column distances, upper bounds */
+    *best_at = SIZE_MAX;
+    for (j = 0; j < g->ny; j++) {
+        float *row = g->f + j * nx;
+        const unsigned char *in = mask + j * nx;
+        double floor0 = floor;
+        size_t at0 = *best_at, looks = 0;
+
+        for (i = 0; i < nx; i++)
+            r.out[i] = r.col[i] = (double)row[i];
+        /* cell by cell in index order, exact only where the upper bound
+         * passes the floor, so the first cell of the greatest value wins
+         * as a scan of the whole transform would pick it */
+        for (i = 0; i < nx && looks <= budget; i++)
+            if (in[i] && r.col[i] > floor) {
+                /* a cell that falls to the floor is out: its bound will do */
+                double d = cell_exact(r.col, nx, i, floor, &looks);
+                r.out[i] = d;
+                if (raise && d > floor) {
+                    floor = d;
+                    *best_at = j * nx + i;
+                }
+            }
+        if (looks > budget) { /* far seeds: the whole row, then its scan */
+            floor = floor0;
+            *best_at = at0;
+            row_exact(&r, nx);
+            for (i = 0; i < nx; i++)
+                if (raise && in[i] && r.out[i] > floor) {
+                    floor = r.out[i];
+                    *best_at = j * nx + i;
+                }
+        }
+        for (i = 0; i < nx; i++)
+            row[i] = (float)r.out[i];
+    }
+    scratch_free(ctx, &r, nx);
     return QC_OK;
 }
 
@@ -194,14 +346,13 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
         }
     }
     qc__gap_seed_region(&g, region);
-    rc = qc__gap_transform(ctx, &g);
+    rc = qc__gap_transform_above(ctx, &g, mask, -1.0, 1, &k);
     if (rc < 0)
         goto out;
-    for (k = 0; k < g.nx * g.ny; k++)
-        if (mask[k] && (double)g.f[k] > best) {
-            best = (double)g.f[k];
-            best_at = k;
-        }
+    if (k != SIZE_MAX) {
+        best_at = k;
+        best = (double)g.f[k];
+    }
 out:
     if (rc < 0) {
         qc__free(ctx, g.f, g.nx * g.ny * sizeof *g.f);

@@ -30,7 +30,16 @@ QC__HIDDEN int qc__gap_grid_inside(qc_ctx *ctx, const qc_region *region, double 
 QC__HIDDEN void qc__gap_seed_segment(qc__gap_grid *g, qc_vec2 a, qc_vec2 b);
 /* Zeroes the cells every ring edge of region passes through. */
 QC__HIDDEN void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region);
-/* f becomes each cell's squared distance (in cells) to the nearest zero cell. */
+/* f, seeded (every cell 0 or QC__GAP_FAR), becomes each cell's squared distance
+ * (in cells) to the nearest zero cell, capped at QC__GAP_FAR. */
 QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
+/* As qc__gap_transform, but exact only where it matters: where mask is set
+ * and the cell's value exceeds floor; elsewhere f holds an upper bound (the
+ * distance along its column, or a nearer one found on the way). With raise, floor rises to each new greatest
+ * value, so the exact cells are the candidates for the maximum over mask,
+ * and *best_at receives the first cell of that maximum (SIZE_MAX: none
+ * above the floor), the cell a scan of qc__gap_transform would pick. */
+QC__HIDDEN int qc__gap_transform_above(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *mask,
+                                       double floor, int raise, size_t *best_at);
 
 #endif

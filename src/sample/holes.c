@@ -21,6 +21,57 @@ typedef struct hole {
     uint32_t at;
 } hole;
 
+/* Clears mask wherever a seed (a 0 cell of g) lies within squared cell
+ * distance lim: what stays set is a hole (its nearest seed beyond lim),
+ * found by stamping a disk round each seed, cheaper than a distance
+ * transform of the whole raster when seeds are points. */
+static void stamp_seeds(const qc__gap_grid *g, unsigned char *mask, double lim)
+{
+    long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, i, j, dy;
+
+    while ((double)(r + 1) * (double)(r + 1) <= lim)
+        r++;
+    while (r > 0 && (double)r * (double)r > lim)
+        r--;
+    for (j = 0; j < ny; j++)
+        for (i = 0; i < nx; i++) {
+            if (g->f[j * nx + i] != 0.0f)
+                continue;
+            for (dy = -r; dy <= r; dy++) {
+                long y = j + dy, dx = r, x;
+                if (y < 0 || y >= ny)
+                    continue;
+                while (dx > 0 && (double)dx * (double)dx + (double)dy * (double)dy > lim)
+                    dx--;
+                for (x = i - dx < 0 ? 0 : i - dx; x <= i + dx && x < nx; x++)
+                    mask[y * nx + x] = 0;
+            }
+        }
+}
+
+/* Cell (i, j)'s squared distance to the nearest seed, cells, looking in
+ * square rings outward until no nearer seed can lie beyond (the value a
+ * distance transform gives it: integers, exact). */
+static double seed_dist2(const qc__gap_grid *g, long i, long j)
+{
+    long nx = (long)g->nx, ny = (long)g->ny, r, x, y;
+    double best = (double)(float)QC__GAP_FAR;
+
+    for (r = 0; (double)r * (double)r < best && (r <= nx || r <= ny); r++)
+        for (y = j - r; y <= j + r; y++) {
+            long step = (y == j - r || y == j + r) ? 1 : 2 * r;
+            if (y < 0 || y >= ny)
+                continue;
+            for (x = i - r; x <= i + r; x += step > 0 ? step : 1)
+                if (x >= 0 && x < nx && g->f[y * nx + x] == 0.0f) {
+                    double d2 = (double)(x - i) * (double)(x - i) +
+                                (double)(y - j) * (double)(y - j);
+                    best = d2 < best ? d2 : best;
+                }
+        }
+    return best;
+}
+
 static int cmp_hole(const void *pa, const void *pb) /* farthest first */
 {
     const hole *a = pa, *b = pb;
@@ -56,10 +107,19 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         goto out;
     for (i = 0; i < out->n; i++)
         qc__gap_seed_segment(&g, out->v[i], out->v[i]);
-    rc = qc__gap_transform(ctx, &g);
-    if (rc < 0)
-        goto out;
+    stamp_seeds(&g, mask, lim);
     for (k = 0; k < cells; k++)
+        nh += mask[k];
+    if (nh > cells / 64) { /* many holes: their distances by one transform */
+        rc = qc__gap_transform_above(ctx, &g, mask, lim, 0, &k);
+        if (rc < 0)
+            goto out;
+    } else {
+        for (k = 0; k < cells; k++)
+            if (mask[k])
+                g.f[k] = (float)seed_dist2(&g, (long)(k % g.nx), (long)(k / g.nx));
+    }
+    for (k = 0, nh = 0; k < cells; k++)
         nh += mask[k] && (double)g.f[k] > lim;
     if (nh == 0)
         goto out;

@@ -154,8 +154,11 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        nr += mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx);
+    for (k = 0; k < cells; k++) /* ridges marked in the mask (2), tested once */
+        if (mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx)) {
+            mask[k] |= 2;
+            nr++;
+        }
     rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
     if (rg == NULL) {
         rc = QC_ENOMEM;
@@ -163,7 +166,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     }
     nr = 0;
     for (k = 0; k < cells; k++)
-        if (mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx)) {
+        if (mask[k] & 2) {
             rg[nr].f = g.f[k];
             rg[nr].at = (uint32_t)k;
             nr++;

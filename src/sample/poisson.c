@@ -34,6 +34,20 @@ static int is_far(const pgrid *g, const qc_points *pts, qc_vec2 p)
     long cx = (long)((p.x - g->x0) / g->cell), cy = (long)((p.y - g->y0) / g->cell);
     size_t i;
 
+    if (cx >= 2 && cy >= 2 && cx + 2 < (long)g->nx && cy + 2 < (long)g->ny) {
+        /* away from the grid's sides: the same cells, no bounds to check */
+        const uint32_t *at = g->slot + (size_t)cy * g->nx + (size_t)cx;
+        long w = (long)g->nx;
+        for (i = 0; i < 21; i++) {
+            uint32_t s = at[off[i][1] * w + off[i][0]];
+            if (s != EMPTY) {
+                double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
+                if (dx * dx + dy * dy < g->d2)
+                    return 0;
+            }
+        }
+        return 1;
+    }
     for (i = 0; i < 21; i++) {
         long x = cx + off[i][0], y = cy + off[i][1];
         uint32_t s;

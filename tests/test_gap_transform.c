@@ -1,0 +1,183 @@
+/*
+ * The measures' distance raster (qc__gap_transform, src/measure/gap.c):
+ * every cell's squared distance to the nearest seeded cell, capped at
+ * QC__GAP_FAR, checked cell by cell against brute force on rasters whose
+ * seeds are scattered, in one column, one row, one cell or absent.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "../src/measure/measure_internal.h"
+#include "quiltc.h"
+#include "testalloc.h"
+#include "unity.h"
+
+static testalloc ta;
+static qc_ctx ctx;
+
+void setUp(void)
+{
+    memset(&ta, 0, sizeof ta);
+    qc_ctx_init(&ctx, testalloc_fn, &ta);
+}
+
+void tearDown(void)
+{
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+/* A deterministic scatter: roughly one cell in `every` seeded. */
+static int seeded(size_t i, size_t j, unsigned every, unsigned salt)
+{
+    unsigned h = (unsigned)(i * 2654435761u) ^ (unsigned)(j * 40503u) ^ salt;
+
+    h ^= h >> 13;
+    h *= 0x5bd1e995u;
+    h ^= h >> 15;
+    return every > 0 && h % every == 0;
+}
+
+/* Seeds the nx x ny raster by kind, transforms it and compares each cell
+ * with the minimum over all seeds of the squared distance (FAR if none). */
+static void check(size_t nx, size_t ny, int kind, unsigned every)
+{
+    const float far = (float)QC__GAP_FAR;
+    qc__gap_grid g;
+    float *want;
+    size_t i, j, a, b, cells = nx * ny;
+
+    memset(&g, 0, sizeof g);
+    g.nx = nx;
+    g.ny = ny;
+    g.h = 1.0;
+    g.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *g.f);
+    want = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *want);
+    TEST_ASSERT_NOT_NULL(g.f);
+    TEST_ASSERT_NOT_NULL(want);
+    for (j = 0; j < ny; j++)
+        for (i = 0; i < nx; i++) {
+            int s = kind == 0 ? seeded(i, j, every, (unsigned)nx)
+                  : kind == 1 ? i == nx / 3
+                  : kind == 2 ? j == ny - 1
+                  : kind == 3 ? (i == nx - 1 && j == 0) : 0;
+            g.f[j * nx + i] = s ? 0.0f : far;
+        }
+    for (j = 0; j < ny; j++)
+        for (i = 0; i < nx; i++) {
+            double best = (double)far;
+            for (b = 0; b < ny; b++)
+                for (a = 0; a < nx; a++)
+                    if (g.f[b * nx + a] == 0.0f) {
+                        double dx = (double)a - (double)i, dy = (double)b - (double)j;
+                        double d2 = dx * dx + dy * dy;
+                        best = d2 < best ? d2 : best;
+                    }
+            want[j * nx + i] = (float)best;
+        }
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform(&ctx, &g));
+    for (i = 0; i < cells; i++)
+        if (want[i] != g.f[i]) {
+            char msg[128];
+            snprintf(msg, sizeof msg, "cell %lu of %lu x %lu, kind %d: %.1f, not %.1f",
+                     (unsigned long)i, (unsigned long)nx, (unsigned long)ny, kind,
+                     (double)g.f[i], (double)want[i]);
+            TEST_FAIL_MESSAGE(msg);
+        }
+    testalloc_fn(&ta, g.f, cells * sizeof *g.f, 0);
+    testalloc_fn(&ta, want, cells * sizeof *want, 0);
+}
+
+/* qc__gap_transform_above against the full transform on the same seeds and
+ * a scattered mask: the same first greatest cell over the mask (raise), the
+ * exact value wherever a masked cell exceeds the floor (no raise), and an
+ * upper bound everywhere. */
+static void check_above(size_t nx, size_t ny, unsigned every, double floor)
+{
+    const float far = (float)QC__GAP_FAR;
+    qc__gap_grid full, lazy;
+    unsigned char *mask;
+    size_t i, cells = nx * ny, at, want_at = SIZE_MAX;
+    double best = -1.0;
+    int raise;
+
+    mask = (unsigned char *)testalloc_fn(&ta, NULL, 0, cells);
+    TEST_ASSERT_NOT_NULL(mask);
+    for (raise = 0; raise < 2; raise++) {
+        memset(&full, 0, sizeof full);
+        full.nx = nx;
+        full.ny = ny;
+        full.h = 1.0;
+        lazy = full;
+        full.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *full.f);
+        lazy.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *lazy.f);
+        TEST_ASSERT_NOT_NULL(full.f);
+        TEST_ASSERT_NOT_NULL(lazy.f);
+        for (i = 0; i < cells; i++) {
+            int s = every > 0 ? seeded(i % nx, i / nx, every, 3u)
+                              : (i % nx) % 7 == 0 && (i / nx) % 5 == 0; /* ties */
+            full.f[i] = lazy.f[i] = s ? 0.0f : far;
+            mask[i] = (unsigned char)!seeded(i % nx, i / nx, 4, 9u);
+        }
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform(&ctx, &full));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform_above(&ctx, &lazy, mask,
+                                                             raise ? -1.0 : floor, raise, &at));
+        for (i = 0; i < cells; i++) {
+            TEST_ASSERT_TRUE(lazy.f[i] >= full.f[i]);
+            if (!raise && mask[i] && (double)full.f[i] > floor)
+                TEST_ASSERT_EQUAL_FLOAT(full.f[i], lazy.f[i]);
+            if (raise && mask[i] && (double)full.f[i] > best) {
+                best = (double)full.f[i];
+                want_at = i;
+            }
+        }
+        if (raise) {
+            TEST_ASSERT_EQUAL_size_t(want_at, at);
+            TEST_ASSERT_EQUAL_FLOAT(full.f[want_at], lazy.f[at]);
+        }
+        testalloc_fn(&ta, full.f, cells * sizeof *full.f, 0);
+        testalloc_fn(&ta, lazy.f, cells * sizeof *lazy.f, 0);
+    }
+    testalloc_fn(&ta, mask, cells, 0);
+}
+
+void test_gap_transform_above_should_agree_where_it_matters(void)
+{
+    check_above(61, 47, 23, 9.0);
+    check_above(47, 61, 150, 30.0);
+    check_above(300, 4, 900, 2.0); /* rows past the looking-out budget */
+    check_above(50, 40, 0, 5.0);   /* a lattice of seeds: the greatest value ties */
+}
+
+void test_gap_transform_should_match_brute_force_on_scattered_seeds(void)
+{
+    check(37, 23, 0, 11);
+    check(23, 37, 0, 40);
+    check(50, 50, 0, 300);
+    check(1, 29, 0, 7);
+    check(29, 1, 0, 7);
+}
+
+void test_gap_transform_should_carry_a_lone_column_row_or_cell_across(void)
+{
+    check(31, 17, 1, 0);
+    check(31, 17, 2, 0);
+    check(31, 17, 3, 0);
+    check(5, 1, 3, 0);   /* the far end of a row is looked at */
+    check(200, 3, 3, 0); /* seeds too far apart for looking out: the envelope */
+    check(200, 3, 1, 0);
+}
+
+void test_gap_transform_should_leave_an_unseeded_raster_far(void)
+{
+    check(13, 9, 4, 0);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_gap_transform_should_match_brute_force_on_scattered_seeds);
+    RUN_TEST(test_gap_transform_should_carry_a_lone_column_row_or_cell_across);
+    RUN_TEST(test_gap_transform_should_leave_an_unseeded_raster_far);
+    RUN_TEST(test_gap_transform_above_should_agree_where_it_matters);
+    return UNITY_END();
+}
