@@ -52,6 +52,7 @@ QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint
 
 /* ---- the solver state ---- */
 
+
 typedef struct qc__tsp {
     qc_ctx *ctx;
     const qc_vec2 *p;   /* the caller's points (exact geometry) */
@@ -62,6 +63,7 @@ typedef struct qc__tsp {
     uint32_t *ustart;   /* m + 1: distinct point u is sorted[ustart[u] .. ustart[u+1]) */
     unsigned k;         /* candidates per point */
     uint32_t *nb;       /* m * k candidate lists */
+    double *nbd;        /* their distances (Or-3opt only), or NULL */
     double eps;         /* gains below this are rounding noise */
 
     /* the tour over 0..m-1 as an array with positions */
@@ -83,9 +85,27 @@ static inline double qc__tsp_dist(const qc__tsp *s, uint32_t a, uint32_t b)
     return sqrt(dx * dx + dy * dy);
 }
 
+/* The distance from a to its j-th candidate: the search loops read the
+ * cache Or-3opt fills (a third of their time went to these square roots
+ * and the loads of the candidates' points), Or-opt computes it. */
+static inline double qc__tsp_cand_dist(const qc__tsp *s, uint32_t a, unsigned j)
+{
+    size_t at = (size_t)a * s->k + j;
+    return s->nbd ? s->nbd[at] : qc__tsp_dist(s, a, s->nb[at]);
+}
+
 /* Sorts the caller's points along a Hilbert curve, groups duplicates and
  * fills q, sorted, ustart, m and eps (tsp_prep.c). QC_OK or QC_ENOMEM. */
 QC__HIDDEN int qc__tsp_prepare(qc__tsp *s);
+
+/* Gives the last slots of each candidate list to Delaunay neighbours the
+ * nearest miss (tsp_cand.c); nothing beyond the triangulation's range.
+ * QC_OK or QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_add_delaunay(qc__tsp *s);
+
+/* Fills nbd from the final candidate lists (tsp_cand.c). QC_OK or
+ * QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_cache_dists(qc__tsp *s);
 
 /* Greedy-edge tour over the candidate lists, fragments joined greedily then
  * along the Hilbert order; fills t and pos (tsp_construct.c). */

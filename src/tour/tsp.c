@@ -24,6 +24,7 @@ static void release(qc__tsp *s)
     qc__free(ctx, s->ustart, (m + 1) * sizeof *s->ustart);
     qc__free(ctx, s->q, m * sizeof *s->q);
     qc__free(ctx, s->nb, m * s->k * sizeof *s->nb);
+    qc__free(ctx, s->nbd, m * s->k * sizeof *s->nbd);
     qc__free(ctx, s->t, m * sizeof *s->t);
     qc__free(ctx, s->pos, m * sizeof *s->pos);
     qc__free(ctx, s->queue, m * sizeof *s->queue);
@@ -98,6 +99,10 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
                         s->k, (unsigned long)m);
     QC__TRY(qc__knn(ctx, s->q, m, s->k, s->nb));
     QC__TRY(qc__tsp_greedy(s));
+    if (method == QC_TSP_METHOD_OR3OPT) {
+        QC__TRY(qc__tsp_add_delaunay(s));
+        QC__TRY(qc__tsp_cache_dists(s));
+    }
     if (method == QC_TSP_METHOD_GREEDY)
         return QC_OK;
     s->queue = qc__alloc_array(ctx, m, sizeof *s->queue);

@@ -133,7 +133,7 @@ static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 
         for (j = 0; j < s->k; j++) {
             uint32_t c = nb[j], d;
-            double dac = qc__tsp_dist(s, a, c), g;
+            double dac = qc__tsp_cand_dist(s, a, j), g;
 
             if (dac >= dab)
                 break;
@@ -193,7 +193,7 @@ static void or_segment(const qc__tsp *s, uint32_t first, uint32_t len, or_move *
 
         for (j = 0; j < s->k; j++) {
             uint32_t c = nb[j], x;
-            double dce = qc__tsp_dist(s, c, e), g;
+            double dce = qc__tsp_cand_dist(s, e, j), g;
 
             if (dce >= g1)
                 break;

@@ -65,7 +65,7 @@ static void close_3opt(const qc__tsp *s, uint32_t t[7], double g2, int side, int
     unsigned j;
 
     for (j = 0; j < s->k; j++) {
-        double g = g2 - qc__tsp_dist(s, t[4], nb[j]);
+        double g = g2 - qc__tsp_cand_dist(s, t[4], j);
         int k;
 
         if (g <= s->eps)
@@ -111,7 +111,7 @@ static void search(const qc__tsp *s, uint32_t a, int dir, move3 *bm)
     d12 = qc__tsp_dist(s, t[1], t[2]);
     nb = s->nb + (size_t)t[2] * s->k;
     for (j = 0; j < s->k; j++) {
-        double g1 = d12 - qc__tsp_dist(s, t[2], nb[j]);
+        double g1 = d12 - qc__tsp_cand_dist(s, t[2], j);
 
         if (g1 <= s->eps)
             break;
