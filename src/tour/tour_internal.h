@@ -147,8 +147,11 @@ QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int level, double *delta);
  * and returns 1, or 0 when none shortens the tour. *rc gets QC_ENOMEM
  * when the undo log cannot grow. */
 QC__HIDDEN int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc);
-/* rounds of kick + local search at level, each kept only if shorter. */
-QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed);
+/* rounds of kick + local search at level, each kept if the tour stays
+ * within slack_edges average edges of the best so far (0: only shorter
+ * tours); ends at the best. */
+QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed,
+                               double slack_edges);
 
 /* Removes every proper crossing, decided exactly on the caller's points, by
  * 2-opt moves (each shortens the tour, so it ends) (tsp_uncross.c). */

@@ -3,9 +3,8 @@
  * don't-look bits (a FIFO of active points), Or-opt (segments of 1-3
  * points moved next to a candidate, either way round), and the
  * perturbation: a random segment swap (a local double bridge) followed by
- * local search from its ends, undone unless the tour got shorter (or, for
- * Or-3opt, stays within a slack of the best: the walk ends back at the
- * best). Every change is a reversal of positions, so an undo replays the
+ * local search from its ends, undone unless the tour got shorter or stays
+ * within a slack of the best (the walk ends back at the best). Every change is a reversal of positions, so an undo replays the
  * log backwards.
  */
 #include <string.h>
@@ -332,13 +331,7 @@ static void undo_to(qc__tsp *s, size_t keep)
     }
 }
 
-/* How much longer than the best, in average edges, a budget's walk may
- * go on from (Or-3opt rounds only; Or-opt keeps only shorter tours): on
- * TSPLIB up to 2000 points after 100 rounds per point, 0.2 gave 0.31%
- * above the optima, 0 gave 0.39% and 0.5 gave 0.37%. */
-#define ACCEPT_SLACK 0.2
-
-int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed)
+int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, double slack_edges)
 {
     qc_rng rng;
     uint64_t r;
@@ -350,10 +343,10 @@ int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed)
     if (s->m < 8 || rounds == 0)
         return QC_OK;
     qc_rng_seed(&rng, seed);
-    if (level == QC__TSP_LEVEL_OR3OPT) {
+    if (slack_edges > 0.0) {
         for (i = 0; i < s->m; i++)
             slack += qc__tsp_dist(s, s->t[i], qc__tsp_next(s, s->t[i]));
-        slack *= ACCEPT_SLACK / s->m;
+        slack *= slack_edges / s->m;
     }
     s->logging = 1;
     s->nlog = 0;
