@@ -639,15 +639,16 @@ void or3opt_should_join_the_clusters_of_fl1577(void)
 }
 
 /* The budget: more rounds never lengthen the tour and keep shortening it
- * (pcb442: 1.34% with the default's kicks, 0.30% after 2000 more, 0.28%
- * after 20000); a time budget is a fixed round count, never a clock. */
+ * (pcb442, seed 7: 1.46% with the default's kicks, 0.35% after 2000 more,
+ * 0.26% after 20000); a time budget is a fixed round count, never a
+ * clock. */
 void tsp_budget_should_keep_paying(void)
 {
     double g0 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0);
     double g1 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 2000);
     double g2 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 20000);
 
-    TEST_ASSERT_EQUAL_UINT64(100000, qc_tsp_rounds_for_ms(1000.0));
+    TEST_ASSERT_EQUAL_UINT64(50000, qc_tsp_rounds_for_ms(1000.0));
     TEST_ASSERT_EQUAL_UINT64(QC_TSP_ROUNDS_PER_MS, qc_tsp_rounds_for_ms(1.0));
     TEST_ASSERT_EQUAL_UINT64(0, qc_tsp_rounds_for_ms(0.0));
     TEST_ASSERT_EQUAL_UINT64(0, qc_tsp_rounds_for_ms(-5.0));
@@ -659,6 +660,19 @@ void tsp_budget_should_keep_paying(void)
     TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(g1, g2);
     TEST_ASSERT_LESS_THAN_DOUBLE(g0 - 0.3, g2);
     TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(0.6, g2);
+}
+
+/* The budget's rounds search with LK chains of 2-opt moves on top of
+ * Or-3opt: d1291 (drill rows, where 3-opt moves stall) within 0.6% of the
+ * optimum after a 1000 ms budget (0.28%; with Or-3opt rounds it stayed at
+ * 1.3% from 1 s to 10 s). */
+void tsp_budget_should_get_d1291_near_the_optimum(void)
+{
+    double g = tsplib_gap("d1291", 50801, QC_TSP_METHOD_DEFAULT, qc_tsp_rounds_for_ms(1000.0));
+
+    if (g < 0)
+        TEST_IGNORE_MESSAGE("no d1291 in " TSPLIB_DIR);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(0.6, g);
 }
 
 int main(void)
@@ -681,5 +695,6 @@ int main(void)
     RUN_TEST(or3opt_should_come_nearer_than_oropt_could);
     RUN_TEST(or3opt_should_join_the_clusters_of_fl1577);
     RUN_TEST(tsp_budget_should_keep_paying);
+    RUN_TEST(tsp_budget_should_get_d1291_near_the_optimum);
     return UNITY_END();
 }

@@ -70,7 +70,7 @@ typedef struct qc_tsp_params {
  * so a tour's bytes do not depend on the machine's speed. 0 for ms <= 0 or
  * NaN; at most 2^62.
  */
-#define QC_TSP_ROUNDS_PER_MS 100
+#define QC_TSP_ROUNDS_PER_MS 50
 uint64_t qc_tsp_rounds_for_ms(double ms);
 
 /*

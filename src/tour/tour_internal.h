@@ -138,7 +138,7 @@ QC__HIDDEN void qc__tsp_queue_all(qc__tsp *s);
 QC__HIDDEN int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c);
 
 /* How far the local search goes: each level adds a move. */
-enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT };
+enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT, QC__TSP_LEVEL_LK };
 
 /* Local search from the queue until it empties, with the moves of level;
  * adds the applied gains (negative) to *delta. QC_OK or QC_ENOMEM. */
@@ -147,6 +147,10 @@ QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int level, double *delta);
  * and returns 1, or 0 when none shortens the tour. *rc gets QC_ENOMEM
  * when the undo log cannot grow. */
 QC__HIDDEN int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc);
+/* The best LK chain of 2-opt moves from an edge at a (tsp_or3opt.c):
+ * keeps its shortest prefix, queues its ends and returns 1, or leaves the
+ * tour as it was and returns 0. *rc as for qc__tsp_try_or3opt. */
+QC__HIDDEN int qc__tsp_try_lk(qc__tsp *s, uint32_t a, double *delta, int *rc);
 /* rounds of kick + local search at level, each kept if the tour stays
  * within slack_edges average edges of the best so far (0: only shorter
  * tours); ends at the best. */

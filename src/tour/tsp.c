@@ -139,7 +139,7 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
                             DEFAULT_KICK_SLACK));
     qc__tsp_queue_all(s);
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
-    QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OR3OPT, extra, seed ^ UINT64_C(0x9e3779b97f4a7c15),
+    QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_LK, extra, seed ^ UINT64_C(0x9e3779b97f4a7c15),
                             BUDGET_SLACK));
     return qc__tsp_uncross(s);
 }

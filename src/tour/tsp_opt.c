@@ -282,8 +282,10 @@ int qc__tsp_local_search(qc__tsp *s, int level, double *delta)
             continue;
         if (level >= QC__TSP_LEVEL_OROPT && try_oropt(s, a, delta, &rc))
             continue;
-        if (level >= QC__TSP_LEVEL_OR3OPT)
-            qc__tsp_try_or3opt(s, a, delta, &rc);
+        if (level >= QC__TSP_LEVEL_OR3OPT && qc__tsp_try_or3opt(s, a, delta, &rc))
+            continue;
+        if (level >= QC__TSP_LEVEL_LK)
+            qc__tsp_try_lk(s, a, delta, &rc);
     }
     if (rc < 0) { /* leave the queue empty */
         while (pop(s, &a))
