@@ -179,6 +179,16 @@ int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 
 #define LK_DEPTH 10   /* 2-opt moves in a chain */
 #define LK_BREADTH 5  /* first moves tried from an edge */
+/* Longest reversal a chain's move may make: the moves are applied on trial
+ * and mostly undone, so on huge tours long ones would cost more than they
+ * find (no limit below 2000 points). */
+#define LK_REACH 1000
+
+static int lk_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
+{
+    uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
+    return d > LK_REACH && s->m - d > LK_REACH;
+}
 
 typedef struct lk_chain {
     uint32_t mv[LK_DEPTH][4]; /* applied move2 arguments, for the undo */
@@ -202,7 +212,7 @@ static uint32_t lk_t4(const qc__tsp *s, const lk_chain *c, uint32_t t1, uint32_t
 {
     uint32_t t4 = qc__tsp_next(s, t2) == t1 ? qc__tsp_next(s, t3) : qc__tsp_prev(s, t3);
 
-    if (t3 == t1 || t4 == t2 || qc__tsp_too_far(s, t2, t3) ||
+    if (t3 == t1 || t4 == t2 || lk_too_far(s, t2, t3) ||
         has_edge((uint32_t(*)[2])c->out, c->nout, t2, t3) ||
         has_edge((uint32_t(*)[2])c->in, c->nin, t3, t4))
         return t2;
