@@ -615,7 +615,7 @@ void or3opt_should_come_nearer_than_oropt_could(void)
  * of a hole lie in its own cluster, so with k-nearest lists alone no move
  * can rejoin two clusters better (the default: 7.9% above the optimum
  * with seed 7, 5.4% with seed 1). Delaunay neighbours in the last slots
- * reach across: 3.8% with seed 7; within 5% on seeds 1-3 too. */
+ * reach across: 2.3% with seed 7; within 5% on seeds 1-3 too. */
 void or3opt_should_join_the_clusters_of_fl1577(void)
 {
     double g7 = tsplib_gap("fl1577", 22249, QC_TSP_METHOD_DEFAULT, 0);
@@ -639,7 +639,7 @@ void or3opt_should_join_the_clusters_of_fl1577(void)
 }
 
 /* The budget: more rounds never lengthen the tour and keep shortening it
- * (pcb442, seed 7: 1.46% with the default's kicks, 0.35% after 2000 more,
+ * (pcb442, seed 7: 1.46% with the default's kicks, 0.28% after 2000 more,
  * 0.26% after 20000); a time budget is a fixed round count, never a
  * clock. */
 void tsp_budget_should_keep_paying(void)
@@ -664,7 +664,7 @@ void tsp_budget_should_keep_paying(void)
 
 /* The budget's rounds search with LK chains of 2-opt moves on top of
  * Or-3opt: d1291 (drill rows, where 3-opt moves stall) within 0.6% of the
- * optimum after a 1000 ms budget (0.28%; with Or-3opt rounds it stayed at
+ * optimum after a 1000 ms budget (0.22%; with Or-3opt rounds it stayed at
  * 1.3% from 1 s to 10 s). */
 void tsp_budget_should_get_d1291_near_the_optimum(void)
 {

@@ -130,11 +130,11 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     /* The default's own kicks re-optimise with Or-opt only, then one Or-3opt
      * pass: on TSPLIB, at equal time, 0.6n such kicks beat 0.35n searched
      * with Or-3opt (2.0% against 2.24% above the optima). Walking on from
-     * tours up to half an average edge longer than the best lets 0.45n
-     * kicks do what 0.6n did only keeping shorter tours (1.87% against
-     * 1.82%, seeds 1-3). A longer budget searches with Or-3opt and walks
-     * on within one edge: after 100 rounds per point, up to 2000 points,
-     * 0.19% above the optima (0.2 edge: 0.35%; Or-opt only: 0.58%). */
+     * tours up to half an average edge longer than the best, 0.55n kicks
+     * give 1.75% (seeds 1-3) at 2.9x Or-opt's time (0.6n keeping only
+     * shorter tours: 1.82% at 3.3x). A budget's rounds search deeper (LK
+     * chains, tsp_or3opt.c) and walk on within one edge: up to 2000 points,
+     * 1000 ms, 0.13% above the optima (within 0.2 edge, Or-3opt: 0.31%). */
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, QC_TSP_OR3OPT_KICKS(m), seed,
                             DEFAULT_KICK_SLACK));
     qc__tsp_queue_all(s);
