@@ -1,8 +1,9 @@
 /*
  * The built-in TSP (paper §4.2, issues 3 and 21): greedy-edge construction
  * over k-nearest-neighbour candidates, 2-opt with neighbour lists and
- * don't-look bits, Or-opt, Or-3opt (tsp_or3opt.c), perturbation rounds
- * (the default's own plus the caller's budget), and a final pass removing
+ * don't-look bits, Or-opt, Or-3opt (tsp_or3opt.c, its lists completed by
+ * Delaunay neighbours in tsp_cand.c), perturbation rounds (the default's
+ * own, then the caller's budget, which adds LK chains), and a final pass removing
  * every proper crossing by exact predicates. Works on the distinct points;
  * copies of a point follow their first copy in the tour (zero-length
  * edges cross nothing).
