@@ -611,16 +611,44 @@ void or3opt_should_come_nearer_than_oropt_could(void)
     TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(2.0, tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0));
 }
 
+/* fl1577's drill holes sit in tight clusters: all ten nearest neighbours
+ * of a hole lie in its own cluster, so with k-nearest lists alone no move
+ * can rejoin two clusters better (the default: 7.9% above the optimum
+ * with seed 7, 5.4% with seed 1). Delaunay neighbours in the last slots
+ * reach across: 2.3% with seed 7; within 5% on seeds 1-3 too. */
+void or3opt_should_join_the_clusters_of_fl1577(void)
+{
+    double g7 = tsplib_gap("fl1577", 22249, QC_TSP_METHOD_DEFAULT, 0);
+    qc_points pts = {0};
+    uint64_t seed;
+
+    if (g7 < 0)
+        TEST_IGNORE_MESSAGE("no fl1577 in " TSPLIB_DIR);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(5.0, g7);
+    TEST_ASSERT_EQUAL_INT(0, load_tsplib("fl1577", &pts));
+    for (seed = 1; seed <= 3; seed++) {
+        qc_tsp_params tp = params(QC_TSP_METHOD_DEFAULT, 0, seed);
+        qc_order o = {0};
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&ctx, pts.v, pts.n, &tp, &o));
+        assert_permutation(o.i, pts.n);
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(5.0, 100 * (tsplib_length(pts.v, o.i, o.n) / 22249 - 1));
+        qc_order_free(&ctx, &o);
+    }
+    qc_points_free(&ctx, &pts);
+}
+
 /* The budget: more rounds never lengthen the tour and keep shortening it
- * (pcb442: 1.34% with the default's kicks, 0.30% after 2000 more, 0.28%
- * after 20000); a time budget is a fixed round count, never a clock. */
+ * (pcb442, seed 7: 1.46% with the default's kicks, 0.28% after 2000 more,
+ * 0.26% after 20000); a time budget is a fixed round count, never a
+ * clock. */
 void tsp_budget_should_keep_paying(void)
 {
     double g0 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 0);
     double g1 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 2000);
     double g2 = tsplib_gap("pcb442", 50778, QC_TSP_METHOD_DEFAULT, 20000);
 
-    TEST_ASSERT_EQUAL_UINT64(100000, qc_tsp_rounds_for_ms(1000.0));
+    TEST_ASSERT_EQUAL_UINT64(50000, qc_tsp_rounds_for_ms(1000.0));
     TEST_ASSERT_EQUAL_UINT64(QC_TSP_ROUNDS_PER_MS, qc_tsp_rounds_for_ms(1.0));
     TEST_ASSERT_EQUAL_UINT64(0, qc_tsp_rounds_for_ms(0.0));
     TEST_ASSERT_EQUAL_UINT64(0, qc_tsp_rounds_for_ms(-5.0));
@@ -632,6 +660,19 @@ void tsp_budget_should_keep_paying(void)
     TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(g1, g2);
     TEST_ASSERT_LESS_THAN_DOUBLE(g0 - 0.3, g2);
     TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(0.6, g2);
+}
+
+/* The budget's rounds search with LK chains of 2-opt moves on top of
+ * Or-3opt: d1291 (drill rows, where 3-opt moves stall) within 0.6% of the
+ * optimum after a 1000 ms budget (0.22%; with Or-3opt rounds it stayed at
+ * 1.3% from 1 s to 10 s). */
+void tsp_budget_should_get_d1291_near_the_optimum(void)
+{
+    double g = tsplib_gap("d1291", 50801, QC_TSP_METHOD_DEFAULT, qc_tsp_rounds_for_ms(1000.0));
+
+    if (g < 0)
+        TEST_IGNORE_MESSAGE("no d1291 in " TSPLIB_DIR);
+    TEST_ASSERT_LESS_OR_EQUAL_DOUBLE(0.6, g);
 }
 
 int main(void)
@@ -652,6 +693,8 @@ int main(void)
     RUN_TEST(tour_length_should_sum_the_edges);
     RUN_TEST(tsp_should_come_near_the_tsplib_optima);
     RUN_TEST(or3opt_should_come_nearer_than_oropt_could);
+    RUN_TEST(or3opt_should_join_the_clusters_of_fl1577);
     RUN_TEST(tsp_budget_should_keep_paying);
+    RUN_TEST(tsp_budget_should_get_d1291_near_the_optimum);
     return UNITY_END();
 }

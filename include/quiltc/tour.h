@@ -44,13 +44,15 @@ typedef enum qc_tsp_method {
     QC_TSP_METHOD_OROPT,       /* + Or-opt */
     QC_TSP_METHOD_OR3OPT       /* + Or-3opt (sequential 3-opt segment moves),
                                   QC_TSP_OR3OPT_KICKS(n) kicks and Or-3opt again;
-                                  perturbation rounds then search with Or-3opt */
+                                  perturbation rounds then search with Or-3opt
+                                  and LK chains of 2-opt moves */
 } qc_tsp_method;
 
 /* The kicks Or-3opt always spends on n points, before perturb_iterations:
  * each a segment-local double bridge re-optimised around its ends by
- * 2-opt and Or-opt, kept if shorter. */
-#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 3 / 5)
+ * 2-opt and Or-opt, the walk going on from tours up to half an average
+ * edge longer than the best and ending at the best. */
+#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 11 / 20)
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
@@ -69,7 +71,7 @@ typedef struct qc_tsp_params {
  * so a tour's bytes do not depend on the machine's speed. 0 for ms <= 0 or
  * NaN; at most 2^62.
  */
-#define QC_TSP_ROUNDS_PER_MS 100
+#define QC_TSP_ROUNDS_PER_MS 50
 uint64_t qc_tsp_rounds_for_ms(double ms);
 
 /*

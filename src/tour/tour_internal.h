@@ -52,6 +52,7 @@ QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint
 
 /* ---- the solver state ---- */
 
+
 typedef struct qc__tsp {
     qc_ctx *ctx;
     const qc_vec2 *p;   /* the caller's points (exact geometry) */
@@ -62,6 +63,7 @@ typedef struct qc__tsp {
     uint32_t *ustart;   /* m + 1: distinct point u is sorted[ustart[u] .. ustart[u+1]) */
     unsigned k;         /* candidates per point */
     uint32_t *nb;       /* m * k candidate lists */
+    double *nbd;        /* their distances (Or-3opt only), or NULL */
     double eps;         /* gains below this are rounding noise */
 
     /* the tour over 0..m-1 as an array with positions */
@@ -83,9 +85,27 @@ static inline double qc__tsp_dist(const qc__tsp *s, uint32_t a, uint32_t b)
     return sqrt(dx * dx + dy * dy);
 }
 
+/* The distance from a to its j-th candidate: the search loops read the
+ * cache Or-3opt fills (a third of their time went to these square roots
+ * and the loads of the candidates' points), Or-opt computes it. */
+static inline double qc__tsp_cand_dist(const qc__tsp *s, uint32_t a, unsigned j)
+{
+    size_t at = (size_t)a * s->k + j;
+    return s->nbd ? s->nbd[at] : qc__tsp_dist(s, a, s->nb[at]);
+}
+
 /* Sorts the caller's points along a Hilbert curve, groups duplicates and
  * fills q, sorted, ustart, m and eps (tsp_prep.c). QC_OK or QC_ENOMEM. */
 QC__HIDDEN int qc__tsp_prepare(qc__tsp *s);
+
+/* Gives the last slots of each candidate list to Delaunay neighbours the
+ * nearest miss (tsp_cand.c); nothing beyond the triangulation's range.
+ * QC_OK or QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_add_delaunay(qc__tsp *s);
+
+/* Fills nbd from the final candidate lists (tsp_cand.c). QC_OK or
+ * QC_ENOMEM. */
+QC__HIDDEN int qc__tsp_cache_dists(qc__tsp *s);
 
 /* Greedy-edge tour over the candidate lists, fragments joined greedily then
  * along the Hilbert order; fills t and pos (tsp_construct.c). */
@@ -118,7 +138,7 @@ QC__HIDDEN void qc__tsp_queue_all(qc__tsp *s);
 QC__HIDDEN int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c);
 
 /* How far the local search goes: each level adds a move. */
-enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT };
+enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT, QC__TSP_LEVEL_LK };
 
 /* Local search from the queue until it empties, with the moves of level;
  * adds the applied gains (negative) to *delta. QC_OK or QC_ENOMEM. */
@@ -127,8 +147,15 @@ QC__HIDDEN int qc__tsp_local_search(qc__tsp *s, int level, double *delta);
  * and returns 1, or 0 when none shortens the tour. *rc gets QC_ENOMEM
  * when the undo log cannot grow. */
 QC__HIDDEN int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc);
-/* rounds of kick + local search at level, each kept only if shorter. */
-QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed);
+/* The best LK chain of 2-opt moves from an edge at a (tsp_or3opt.c):
+ * keeps its shortest prefix, queues its ends and returns 1, or leaves the
+ * tour as it was and returns 0. *rc as for qc__tsp_try_or3opt. */
+QC__HIDDEN int qc__tsp_try_lk(qc__tsp *s, uint32_t a, double *delta, int *rc);
+/* rounds of kick + local search at level, each kept if the tour stays
+ * within slack_edges average edges of the best so far (0: only shorter
+ * tours); ends at the best. */
+QC__HIDDEN int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed,
+                               double slack_edges);
 
 /* Removes every proper crossing, decided exactly on the caller's points, by
  * 2-opt moves (each shortens the tour, so it ends) (tsp_uncross.c). */

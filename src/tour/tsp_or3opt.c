@@ -65,7 +65,7 @@ static void close_3opt(const qc__tsp *s, uint32_t t[7], double g2, int side, int
     unsigned j;
 
     for (j = 0; j < s->k; j++) {
-        double g = g2 - qc__tsp_dist(s, t[4], nb[j]);
+        double g = g2 - qc__tsp_cand_dist(s, t[4], j);
         int k;
 
         if (g <= s->eps)
@@ -111,7 +111,7 @@ static void search(const qc__tsp *s, uint32_t a, int dir, move3 *bm)
     d12 = qc__tsp_dist(s, t[1], t[2]);
     nb = s->nb + (size_t)t[2] * s->k;
     for (j = 0; j < s->k; j++) {
-        double g1 = d12 - qc__tsp_dist(s, t[2], nb[j]);
+        double g1 = d12 - qc__tsp_cand_dist(s, t[2], j);
 
         if (g1 <= s->eps)
             break;
@@ -173,4 +173,141 @@ int qc__tsp_try_or3opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
         qc__tsp_push(s, bm.t6);
     }
     return 1;
+}
+
+/* ---- LK chains of 2-opt moves (the budget's deeper search) ---- */
+
+#define LK_DEPTH 10   /* 2-opt moves in a chain */
+#define LK_BREADTH 5  /* first moves tried from an edge */
+/* Longest reversal a chain's move may make: the moves are applied on trial
+ * and mostly undone, so on huge tours long ones would cost more than they
+ * find (no limit below 2000 points). */
+#define LK_REACH 1000
+
+static int lk_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
+{
+    uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
+    return d > LK_REACH && s->m - d > LK_REACH;
+}
+
+typedef struct lk_chain {
+    uint32_t mv[LK_DEPTH][4]; /* applied move2 arguments, for the undo */
+    uint32_t out[LK_DEPTH + 1][2], in[LK_DEPTH][2]; /* edges removed, added */
+    unsigned nmv, nout, nin;
+} lk_chain;
+
+static int has_edge(uint32_t (*e)[2], unsigned n, uint32_t a, uint32_t b)
+{
+    unsigned i;
+
+    for (i = 0; i < n; i++)
+        if ((e[i][0] == a && e[i][1] == b) || (e[i][0] == b && e[i][1] == a))
+            return 1;
+    return 0;
+}
+
+/* The point t4 beside t3 that a 2-opt move removing (t1, t2) and (t3, t4)
+ * needs, or t2 when the move is degenerate or not allowed. */
+static uint32_t lk_t4(const qc__tsp *s, const lk_chain *c, uint32_t t1, uint32_t t2, uint32_t t3)
+{
+    uint32_t t4 = qc__tsp_next(s, t2) == t1 ? qc__tsp_next(s, t3) : qc__tsp_prev(s, t3);
+
+    if (t3 == t1 || t4 == t2 || lk_too_far(s, t2, t3) ||
+        has_edge((uint32_t(*)[2])c->out, c->nout, t2, t3) ||
+        has_edge((uint32_t(*)[2])c->in, c->nin, t3, t4))
+        return t2;
+    return t4;
+}
+
+/* One chain from edge (t1, t2) whose first move joins t2 to t3: moves are
+ * applied as they go, then undone back to the shortest tour seen. Returns
+ * the change kept (0 if none). */
+static double lk_run(qc__tsp *s, uint32_t t1, uint32_t t2, uint32_t t3, int *rc)
+{
+    lk_chain c;
+    double g = qc__tsp_dist(s, t1, t2), now = 0.0, best = -s->eps;
+    unsigned keep = 0, depth, j;
+
+    c.nmv = c.nin = 0;
+    c.out[0][0] = t1, c.out[0][1] = t2;
+    c.nout = 1;
+    for (depth = 0; depth < LK_DEPTH && *rc == QC_OK; depth++) {
+        uint32_t t4 = t2;
+        double d23;
+
+        if (depth == 0) {
+            t4 = lk_t4(s, &c, t1, t2, t3);
+        } else { /* the candidate with the best d(t3, t4) - d(t2, t3) */
+            const uint32_t *nb = s->nb + (size_t)t2 * s->k;
+            double bv = -1e300;
+
+            for (j = 0; j < s->k; j++) {
+                uint32_t x = nb[j], y;
+                double dx = qc__tsp_cand_dist(s, t2, j);
+
+                if (g - dx <= s->eps)
+                    break;
+                y = lk_t4(s, &c, t1, t2, x);
+                if (y != t2 && qc__tsp_dist(s, x, y) - dx > bv) {
+                    bv = qc__tsp_dist(s, x, y) - dx;
+                    t3 = x, t4 = y;
+                }
+            }
+        }
+        d23 = qc__tsp_dist(s, t2, t3);
+        if (t4 == t2 || g - d23 <= s->eps)
+            break;
+        *rc = qc__tsp_move2(s, t2, t1, t3, t4);
+        c.mv[c.nmv][0] = t2, c.mv[c.nmv][1] = t3, c.mv[c.nmv][2] = t1, c.mv[c.nmv][3] = t4;
+        c.nmv++;
+        now += d23 + qc__tsp_dist(s, t1, t4) - qc__tsp_dist(s, t1, t2) - qc__tsp_dist(s, t3, t4);
+        if (now < best) {
+            best = now;
+            keep = c.nmv;
+        }
+        g += qc__tsp_dist(s, t3, t4) - d23;
+        c.in[c.nin][0] = t2, c.in[c.nin][1] = t3;
+        c.nin++;
+        c.out[c.nout][0] = t3, c.out[c.nout][1] = t4;
+        c.nout++;
+        t2 = t4;
+    }
+    while (c.nmv > keep && *rc == QC_OK) { /* the inverse of each move, last first */
+        c.nmv--;
+        *rc = qc__tsp_move2(s, c.mv[c.nmv][0], c.mv[c.nmv][1], c.mv[c.nmv][2], c.mv[c.nmv][3]);
+    }
+    if (keep == 0)
+        return 0.0;
+    qc__tsp_push(s, t1);
+    for (j = 0; j < keep; j++) {
+        qc__tsp_push(s, c.mv[j][0]);
+        qc__tsp_push(s, c.mv[j][1]);
+        qc__tsp_push(s, c.mv[j][3]);
+    }
+    return best;
+}
+
+int qc__tsp_try_lk(qc__tsp *s, uint32_t a, double *delta, int *rc)
+{
+    int side;
+    unsigned j;
+
+    for (side = 0; side < 2; side++) {
+        uint32_t t2 = side ? qc__tsp_prev(s, a) : qc__tsp_next(s, a);
+        const uint32_t *nb = s->nb + (size_t)t2 * s->k;
+        double d12 = qc__tsp_dist(s, a, t2);
+
+        for (j = 0; j < s->k && j < LK_BREADTH && *rc == QC_OK; j++) {
+            double got;
+
+            if (d12 - qc__tsp_cand_dist(s, t2, j) <= s->eps)
+                break;
+            got = lk_run(s, a, t2, nb[j], rc);
+            if (got < 0.0) {
+                *delta += got;
+                return 1;
+            }
+        }
+    }
+    return 0;
 }
