@@ -64,6 +64,7 @@ typedef struct grow {
     float *scale;       /* the spacing's local scale (1, less by sharp corners) */
     size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
     double sh;          /* ... at this step */
+    int scaled;         /* whether any node is below 1 (else it is not read) */
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
@@ -142,10 +143,15 @@ static size_t after(const grow *g, size_t i)
 /* The local scale at p (nearest node). */
 static double scale_at(const grow *g, qc_vec2 p)
 {
-    double fx = floor((p.x - g->x0) / g->sh + 0.5), fy = floor((p.y - g->y0) / g->sh + 0.5);
+    double fx, fy;
     size_t i, j;
 
-    if (g->scale == NULL || fx < 0.0 || fy < 0.0 || fx >= (double)g->sx || fy >= (double)g->sy)
+    if (!g->scaled)
+        return 1.0;
+    fx = floor((p.x - g->x0) / g->sh + 0.5);
+    fy = floor((p.y - g->y0) / g->sh + 0.5);
+
+    if (fx < 0.0 || fy < 0.0 || fx >= (double)g->sx || fy >= (double)g->sy)
         return 1.0;
     i = (size_t)fx;
     j = (size_t)fy;
@@ -193,40 +199,56 @@ static int scale_field(qc_ctx *ctx, grow *g, const qc_region *r, double d)
                                         g->y0 + (double)j * g->sh - p.y) / reach;
                     float sc = (float)(t >= 1.0 ? 1.0 : SCALE_MIN + (1.0 - SCALE_MIN) * t);
                     size_t at = (size_t)j * g->sx + (size_t)i;
-                    if (sc < g->scale[at])
+                    if (sc < g->scale[at]) {
                         g->scale[at] = sc;
+                        g->scaled = 1;
+                    }
                 }
         }
     }
     return QC_OK;
 }
 
-/* The pair at sorted slots a, b: each pushed off the other if they are
- * nearer than R and not neighbours along the curve. */
-static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
+/* Vertex a (in cell order, copied into u) against the slots [b0, b1): each
+ * pair nearer than R and not neighbours along the curve pushes both apart.
+ * a's push is summed in registers (in the same order as one by one, so the
+ * sums are the same to the bit); r2 is tested before any root is taken. */
+static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double R2)
 {
-    const qc__grow_vert *u = &g->sv[a], *w = &g->sv[b];
-    double dx = u->x - w->x, dy = u->y - w->y, r2 = dx * dx + dy * dy, r, k;
+    const qc__grow_vert u = g->sv[a];
+    const qc__grow_vert *sv = g->sv;
+    qc_vec2 *sf = g->sf, fa = sf[a];
+    unsigned char *sc = g->sc, ca = sc[a];
+    size_t b;
 
-    double Rs;
+    for (b = b0; b < b1; b++) {
+        const qc__grow_vert *w = &sv[b];
+        double dx = u.x - w->x, dy = u.y - w->y, r2 = dx * dx + dy * dy, r, k, Rs;
+        size_t gap;
 
-    if (r2 >= R2 || ring_gap(g, u->i, w->i) <= 1)
-        return;
-    if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
-        g->sc[a] = g->sc[b] = 1;
-        return;
+        if (r2 >= R2)
+            continue;
+        gap = u.i > w->i ? u.i - w->i : w->i - u.i;
+        if (gap <= 1 || (!g->open && gap + 1 >= g->n)) /* neighbours along the curve */
+            continue;
+        if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
+            ca = sc[b] = 1;
+            continue;
+        }
+        r = sqrt(r2);
+        if (r < u.reach + w->reach) /* their segments might cross after the move */
+            ca = sc[b] = 1;
+        Rs = R * (u.scale < w->scale ? u.scale : w->scale);
+        if (r >= Rs)
+            continue;
+        k = (1.0 - r / Rs) / r;
+        fa.x += dx * k;
+        fa.y += dy * k;
+        sf[b].x -= dx * k;
+        sf[b].y -= dy * k;
     }
-    r = sqrt(r2);
-    if (r < u->reach + w->reach) /* their segments might cross after the move */
-        g->sc[a] = g->sc[b] = 1;
-    Rs = R * (u->scale < w->scale ? u->scale : w->scale);
-    if (r >= Rs)
-        return;
-    k = (1.0 - r / Rs) / r;
-    g->sf[a].x += dx * k;
-    g->sf[a].y += dy * k;
-    g->sf[b].x -= dx * k;
-    g->sf[b].y -= dy * k;
+    sf[a] = fa;
+    sc[a] = ca;
 }
 
 /* Every vertex's summed repulsion from the vertices within R of it (as
@@ -237,7 +259,7 @@ static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
 static void repulsion(grow *g, double R)
 {
     static const int nb[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    size_t cx, cy, a, b, n = g->n;
+    size_t cx, cy, a, n = g->n;
     double R2 = R * R;
     int t;
 
@@ -255,8 +277,7 @@ static void repulsion(grow *g, double R)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
             for (a = g->start[c]; a < g->start[c + 1]; a++)
-                for (b = a + 1; b < g->start[c + 1]; b++)
-                    repel_pair(g, a, b, R, R2);
+                repel_run(g, a, a + 1, g->start[c + 1], R, R2);
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
@@ -264,8 +285,7 @@ static void repulsion(grow *g, double R)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
-                    for (b = g->start[cc]; b < g->start[cc + 1]; b++)
-                        repel_pair(g, a, b, R, R2);
+                    repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
             }
         }
     for (a = 0; a < n; a++) {
