@@ -46,7 +46,9 @@ typedef struct qc__grow_vert {
 
 typedef struct grow {
     qc_vec2 *p, *q;     /* positions, next positions */
+    double *pv, *qv;    /* the distance field (bilinear) at p and at q */
     size_t n, cap, qcap; /* vertices; capacities of p and q */
+    size_t pvcap, qvcap;
     uint32_t *cell;     /* per vertex: its grid cell */
     uint32_t *idx;      /* vertices sorted by cell */
     qc_vec2 *f;         /* per vertex: summed repulsion */
@@ -71,6 +73,8 @@ typedef struct grow {
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 {
     QC__TRY(QC__RESERVE(ctx, g->p, g->cap, need));
+    QC__TRY(QC__RESERVE(ctx, g->pv, g->pvcap, need));
+    QC__TRY(QC__RESERVE(ctx, g->qv, g->qvcap, need));
     return QC__RESERVE(ctx, g->q, g->qcap, need);
 }
 
@@ -395,9 +399,10 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
 
         if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
             g->q[i] = p;
+            g->qv[i] = g->pv[i];
             continue;
         }
-        v = qc__sdf_at(o->sdf, p);
+        v = g->pv[i];
         if (v < reach_b + o->sdf->h && v > -d) {
             qc_vec2 grad;
             v = qc__sdf_exact(o->sdf, p, &grad);
@@ -430,8 +435,14 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         g->q[i].y = p.y + m.y;
         /* the boundary is a wall (checked where the vertex lands: across a
          * cusp the field at its old place says nothing) */
-        if (qc__sdf_at(o->sdf, g->q[i]) < WALL * o->clear + 2.0 * o->sdf->h)
-            g->q[i] = keep_inside(g, o, g->q[i]);
+        g->qv[i] = qc__sdf_at(o->sdf, g->q[i]);
+        if (g->qv[i] < WALL * o->clear + 2.0 * o->sdf->h) {
+            qc_vec2 k = keep_inside(g, o, g->q[i]);
+            if (k.x != g->q[i].x || k.y != g->q[i].y) {
+                g->q[i] = k;
+                g->qv[i] = qc__sdf_at(o->sdf, k);
+            }
+        }
     }
 }
 
@@ -460,6 +471,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
                 continue;
             }
         }
+        g->pv[m] = g->qv[i];
         g->p[m++] = a;
         if (g->open && i + 1 == n)
             break;
@@ -467,9 +479,11 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
         if (len > hi && (may_grow || len > 2.0 * hi)) {
             qc_vec2 mid = QC__V2(0.5 * (a.x + b.x), 0.5 * (a.y + b.y));
             double v = qc__sdf_at(o->sdf, mid);
-            if (v > 2.0 * o->sdf->h || (v > -2.0 * o->sdf->h && qc__sdf_exact(o->sdf, mid, NULL) > 0.0))
+            if (v > 2.0 * o->sdf->h || (v > -2.0 * o->sdf->h && qc__sdf_exact(o->sdf, mid, NULL) > 0.0)) {
                 /* a jump between pieces stays one segment */
+                g->pv[m] = v;
                 g->p[m++] = mid;
+            }
         }
     }
     g->n = m;
@@ -516,6 +530,10 @@ static size_t undo_crossings(grow *g)
                     g->q[i1] = g->p[i1];
                     g->q[j] = g->p[j];
                     g->q[j1] = g->p[j1];
+                    g->qv[i] = g->pv[i];
+                    g->qv[i1] = g->pv[i1];
+                    g->qv[j] = g->pv[j];
+                    g->qv[j1] = g->pv[j1];
                     undone++;
                 }
             }
@@ -533,6 +551,7 @@ static void guard(grow *g)
         if (undo_crossings(g) == 0)
             return;
     memcpy(g->q, g->p, g->n * sizeof *g->q);
+    memcpy(g->qv, g->pv, g->n * sizeof *g->qv);
 }
 
 int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
@@ -560,6 +579,8 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
     }
     memcpy(g.p, c->v, c->n * sizeof *g.p);
     g.n = c->n;
+    for (it = 0; it < g.n; it++)
+        g.pv[it] = qc__sdf_at(o->sdf, g.p[it]);
     g.open = o->open;
     line_table(&g, o->d);
     if (scale_field(ctx, &g, o->sdf->region, o->d) < 0) {
@@ -591,6 +612,8 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
 out:
     qc__free(ctx, g.p, g.cap * sizeof *g.p);
     qc__free(ctx, g.q, g.qcap * sizeof *g.q);
+    qc__free(ctx, g.pv, g.pvcap * sizeof *g.pv);
+    qc__free(ctx, g.qv, g.qvcap * sizeof *g.qv);
     qc__free(ctx, g.cell, g.cell_cap * sizeof *g.cell);
     qc__free(ctx, g.idx, g.idx_cap * sizeof *g.idx);
     qc__free(ctx, g.f, g.f_cap * sizeof *g.f);
