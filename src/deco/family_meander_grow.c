@@ -53,11 +53,12 @@ typedef struct grow {
     uint32_t *idx;      /* vertices sorted by cell */
     qc_vec2 *f;         /* per vertex: summed repulsion */
     double *reach;      /* per vertex: half its longer segment plus two moves */
+    double *seg;        /* per vertex: the length of the segment after it */
     unsigned char *close; /* per vertex: something not next to it is within reach */
     qc__grow_vert *sv;  /* cell order: the vertices */
     qc_vec2 *sf;        /* cell order: their repulsion */
     unsigned char *sc;  /* cell order: their close flags */
-    size_t idx_cap, cell_cap, f_cap, reach_cap, close_cap, sv_cap, sf_cap, sc_cap;
+    size_t seg_cap, idx_cap, cell_cap, f_cap, reach_cap, close_cap, sv_cap, sf_cap, sc_cap;
     uint32_t *start;    /* per cell: first entry in idx (ncell + 1) */
     size_t gx, gy;
     double x0, y0, h;
@@ -96,6 +97,7 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->idx, g->idx_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->f, g->f_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->reach, g->reach_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->seg, g->seg_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->close, g->close_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sv, g->sv_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sf, g->sf_cap, g->n));
@@ -115,13 +117,14 @@ static int bin(qc_ctx *ctx, grow *g)
     return QC_OK;
 }
 
-/* Radius of the circle through a, b, c (huge when they are in line). */
-static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c)
+/* Radius of the circle through a, b, c (huge when they are in line), given
+ * the lengths of ab and bc. */
+static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c, double lab, double lbc)
 {
     double abx = b.x - a.x, aby = b.y - a.y, bcx = c.x - b.x, bcy = c.y - b.y;
     double cax = a.x - c.x, cay = a.y - c.y;
     double cr = fabs(abx * bcy - aby * bcx);
-    double l = qc_hypot(abx, aby) * qc_hypot(bcx, bcy) * qc_hypot(cax, cay);
+    double l = lab * lbc * qc_hypot(cax, cay);
 
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
@@ -142,6 +145,12 @@ static size_t before(const grow *g, size_t i)
 static size_t after(const grow *g, size_t i)
 {
     return i + 1 < g->n ? i + 1 : g->open ? i : 0;
+}
+
+/* The length of the segment into i (0 at an open curve's start). */
+static double seg_before(const grow *g, size_t i)
+{
+    return i > 0 ? g->seg[i - 1] : g->open ? 0.0 : g->seg[g->n - 1];
 }
 
 /* The local scale at p (nearest node). */
@@ -382,8 +391,12 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
      * only flagged segments. Sharp turns (over 90 degrees) are flagged too:
      * there a segment may cross the one after next. */
     for (i = 0; i < n; i++) {
+        qc_vec2 p = g->p[i], b = g->p[after(g, i)];
+        g->seg[i] = qc_hypot(b.x - p.x, b.y - p.y);
+    }
+    for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
-        double la = qc_hypot(p.x - a.x, p.y - a.y), lb = qc_hypot(b.x - p.x, b.y - p.y);
+        double la = seg_before(g, i), lb = g->seg[i];
 
         g->reach[i] = 0.5 * (la > lb ? la : lb) + cap;
         g->close[i] = (p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) <= 0.0;
@@ -392,7 +405,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         qc_vec2 f = g->f[i], m;
-        double w = circumradius(a, p, b) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
+        double w = circumradius(a, p, b, seg_before(g, i), g->seg[i]) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
         double push = 0.0, pull = 0.0;
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
         double mx, my, len, v;
@@ -618,6 +631,7 @@ out:
     qc__free(ctx, g.idx, g.idx_cap * sizeof *g.idx);
     qc__free(ctx, g.f, g.f_cap * sizeof *g.f);
     qc__free(ctx, g.reach, g.reach_cap * sizeof *g.reach);
+    qc__free(ctx, g.seg, g.seg_cap * sizeof *g.seg);
     qc__free(ctx, g.close, g.close_cap * sizeof *g.close);
     qc__free(ctx, g.sv, g.sv_cap * sizeof *g.sv);
     qc__free(ctx, g.sf, g.sf_cap * sizeof *g.sf);
