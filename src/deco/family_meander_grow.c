@@ -31,6 +31,8 @@
 #define RIM_BAND 0.5     /* vertices this far (times d) beyond the clearance ... */
 #define RIM_PULL 0.3     /* ... are drawn onto it by this share of the excess:
                           * lobes near a seam flatten into runs along it */
+#define FIELD_SLOPE 2.0  /* the bilinear distance field changes by at most this
+                          * times a move (sqrt 2 between exact nodes) */
 #define LINE_TABLE 64
 #define WALL 0.25        /* the hard wall, times the clearance (the mirror pushes first) */
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
@@ -46,7 +48,9 @@ typedef struct qc__grow_vert {
 
 typedef struct grow {
     qc_vec2 *p, *q;     /* positions, next positions */
-    double *pv, *qv;    /* the distance field (bilinear) at p and at q */
+    double *pv, *qv;    /* the distance field (bilinear) at p and at q, or less:
+                         * a bound carried from round to round while the
+                         * vertex is far from the boundary */
     size_t n, cap, qcap; /* vertices; capacities of p and q */
     size_t pvcap, qvcap;
     uint32_t *cell;     /* per vertex: its grid cell */
@@ -408,14 +412,16 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         double w = circumradius(a, p, b, seg_before(g, i), g->seg[i]) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
         double push = 0.0, pull = 0.0;
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
-        double mx, my, len, v;
+        double mx, my, len, v, known = g->pv[i], wall = WALL * o->clear + 2.0 * o->sdf->h;
 
         if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
             g->q[i] = p;
             g->qv[i] = g->pv[i];
             continue;
         }
-        v = g->pv[i];
+        if (!(known >= reach_b + o->sdf->h)) /* the bound says too little */
+            known = qc__sdf_at(o->sdf, p);
+        v = known;
         if (v < reach_b + o->sdf->h && v > -d) {
             qc_vec2 grad;
             v = qc__sdf_exact(o->sdf, p, &grad);
@@ -448,8 +454,11 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         g->q[i].y = p.y + m.y;
         /* the boundary is a wall (checked where the vertex lands: across a
          * cusp the field at its old place says nothing) */
+        g->qv[i] = known - FIELD_SLOPE * cap;
+        if (g->qv[i] >= wall) /* far from the wall: the bound will do */
+            continue;
         g->qv[i] = qc__sdf_at(o->sdf, g->q[i]);
-        if (g->qv[i] < WALL * o->clear + 2.0 * o->sdf->h) {
+        if (g->qv[i] < wall) {
             qc_vec2 k = keep_inside(g, o, g->q[i]);
             if (k.x != g->q[i].x || k.y != g->q[i].y) {
                 g->q[i] = k;
