@@ -543,8 +543,7 @@ static size_t undo_crossings(grow *g)
                 size_t cc = y * g->gx + x;
                 for (k = g->start[cc]; k < g->start[cc + 1]; k++) {
                     size_t j = g->idx[k], j1 = j + 1 == n ? 0 : j + 1;
-                    if (j <= i || (!g->close[j] && !g->close[j1]) || ring_gap(g, i, j) < 2 ||
-                        (g->open && j1 == 0))
+                    if (j <= i || ring_gap(g, i, j) < 2) /* the cells hold flagged segments only */
                         continue;
                     if (!seg_cross(g->q[i], g->q[i1], g->q[j], g->q[j1]))
                         continue;
@@ -563,12 +562,39 @@ static size_t undo_crossings(grow *g)
     return undone;
 }
 
+/* Whether the segment from i is checked: one of its ends is flagged (and
+ * it is not an open curve's missing closing segment). */
+static int flagged(const grow *g, size_t i)
+{
+    size_t i1 = i + 1 == g->n ? 0 : i + 1;
+
+    return (g->close[i] || g->close[i1]) && !(g->open && i1 == 0);
+}
+
+/* The cells' lists cut down to the flagged segments, in the same order
+ * (the lists are binned afresh next round). */
+static void keep_flagged(grow *g)
+{
+    size_t nc = g->gx * g->gy, c, k, m = 0, from = 0;
+
+    for (c = 0; c < nc; c++) {
+        size_t end = g->start[c + 1];
+        g->start[c] = (uint32_t)m;
+        for (k = from; k < end; k++)
+            if (flagged(g, g->idx[k]))
+                g->idx[m++] = g->idx[k];
+        from = end;
+    }
+    g->start[nc] = (uint32_t)m;
+}
+
 /* Undoes crossing moves until none is left (all moves undone at worst:
  * the curve before the round did not cross itself). */
 static void guard(grow *g)
 {
     int pass;
 
+    keep_flagged(g);
     for (pass = 0; pass < GUARD_PASSES; pass++)
         if (undo_crossings(g) == 0)
             return;
