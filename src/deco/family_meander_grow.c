@@ -236,7 +236,8 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
     const qc__grow_vert *sv = g->sv;
     qc_vec2 *sf = g->sf, fa = sf[a];
     unsigned char *sc = g->sc, ca = sc[a];
-    size_t b;
+    size_t b, n = g->n;
+    int closed = !g->open;
 
     for (b = b0; b < b1; b++) {
         const qc__grow_vert *w = &sv[b];
@@ -246,7 +247,7 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
         if (r2 >= R2)
             continue;
         gap = u.i > w->i ? u.i - w->i : w->i - u.i;
-        if (gap <= 1 || (!g->open && gap + 1 >= g->n)) /* neighbours along the curve */
+        if (gap <= 1 || (closed && gap + 1 >= n)) /* neighbours along the curve */
             continue;
         if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
             ca = sc[b] = 1;
