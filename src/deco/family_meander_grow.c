@@ -31,6 +31,8 @@
 #define RIM_BAND 0.5     /* vertices this far (times d) beyond the clearance ... */
 #define RIM_PULL 0.3     /* ... are drawn onto it by this share of the excess:
                           * lobes near a seam flatten into runs along it */
+#define FIELD_SLOPE 2.0  /* the bilinear distance field changes by at most this
+                          * times a move (sqrt 2 between exact nodes) */
 #define LINE_TABLE 64
 #define WALL 0.25        /* the hard wall, times the clearance (the mirror pushes first) */
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
@@ -46,16 +48,21 @@ typedef struct qc__grow_vert {
 
 typedef struct grow {
     qc_vec2 *p, *q;     /* positions, next positions */
+    double *pv, *qv;    /* the distance field (bilinear) at p and at q, or less:
+                         * a bound carried from round to round while the
+                         * vertex is far from the boundary */
     size_t n, cap, qcap; /* vertices; capacities of p and q */
+    size_t pvcap, qvcap;
     uint32_t *cell;     /* per vertex: its grid cell */
     uint32_t *idx;      /* vertices sorted by cell */
     qc_vec2 *f;         /* per vertex: summed repulsion */
     double *reach;      /* per vertex: half its longer segment plus two moves */
+    double *seg;        /* per vertex: the length of the segment after it */
     unsigned char *close; /* per vertex: something not next to it is within reach */
     qc__grow_vert *sv;  /* cell order: the vertices */
     qc_vec2 *sf;        /* cell order: their repulsion */
     unsigned char *sc;  /* cell order: their close flags */
-    size_t idx_cap, cell_cap, f_cap, reach_cap, close_cap, sv_cap, sf_cap, sc_cap;
+    size_t seg_cap, idx_cap, cell_cap, f_cap, reach_cap, close_cap, sv_cap, sf_cap, sc_cap;
     uint32_t *start;    /* per cell: first entry in idx (ncell + 1) */
     size_t gx, gy;
     double x0, y0, h;
@@ -64,12 +71,15 @@ typedef struct grow {
     float *scale;       /* the spacing's local scale (1, less by sharp corners) */
     size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
     double sh;          /* ... at this step */
+    int scaled;         /* whether any node is below 1 (else it is not read) */
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 {
     QC__TRY(QC__RESERVE(ctx, g->p, g->cap, need));
+    QC__TRY(QC__RESERVE(ctx, g->pv, g->pvcap, need));
+    QC__TRY(QC__RESERVE(ctx, g->qv, g->qvcap, need));
     return QC__RESERVE(ctx, g->q, g->qcap, need);
 }
 
@@ -91,6 +101,7 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->idx, g->idx_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->f, g->f_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->reach, g->reach_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->seg, g->seg_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->close, g->close_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sv, g->sv_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sf, g->sf_cap, g->n));
@@ -110,13 +121,14 @@ static int bin(qc_ctx *ctx, grow *g)
     return QC_OK;
 }
 
-/* Radius of the circle through a, b, c (huge when they are in line). */
-static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c)
+/* Radius of the circle through a, b, c (huge when they are in line), given
+ * the lengths of ab and bc. */
+static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c, double lab, double lbc)
 {
     double abx = b.x - a.x, aby = b.y - a.y, bcx = c.x - b.x, bcy = c.y - b.y;
     double cax = a.x - c.x, cay = a.y - c.y;
     double cr = fabs(abx * bcy - aby * bcx);
-    double l = qc_hypot(abx, aby) * qc_hypot(bcx, bcy) * qc_hypot(cax, cay);
+    double l = lab * lbc * qc_hypot(cax, cay);
 
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
@@ -139,13 +151,24 @@ static size_t after(const grow *g, size_t i)
     return i + 1 < g->n ? i + 1 : g->open ? i : 0;
 }
 
+/* The length of the segment into i (0 at an open curve's start). */
+static double seg_before(const grow *g, size_t i)
+{
+    return i > 0 ? g->seg[i - 1] : g->open ? 0.0 : g->seg[g->n - 1];
+}
+
 /* The local scale at p (nearest node). */
 static double scale_at(const grow *g, qc_vec2 p)
 {
-    double fx = floor((p.x - g->x0) / g->sh + 0.5), fy = floor((p.y - g->y0) / g->sh + 0.5);
+    double fx, fy;
     size_t i, j;
 
-    if (g->scale == NULL || fx < 0.0 || fy < 0.0 || fx >= (double)g->sx || fy >= (double)g->sy)
+    if (!g->scaled)
+        return 1.0;
+    fx = floor((p.x - g->x0) / g->sh + 0.5);
+    fy = floor((p.y - g->y0) / g->sh + 0.5);
+
+    if (fx < 0.0 || fy < 0.0 || fx >= (double)g->sx || fy >= (double)g->sy)
         return 1.0;
     i = (size_t)fx;
     j = (size_t)fy;
@@ -193,40 +216,57 @@ static int scale_field(qc_ctx *ctx, grow *g, const qc_region *r, double d)
                                         g->y0 + (double)j * g->sh - p.y) / reach;
                     float sc = (float)(t >= 1.0 ? 1.0 : SCALE_MIN + (1.0 - SCALE_MIN) * t);
                     size_t at = (size_t)j * g->sx + (size_t)i;
-                    if (sc < g->scale[at])
+                    if (sc < g->scale[at]) {
                         g->scale[at] = sc;
+                        g->scaled = 1;
+                    }
                 }
         }
     }
     return QC_OK;
 }
 
-/* The pair at sorted slots a, b: each pushed off the other if they are
- * nearer than R and not neighbours along the curve. */
-static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
+/* Vertex a (in cell order, copied into u) against the slots [b0, b1): each
+ * pair nearer than R and not neighbours along the curve pushes both apart.
+ * a's push is summed in registers (in the same order as one by one, so the
+ * sums are the same to the bit); r2 is tested before any root is taken. */
+static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double R2)
 {
-    const qc__grow_vert *u = &g->sv[a], *w = &g->sv[b];
-    double dx = u->x - w->x, dy = u->y - w->y, r2 = dx * dx + dy * dy, r, k;
+    const qc__grow_vert u = g->sv[a];
+    const qc__grow_vert *sv = g->sv;
+    qc_vec2 *sf = g->sf, fa = sf[a];
+    unsigned char *sc = g->sc, ca = sc[a];
+    size_t b, n = g->n;
+    int closed = !g->open;
 
-    double Rs;
+    for (b = b0; b < b1; b++) {
+        const qc__grow_vert *w = &sv[b];
+        double dx = u.x - w->x, dy = u.y - w->y, r2 = dx * dx + dy * dy, r, k, Rs;
+        size_t gap;
 
-    if (r2 >= R2 || ring_gap(g, u->i, w->i) <= 1)
-        return;
-    if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
-        g->sc[a] = g->sc[b] = 1;
-        return;
+        if (r2 >= R2)
+            continue;
+        gap = u.i > w->i ? u.i - w->i : w->i - u.i;
+        if (gap <= 1 || (closed && gap + 1 >= n)) /* neighbours along the curve */
+            continue;
+        if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
+            ca = sc[b] = 1;
+            continue;
+        }
+        r = sqrt(r2);
+        if (r < u.reach + w->reach) /* their segments might cross after the move */
+            ca = sc[b] = 1;
+        Rs = R * (u.scale < w->scale ? u.scale : w->scale);
+        if (r >= Rs)
+            continue;
+        k = (1.0 - r / Rs) / r;
+        fa.x += dx * k;
+        fa.y += dy * k;
+        sf[b].x -= dx * k;
+        sf[b].y -= dy * k;
     }
-    r = sqrt(r2);
-    if (r < u->reach + w->reach) /* their segments might cross after the move */
-        g->sc[a] = g->sc[b] = 1;
-    Rs = R * (u->scale < w->scale ? u->scale : w->scale);
-    if (r >= Rs)
-        return;
-    k = (1.0 - r / Rs) / r;
-    g->sf[a].x += dx * k;
-    g->sf[a].y += dy * k;
-    g->sf[b].x -= dx * k;
-    g->sf[b].y -= dy * k;
+    sf[a] = fa;
+    sc[a] = ca;
 }
 
 /* Every vertex's summed repulsion from the vertices within R of it (as
@@ -237,7 +277,7 @@ static inline void repel_pair(grow *g, size_t a, size_t b, double R, double R2)
 static void repulsion(grow *g, double R)
 {
     static const int nb[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    size_t cx, cy, a, b, n = g->n;
+    size_t cx, cy, a, n = g->n;
     double R2 = R * R;
     int t;
 
@@ -255,8 +295,7 @@ static void repulsion(grow *g, double R)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
             for (a = g->start[c]; a < g->start[c + 1]; a++)
-                for (b = a + 1; b < g->start[c + 1]; b++)
-                    repel_pair(g, a, b, R, R2);
+                repel_run(g, a, a + 1, g->start[c + 1], R, R2);
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
@@ -264,8 +303,7 @@ static void repulsion(grow *g, double R)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
-                    for (b = g->start[cc]; b < g->start[cc + 1]; b++)
-                        repel_pair(g, a, b, R, R2);
+                    repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
             }
         }
     for (a = 0; a < n; a++) {
@@ -358,8 +396,12 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
      * only flagged segments. Sharp turns (over 90 degrees) are flagged too:
      * there a segment may cross the one after next. */
     for (i = 0; i < n; i++) {
+        qc_vec2 p = g->p[i], b = g->p[after(g, i)];
+        g->seg[i] = qc_hypot(b.x - p.x, b.y - p.y);
+    }
+    for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
-        double la = qc_hypot(p.x - a.x, p.y - a.y), lb = qc_hypot(b.x - p.x, b.y - p.y);
+        double la = seg_before(g, i), lb = g->seg[i];
 
         g->reach[i] = 0.5 * (la > lb ? la : lb) + cap;
         g->close[i] = (p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) <= 0.0;
@@ -368,16 +410,19 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         qc_vec2 f = g->f[i], m;
-        double w = circumradius(a, p, b) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
+        double w = circumradius(a, p, b, seg_before(g, i), g->seg[i]) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
         double push = 0.0, pull = 0.0;
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
-        double mx, my, len, v;
+        double mx, my, len, v, known = g->pv[i], wall = WALL * o->clear + 2.0 * o->sdf->h;
 
         if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
             g->q[i] = p;
+            g->qv[i] = g->pv[i];
             continue;
         }
-        v = qc__sdf_at(o->sdf, p);
+        if (!(known >= reach_b + o->sdf->h)) /* the bound says too little */
+            known = qc__sdf_at(o->sdf, p);
+        v = known;
         if (v < reach_b + o->sdf->h && v > -d) {
             qc_vec2 grad;
             v = qc__sdf_exact(o->sdf, p, &grad);
@@ -410,8 +455,17 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         g->q[i].y = p.y + m.y;
         /* the boundary is a wall (checked where the vertex lands: across a
          * cusp the field at its old place says nothing) */
-        if (qc__sdf_at(o->sdf, g->q[i]) < WALL * o->clear + 2.0 * o->sdf->h)
-            g->q[i] = keep_inside(g, o, g->q[i]);
+        g->qv[i] = known - FIELD_SLOPE * cap;
+        if (g->qv[i] >= wall) /* far from the wall: the bound will do */
+            continue;
+        g->qv[i] = qc__sdf_at(o->sdf, g->q[i]);
+        if (g->qv[i] < wall) {
+            qc_vec2 k = keep_inside(g, o, g->q[i]);
+            if (k.x != g->q[i].x || k.y != g->q[i].y) {
+                g->q[i] = k;
+                g->qv[i] = qc__sdf_at(o->sdf, k);
+            }
+        }
     }
 }
 
@@ -440,6 +494,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
                 continue;
             }
         }
+        g->pv[m] = g->qv[i];
         g->p[m++] = a;
         if (g->open && i + 1 == n)
             break;
@@ -447,9 +502,11 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
         if (len > hi && (may_grow || len > 2.0 * hi)) {
             qc_vec2 mid = QC__V2(0.5 * (a.x + b.x), 0.5 * (a.y + b.y));
             double v = qc__sdf_at(o->sdf, mid);
-            if (v > 2.0 * o->sdf->h || (v > -2.0 * o->sdf->h && qc__sdf_exact(o->sdf, mid, NULL) > 0.0))
+            if (v > 2.0 * o->sdf->h || (v > -2.0 * o->sdf->h && qc__sdf_exact(o->sdf, mid, NULL) > 0.0)) {
                 /* a jump between pieces stays one segment */
+                g->pv[m] = v;
                 g->p[m++] = mid;
+            }
         }
     }
     g->n = m;
@@ -487,8 +544,7 @@ static size_t undo_crossings(grow *g)
                 size_t cc = y * g->gx + x;
                 for (k = g->start[cc]; k < g->start[cc + 1]; k++) {
                     size_t j = g->idx[k], j1 = j + 1 == n ? 0 : j + 1;
-                    if (j <= i || (!g->close[j] && !g->close[j1]) || ring_gap(g, i, j) < 2 ||
-                        (g->open && j1 == 0))
+                    if (j <= i || ring_gap(g, i, j) < 2) /* the cells hold flagged segments only */
                         continue;
                     if (!seg_cross(g->q[i], g->q[i1], g->q[j], g->q[j1]))
                         continue;
@@ -496,11 +552,41 @@ static size_t undo_crossings(grow *g)
                     g->q[i1] = g->p[i1];
                     g->q[j] = g->p[j];
                     g->q[j1] = g->p[j1];
+                    g->qv[i] = g->pv[i];
+                    g->qv[i1] = g->pv[i1];
+                    g->qv[j] = g->pv[j];
+                    g->qv[j1] = g->pv[j1];
                     undone++;
                 }
             }
     }
     return undone;
+}
+
+/* Whether the segment from i is checked: one of its ends is flagged (and
+ * it is not an open curve's missing closing segment). */
+static int flagged(const grow *g, size_t i)
+{
+    size_t i1 = i + 1 == g->n ? 0 : i + 1;
+
+    return (g->close[i] || g->close[i1]) && !(g->open && i1 == 0);
+}
+
+/* The cells' lists cut down to the flagged segments, in the same order
+ * (the lists are binned afresh next round). */
+static void keep_flagged(grow *g)
+{
+    size_t nc = g->gx * g->gy, c, k, m = 0, from = 0;
+
+    for (c = 0; c < nc; c++) {
+        size_t end = g->start[c + 1];
+        g->start[c] = (uint32_t)m;
+        for (k = from; k < end; k++)
+            if (flagged(g, g->idx[k]))
+                g->idx[m++] = g->idx[k];
+        from = end;
+    }
+    g->start[nc] = (uint32_t)m;
 }
 
 /* Undoes crossing moves until none is left (all moves undone at worst:
@@ -509,10 +595,12 @@ static void guard(grow *g)
 {
     int pass;
 
+    keep_flagged(g);
     for (pass = 0; pass < GUARD_PASSES; pass++)
         if (undo_crossings(g) == 0)
             return;
     memcpy(g->q, g->p, g->n * sizeof *g->q);
+    memcpy(g->qv, g->pv, g->n * sizeof *g->qv);
 }
 
 int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
@@ -540,6 +628,8 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
     }
     memcpy(g.p, c->v, c->n * sizeof *g.p);
     g.n = c->n;
+    for (it = 0; it < g.n; it++)
+        g.pv[it] = qc__sdf_at(o->sdf, g.p[it]);
     g.open = o->open;
     line_table(&g, o->d);
     if (scale_field(ctx, &g, o->sdf->region, o->d) < 0) {
@@ -571,10 +661,13 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
 out:
     qc__free(ctx, g.p, g.cap * sizeof *g.p);
     qc__free(ctx, g.q, g.qcap * sizeof *g.q);
+    qc__free(ctx, g.pv, g.pvcap * sizeof *g.pv);
+    qc__free(ctx, g.qv, g.qvcap * sizeof *g.qv);
     qc__free(ctx, g.cell, g.cell_cap * sizeof *g.cell);
     qc__free(ctx, g.idx, g.idx_cap * sizeof *g.idx);
     qc__free(ctx, g.f, g.f_cap * sizeof *g.f);
     qc__free(ctx, g.reach, g.reach_cap * sizeof *g.reach);
+    qc__free(ctx, g.seg, g.seg_cap * sizeof *g.seg);
     qc__free(ctx, g.close, g.close_cap * sizeof *g.close);
     qc__free(ctx, g.sv, g.sv_cap * sizeof *g.sv);
     qc__free(ctx, g.sf, g.sf_cap * sizeof *g.sf);
