@@ -13,6 +13,7 @@ void bench_tour(void);
 void bench_tsplib(void);
 void bench_pebbling(void);
 void bench_families(void);
+void bench_families_1m(void); /* opt-in: slow */
 void bench_meander(void);
 void bench_quilt(void);
 

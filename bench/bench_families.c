@@ -5,6 +5,7 @@
  * no points: their block is the one that holds that many stipple points. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "bench.h"
@@ -90,6 +91,39 @@ static void run(int family, size_t target, int reps)
            "peak %7.1f B/pt\n",
            qc_family_name(family), side, (unsigned long)points, t * 1e3, deco * 1e3,
            (double)peak / (double)target);
+}
+
+/* 10^6 points (issue 21: <= 5 s, <= 1 KB per point), one run each on the
+ * block the issue names, 10 m at d = 10 mm (10^6 cells of d^2; Poisson
+ * sampling puts about 0.63 points in each, lattices 1 or more; echo and
+ * spiral, which have none, are counted as 10^6), with no sizing run (it would
+ * double a minute-long section). Opt-in: `make bench BENCH_ONLY=families1m`;
+ * BENCH_FAMILY=NAME runs that family only. */
+void bench_families_1m(void)
+{
+    const double side = 1000.0 * SPACING;
+    const char *only = getenv("BENCH_FAMILY");
+    int f;
+
+    printf("families at 10^6: one run of qc_generate on a %.0f mm block (d = %g mm; goal "
+           "<= 5000 ms, <= 1024 B/pt)\n",
+           side, SPACING);
+    for (f = QC_FAMILY_VINE; f < QC_FAMILY_COUNT; f++) {
+        size_t points = 0, peak = 0;
+        double deco = 0, t;
+
+        if (f == QC_FAMILY_MEANDER) /* bench_meander.c: the issue's own sizes */
+            continue;
+        if (only != NULL && strcmp(only, qc_family_name(f)) != 0)
+            continue;
+        t = time_generate(f, side, 1, &points, &deco, &peak);
+        if (peak == 0)
+            continue; /* refused: time_generate said why */
+        printf("%-10s points %7lu  generate %9.2f ms  decorate %9.2f ms  peak %7.1f B/pt\n",
+               qc_family_name(f), (unsigned long)points, t * 1e3, deco * 1e3,
+               (double)peak / (double)(points > 0 ? points : 1000000));
+        fflush(stdout);
+    }
 }
 
 void bench_families(void)
