@@ -217,11 +217,14 @@ typedef struct qc__sdf {
 } qc__sdf;
 
 /* The signed distance of a normalized region on a grid of spacing about h
- * (raised so the grid has at most 2^22 nodes) padded by two nodes round its
+ * (raised so the grid has at most 2^24 nodes) padded by two nodes round its
  * box: exact distances near the boundary, nearest edges carried by two
  * raster sweeps elsewhere. Errors: QC_EEMPTY (no outline), QC_ERANGE (h not
  * > 0), QC_ENOMEM. */
 QC__HIDDEN int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out);
+/* The spacing qc__sdf_build would use for h (h itself when the region or h
+ * is unusable): decided before anything is allocated. */
+QC__HIDDEN double qc__sdf_step(const qc_region *region, double h);
 QC__HIDDEN void qc__sdf_free(qc_ctx *ctx, qc__sdf *s);
 /* Bilinear value at p (the border value outside the grid). */
 QC__HIDDEN double qc__sdf_at(const qc__sdf *s, qc_vec2 p);
