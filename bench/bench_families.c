@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "bench.h"
 
@@ -98,7 +99,8 @@ static void run(int family, size_t target, int reps)
  * sampling puts about 0.63 points in each, lattices 1 or more; echo and
  * spiral, which have none, are counted as 10^6), with no sizing run (it would
  * double a minute-long section). Opt-in: `make bench BENCH_ONLY=families1m`;
- * BENCH_FAMILY=NAME runs that family only. */
+ * BENCH_FAMILY=NAME runs that family only. The process's CPU time is
+ * printed beside the wall time: on a shared machine it is the steadier. */
 void bench_families_1m(void)
 {
     const double side = 1000.0 * SPACING;
@@ -110,17 +112,21 @@ void bench_families_1m(void)
            side, SPACING);
     for (f = QC_FAMILY_VINE; f < QC_FAMILY_COUNT; f++) {
         size_t points = 0, peak = 0;
-        double deco = 0, t;
+        double deco = 0, t, cpu;
+        clock_t c0;
 
         if (f == QC_FAMILY_MEANDER) /* bench_meander.c: the issue's own sizes */
             continue;
         if (only != NULL && strcmp(only, qc_family_name(f)) != 0)
             continue;
+        c0 = clock();
         t = time_generate(f, side, 1, &points, &deco, &peak);
+        cpu = (double)(clock() - c0) / CLOCKS_PER_SEC;
         if (peak == 0)
             continue; /* refused: time_generate said why */
-        printf("%-10s points %7lu  generate %9.2f ms  decorate %9.2f ms  peak %7.1f B/pt\n",
-               qc_family_name(f), (unsigned long)points, t * 1e3, deco * 1e3,
+        printf("%-10s points %7lu  generate %9.2f ms (cpu %9.2f ms)  decorate %9.2f ms  "
+               "peak %7.1f B/pt\n",
+               qc_family_name(f), (unsigned long)points, t * 1e3, cpu * 1e3, deco * 1e3,
                (double)peak / (double)(points > 0 ? points : 1000000));
         fflush(stdout);
     }

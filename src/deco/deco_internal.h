@@ -58,6 +58,7 @@ typedef struct qc__cgrid_item {
     uint32_t off;   /* first vertex in v */
     uint16_t n;     /* vertex count */
     uint8_t kind;   /* caller's class: boundary, vine, motif, join ... */
+    uint8_t chain;  /* 1: an open polyline, tested segment by segment */
     uint32_t id;    /* caller's id */
 } qc__cgrid_item;
 
@@ -89,6 +90,11 @@ QC__HIDDEN void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g);
 /* Adds a convex polygon (n >= 1, CCW when n >= 3). */
 QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
                              unsigned kind, uint32_t id);
+/* Adds an open polyline (2 <= n <= 65535) as one item that touches what
+ * one of its segments touches: as its segments added one by one, in one
+ * item, one vertex per joint and the cells its segments meet. */
+QC__HIDDEN int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
+                                   unsigned kind, uint32_t id);
 /* Adds every boundary edge of region as a two-point item of kind (id 0). */
 QC__HIDDEN int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region,
                                     unsigned kind);
@@ -102,7 +108,8 @@ typedef int (*qc__cgrid_skip_seg)(void *ud, unsigned kind, uint32_t id, size_t s
  * the cells under the polyline's box), else 0. */
 QC__HIDDEN int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n,
                                       unsigned kinds, qc__cgrid_skip_seg skip, void *ud);
-/* Makes room for items more items of about verts vertices and entries cells in all. */
+/* Makes room for exactly items more items of verts vertices and entries cells
+ * in all (a later add beyond them grows the arrays geometrically). */
 QC__HIDDEN int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts,
                                  size_t entries);
 /* Separating-axis test of two convex polygons (1 or 2 vertices allowed);

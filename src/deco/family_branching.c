@@ -386,12 +386,26 @@ static int build_vine(run *r)
     return QC_OK;
 }
 
+/* How many chords stand for vine cubic j: within about VINE_TOL s of the
+ * curve (n^2 >= dev / tol), 1 to 256. */
+static size_t vine_chords(const run *r, size_t j)
+{
+    const qc_vec2 *q = r->vine.pt + 3 * j; /* MOVE point + 3 per cubic */
+    double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
+    double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
+    double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
+    size_t nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
+
+    return nk < 1 ? 1 : nk > 256 ? 256 : nk;
+}
+
 /* The collision grid over the region and the vine, s beyond both. */
 static int make_grid(run *r)
 {
     const qc_path *vine = &r->vine;
     qc_bbox b = qc_region_bbox(r->region), vb = qc__points_bbox(vine->pt, vine->npt);
-    size_t nseg = r->nseg, nv = r->region->nv;
+    size_t nseg = r->nseg, nv = r->region->nv, spots = nseg + nseg / 8 + 16, chords = 0, hull = 0;
+    size_t j;
     double s = r->s;
 
     /* the control points bound the curve */
@@ -400,33 +414,45 @@ static int make_grid(run *r)
     b.max.x = fmax(b.max.x, vb.max.x) + s;
     b.max.y = fmax(b.max.y, vb.max.y) + s;
     QC__TRY(qc__cgrid_init(r->ctx, &r->grid, b, s, 16 * r->skel->norder + 4096));
-    QC__TRY(QC__RESERVE(r->ctx, r->spots, r->spots_cap, nseg + 16));
-    /* a guess at the vine's chords and the motifs: fewer regrowths */
-    return qc__cgrid_reserve(r->ctx, &r->grid, 4 * nseg + nv + 64, 16 * nseg + 2 * nv + 1024,
-                             12 * nseg + 4 * nv + 256);
+    for (j = 0; j < nseg; j++)
+        chords += vine_chords(r, j);
+    for (j = 0; j < r->nchoice; j++)
+        hull = r->set->m[r->choice[j]].nhull > hull ? r->set->m[r->choice[j]].nhull : hull;
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->spots, r->spots_cap, spots));
+    /* the vine's chains exactly, a guess at the motifs (about one per
+     * cubic): a regrowth would double arrays of a million entries */
+    if (r->tile != NULL)
+        return qc__cgrid_reserve(r->ctx, &r->grid, chords + spots + nv + 64,
+                                 2 * chords + hull * spots + 2 * nv + 1024,
+                                 2 * chords + 6 * spots + 4 * nv + 256);
+    return qc__cgrid_reserve(r->ctx, &r->grid, nseg + spots + nv + 64,
+                             chords + nseg + hull * spots + 2 * nv + 1024,
+                             chords / 2 + 5 * spots + 4 * nv + 256);
 }
 
-/* Vine cubic j as short chords (within about VINE_TOL s of the curve:
- * n^2 >= dev / tol) into the grid, and into the placement if asked. */
+/* Vine cubic j as short chords into the grid, and into the placement if asked. */
 static int add_vine_chords(run *r, size_t j)
 {
-    const qc_vec2 *q = r->vine.pt + 3 * j; /* MOVE point + 3 per cubic */
-    double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
-    double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
-    double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
-    size_t k, nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
-    qc_vec2 prev = q[0];
+    const qc_vec2 *q = r->vine.pt + 3 * j;
+    size_t k, nk = vine_chords(r, j);
+    qc_vec2 prev = q[0], chain[257];
 
-    nk = nk < 1 ? 1 : nk > 256 ? 256 : nk;
+    chain[0] = prev;
     for (k = 1; k <= nk; k++) {
         qc_vec2 e[2];
         e[0] = prev;
         e[1] = qc_cubic_point(q, (double)k / nk);
-        QC__TRY(grid_add(r, e, 2, K_VINE, (uint32_t)j));
+        chain[k] = e[1];
+        if (r->tile != NULL) /* wrapped copies: chord by chord */
+            QC__TRY(grid_add(r, e, 2, K_VINE, (uint32_t)j));
         if (r->pl != NULL)
             QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
         prev = e[1];
     }
+    /* one item for the cubic's chords: a tenth of a million-point vine's
+     * items and half its vertices */
+    if (r->tile == NULL)
+        QC__TRY(qc__cgrid_add_chain(r->ctx, &r->grid, chain, nk + 1, K_VINE, (uint32_t)j));
     if (r->pl != NULL && j + 1 == r->nseg)
         QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
     return QC_OK;

@@ -85,11 +85,9 @@ static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
     }
 }
 
-int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
-                  unsigned kind, uint32_t id)
+/* Room for one more item of n vertices. */
+static int item_room(qc_ctx *ctx, qc__cgrid *g, size_t n)
 {
-    qc_bbox b;
-    uint32_t r[4], x, y;
     if (n == 0 || n > 65535 || g->nitem >= UINT32_MAX - 1 || g->nv + n >= UINT32_MAX)
         return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
     if (QC__RESERVE(ctx, g->v, g->v_cap, g->nv + n) < 0)
@@ -98,29 +96,95 @@ int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
         return QC_ENOMEM;
     if (QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
         return QC_ENOMEM;
-    poly_box(poly, n, &b);
-    cell_range(g, &b, r);
-    for (y = r[1]; y <= r[3]; y++) {
-        for (x = r[0]; x <= r[2]; x++) {
-            size_t c = (size_t)y * g->nx + x;
-            if (g->nent >= UINT32_MAX - 1)
-                return qc__fail(ctx, QC_ELIMIT, "collision grid full");
-            if (QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
-                return QC_ENOMEM;
-            g->ent[g->nent].item = (uint32_t)g->nitem;
-            g->ent[g->nent].next = g->head[c];
-            g->head[c] = (uint32_t)g->nent++;
-        }
-    }
+    return QC_OK;
+}
+
+/* Files the next item under cell (x, y). */
+static int enter(qc_ctx *ctx, qc__cgrid *g, uint32_t x, uint32_t y)
+{
+    size_t c = (size_t)y * g->nx + x;
+
+    if (g->nent >= UINT32_MAX - 1)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid full");
+    if (QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
+        return QC_ENOMEM;
+    g->ent[g->nent].item = (uint32_t)g->nitem;
+    g->ent[g->nent].next = g->head[c];
+    g->head[c] = (uint32_t)g->nent++;
+    return QC_OK;
+}
+
+/* Stores the next item's vertices and fields. */
+static void store(qc__cgrid *g, const qc_vec2 *poly, size_t n, const qc_bbox *b, unsigned kind,
+                  int chain, uint32_t id)
+{
     memcpy(g->v + g->nv, poly, n * sizeof *poly);
-    g->item[g->nitem].box = b;
+    g->item[g->nitem].box = *b;
     g->item[g->nitem].off = (uint32_t)g->nv;
     g->item[g->nitem].n = (uint16_t)n;
     g->item[g->nitem].kind = (uint8_t)kind;
+    g->item[g->nitem].chain = (uint8_t)chain;
     g->item[g->nitem].id = id;
     g->stamp[g->nitem] = 0;
     g->nitem++;
     g->nv += n;
+}
+
+int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                  unsigned kind, uint32_t id)
+{
+    qc_bbox b;
+    uint32_t r[4], x, y;
+
+    QC__TRY(item_room(ctx, g, n));
+    poly_box(poly, n, &b);
+    cell_range(g, &b, r);
+    for (y = r[1]; y <= r[3]; y++)
+        for (x = r[0]; x <= r[2]; x++)
+            QC__TRY(enter(ctx, g, x, y));
+    store(g, poly, n, &b, kind, 0, id);
+    return QC_OK;
+}
+
+/* Whether cell (x, y) lies in the cell range of one of segments
+ * [from, to) of pts: filed already for this chain. */
+static int chain_has_cell(const qc__cgrid *g, const qc_vec2 *pts, size_t from, size_t to,
+                          uint32_t x, uint32_t y)
+{
+    size_t k;
+
+    for (k = from; k < to; k++) {
+        qc_bbox sb;
+        uint32_t r[4];
+        poly_box(pts + k, 2, &sb);
+        cell_range(g, &sb, r);
+        if (x >= r[0] && x <= r[2] && y >= r[1] && y <= r[3])
+            return 1;
+    }
+    return 0;
+}
+
+int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
+                        unsigned kind, uint32_t id)
+{
+    qc_bbox b;
+    size_t k;
+
+    if (n < 2)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
+    QC__TRY(item_room(ctx, g, n));
+    for (k = 0; k + 1 < n; k++) { /* each segment's cells, once per chain */
+        qc_bbox sb;
+        uint32_t r[4], x, y;
+        poly_box(pts + k, 2, &sb);
+        cell_range(g, &sb, r);
+        for (y = r[1]; y <= r[3]; y++)
+            for (x = r[0]; x <= r[2]; x++)
+                if (!chain_has_cell(g, pts, 0, k, x, y))
+                    QC__TRY(enter(ctx, g, x, y));
+    }
+    poly_box(pts, n, &b);
+    store(g, pts, n, &b, kind, 1, id);
     return QC_OK;
 }
 
@@ -258,6 +322,27 @@ static const qc__cgrid_item *candidates_next(candidates *c)
     }
 }
 
+/* Whether poly (box b) touches item m: a chain's segments one by one, each
+ * behind its own box test, as if each were an item. */
+static int item_touch(const qc__cgrid *g, const qc__cgrid_item *m, const qc_vec2 *poly, size_t n,
+                      const qc_bbox *b)
+{
+    const qc_vec2 *v = g->v + m->off;
+    size_t k;
+
+    if (boxes_apart(b, &m->box, 1e-9))
+        return 0;
+    if (!m->chain)
+        return sat_touch(poly, n, v, m->n, 1e-9);
+    for (k = 0; k + 1 < m->n; k++) {
+        qc_bbox sb;
+        poly_box(v + k, 2, &sb);
+        if (!boxes_apart(b, &sb, 1e-9) && sat_touch(poly, n, v + k, 2, 1e-9))
+            return 1;
+    }
+    return 0;
+}
+
 int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
                   qc__cgrid_skip skip, void *ud)
 {
@@ -272,7 +357,7 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     while ((m = candidates_next(&c)) != NULL) {
         if (skip != NULL && skip(ud, m->kind, m->id))
             continue;
-        if (!boxes_apart(&b, &m->box, 1e-9) && sat_touch(poly, n, g->v + m->off, m->n, 1e-9))
+        if (item_touch(g, m, poly, n, &b))
             return 1;
     }
     return 0;
@@ -296,10 +381,10 @@ int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region, uns
 
 int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, size_t entries)
 {
-    QC__TRY(QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + items));
-    QC__TRY(QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + items));
-    QC__TRY(QC__RESERVE(ctx, g->v, g->v_cap, g->nv + verts));
-    return QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + entries);
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->item, g->item_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->stamp, g->stamp_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->v, g->v_cap, g->nv + verts));
+    return QC__RESERVE_EXACT(ctx, g->ent, g->ent_cap, g->nent + entries);
 }
 
 int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
@@ -324,7 +409,7 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
                 continue;
             if (skip != NULL && skip(ud, m->kind, m->id, k))
                 continue;
-            if (sat_touch(pts + k, 2, g->v + m->off, m->n, 1e-9))
+            if (item_touch(g, m, pts + k, 2, &sb))
                 return 1;
         }
     }
