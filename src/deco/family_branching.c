@@ -605,6 +605,7 @@ static int assemble(run *r, qc_path *dst)
 {
     size_t sp = 0, j, nseg = r->nseg;
 
+    qc__cgrid_free(r->ctx, &r->grid); /* placed: the result need not share the peak with it */
     if (r->nspots > 1)
         qsort(r->spots, r->nspots, sizeof *r->spots, cmp_spot);
     QC__TRY(reserve_result(r, dst));
