@@ -356,8 +356,11 @@ static int make_grid(wrun *w)
     }
     b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
     QC__TRY(qc__cgrid_init(w->ctx, &w->grid, b, s, 8 * n + 4096));
-    QC__TRY(qc__cgrid_reserve(w->ctx, &w->grid, (NFLAT + 1) * n + nv,
-                              (2 * NFLAT + w->nhbuf) * n + 2 * nv, (NFLAT * 2 + 4) * n + 4 * nv));
+    /* a chain per join, a hull per primitive and per replacement (a few
+     * percent): exactly, as a regrowth doubles arrays of millions */
+    QC__TRY(qc__cgrid_reserve(w->ctx, &w->grid, 2 * n + n / 16 + nv + 64,
+                              (NFLAT + 1) * n + w->nhbuf * (n + n / 16) + 2 * nv + 1024,
+                              8 * n + 4 * nv + 256));
     return qc__cgrid_add_region(w->ctx, &w->grid, w->region, K_BOUND);
 }
 
@@ -425,7 +428,7 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
 static int sew_step(wrun *w, size_t i, qc_path *out)
 {
     prim *pr = w->pr;
-    size_t n = w->n, j = (i + 1) % n, k;
+    size_t n = w->n, j = (i + 1) % n;
     qc_vec2 c1, c2, f[NFLAT + 1];
     int ok;
 
@@ -442,8 +445,7 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
         join_ctrl(&pr[i], &pr[j], w->l, &c1, &c2);
         flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
     }
-    for (k = 0; k < NFLAT; k++)
-        QC__TRY(qc__cgrid_add(w->ctx, &w->grid, f + k, 2, K_JOIN, (uint32_t)i));
+    QC__TRY(qc__cgrid_add_chain(w->ctx, &w->grid, f, NFLAT + 1, K_JOIN, (uint32_t)i));
     return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
 }
 
