@@ -159,8 +159,17 @@ static void keep_inside_should_check_what_leaves_a_clear_stretch(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc__path_keep_inside(&ctx, &c_shape, "test", &p, &fixed));
     TEST_ASSERT_EQUAL_size_t(2, fixed);
     TEST_ASSERT_EQUAL_size_t(0, outside(&p));
+    TEST_ASSERT_EQUAL_INT(QC_PATH_MOVE, p.cmd[0]); /* what came before the first fix, kept */
+    TEST_ASSERT_EQUAL_INT(QC_PATH_LINE, p.cmd[1]);
+    TEST_ASSERT_EQUAL_DOUBLE(45.0, p.pt[0].y);
+    TEST_ASSERT_EQUAL_DOUBLE(46.0, p.pt[1].y);
     TEST_ASSERT_EQUAL_INT(QC_PATH_CUBIC, p.cmd[2]);
     TEST_ASSERT_TRUE(p.pt[2].y < 70.0 && p.pt[3].y < 70.0); /* tightened */
+    TEST_ASSERT_EQUAL_DOUBLE(47.0, p.pt[4].y);
+    TEST_ASSERT_EQUAL_INT(QC_PATH_LINE, p.cmd[3]); /* and between the fixes */
+    TEST_ASSERT_EQUAL_DOUBLE(11.0, p.pt[5].x);
+    TEST_ASSERT_EQUAL_DOUBLE(50.0, qc_path_last(&p).x);
+    TEST_ASSERT_EQUAL_DOUBLE(10.0, qc_path_last(&p).y);
     qc_path_free(&ctx, &p);
 }
 

@@ -334,16 +334,49 @@ static int fix_cubic(kin *k, const qc_vec2 *q, qc_path *out, size_t *fixed)
     return route(k, q[0], q[3], out);
 }
 
+/* The first fix, at command c (points from at): *out, which holds only
+ * that command's fixed form, becomes in's commands before c followed by it. */
+static int start_copy(qc_ctx *ctx, const qc_path *in, size_t c, size_t at, qc_path *out)
+{
+    qc_path head = {0};
+    int rc;
+
+    rc = QC__RESERVE_EXACT(ctx, head.cmd, head.cmd_cap, in->ncmd + out->ncmd + 16);
+    if (rc == QC_OK)
+        rc = QC__RESERVE_EXACT(ctx, head.pt, head.pt_cap, in->npt + out->npt + 48);
+    if (rc == QC_OK) {
+        memcpy(head.cmd, in->cmd, c);
+        memcpy(head.pt, in->pt, at * sizeof *in->pt);
+        head.ncmd = c;
+        head.npt = at;
+        rc = qc_path_append(ctx, &head, out, 0);
+    }
+    if (rc < 0) {
+        qc_path_free(ctx, &head);
+        return rc;
+    }
+    qc_path_free(ctx, out);
+    *out = head;
+    return QC_OK;
+}
+
+/* Writes the fixed path to *out only from the first fix on (before it,
+ * *out holds at most the command in hand): a path with nothing to fix,
+ * the usual case, is never copied. */
 static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
 {
     qc_vec2 cur = QC__V2(0.0, 0.0);
     size_t c, at = 0;
+    int copying = 0;
 
     for (c = 0; c < in->ncmd; c++) {
         const qc_vec2 *p = in->pt + at;
         unsigned char cmd = in->cmd[c];
         qc_vec2 end = cmd == QC_PATH_CUBIC ? p[2] : p[0];
+        size_t f0 = *fixed, at0 = at;
 
+        if (!copying)
+            out->ncmd = out->npt = 0; /* the previous command came through as it was */
         at += qc_path_cmd_points(cmd);
         /* a loop's apex over the seam: pull it in */
         if (!in_safe(k, &end, 1) && !ok_point(k, end)) {
@@ -367,6 +400,10 @@ static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
             qc_vec2 q[4];
             q[0] = cur, q[1] = p[0], q[2] = p[1], q[3] = end;
             QC__TRY(fix_cubic(k, q, out, fixed));
+        }
+        if (!copying && *fixed > f0) {
+            QC__TRY(start_copy(k->ctx, in, c, at0, out));
+            copying = 1;
         }
         cur = end;
     }
