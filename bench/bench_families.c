@@ -106,12 +106,12 @@ static void run(int family, size_t target, int reps)
  * sampling puts about 0.63 points in each, lattices 1 or more; echo and
  * spiral, which have none, are counted as 10^6), with no sizing run (it would
  * double a minute-long section). Opt-in: `make bench BENCH_ONLY=families1m`;
- * BENCH_FAMILY=NAME runs that family only. The process's CPU time is
+ * BENCH_FAMILY=NAME runs that family only, BENCH_SIDE=MM on another block. The process's CPU time is
  * printed beside the wall time: on a shared machine it is the steadier. */
 void bench_families_1m(void)
 {
-    const double side = 1000.0 * SPACING;
-    const char *only = getenv("BENCH_FAMILY");
+    const char *only = getenv("BENCH_FAMILY"), *side_mm = getenv("BENCH_SIDE");
+    const double side = side_mm != NULL ? atof(side_mm) : 1000.0 * SPACING;
     int f;
 
     printf("families at 10^6: one run of qc_generate on a %.0f mm block (d = %g mm; goal "
