@@ -8,6 +8,9 @@
 
 #include "deco_internal.h"
 
+/* Segments in a chain item at most (its cell ranges live on the stack). */
+#define CHAIN_MAX 1024
+
 static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 {
     size_t i;
@@ -146,21 +149,14 @@ int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
     return QC_OK;
 }
 
-/* Whether cell (x, y) lies in the cell range of one of segments
- * [from, to) of pts: filed already for this chain. */
-static int chain_has_cell(const qc__cgrid *g, const qc_vec2 *pts, size_t from, size_t to,
-                          uint32_t x, uint32_t y)
+/* Whether cell (x, y) lies in one of the first k cell ranges r. */
+static int in_ranges(const uint32_t (*r)[4], size_t k, uint32_t x, uint32_t y)
 {
-    size_t k;
+    size_t i;
 
-    for (k = from; k < to; k++) {
-        qc_bbox sb;
-        uint32_t r[4];
-        poly_box(pts + k, 2, &sb);
-        cell_range(g, &sb, r);
-        if (x >= r[0] && x <= r[2] && y >= r[1] && y <= r[3])
+    for (i = 0; i < k; i++)
+        if (x >= r[i][0] && x <= r[i][2] && y >= r[i][1] && y <= r[i][3])
             return 1;
-    }
     return 0;
 }
 
@@ -170,17 +166,18 @@ int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
     qc_bbox b;
     size_t k;
 
-    if (n < 2)
+    uint32_t r[CHAIN_MAX][4], x, y;
+
+    if (n < 2 || n > CHAIN_MAX + 1)
         return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
     QC__TRY(item_room(ctx, g, n));
     for (k = 0; k + 1 < n; k++) { /* each segment's cells, once per chain */
         qc_bbox sb;
-        uint32_t r[4], x, y;
         poly_box(pts + k, 2, &sb);
-        cell_range(g, &sb, r);
-        for (y = r[1]; y <= r[3]; y++)
-            for (x = r[0]; x <= r[2]; x++)
-                if (!chain_has_cell(g, pts, 0, k, x, y))
+        cell_range(g, &sb, r[k]);
+        for (y = r[k][1]; y <= r[k][3]; y++)
+            for (x = r[k][0]; x <= r[k][2]; x++)
+                if (!in_ranges((const uint32_t(*)[4])r, k, x, y))
                     QC__TRY(enter(ctx, g, x, y));
     }
     poly_box(pts, n, &b);
