@@ -58,7 +58,8 @@ typedef struct qc__cgrid_item {
     uint32_t off;   /* first vertex in v */
     uint16_t n;     /* vertex count */
     uint8_t kind;   /* caller's class: boundary, vine, motif, join ... */
-    uint8_t chain;  /* 1: an open polyline, tested segment by segment */
+    uint8_t chain;  /* 1: an open polyline, tested segment by segment;
+                     * 2: a convex polygon the owner's shape callback gives */
     uint32_t id;    /* caller's id */
 } qc__cgrid_item;
 
@@ -78,6 +79,10 @@ typedef struct qc__cgrid {
     qc_vec2 *v;
     size_t nv, v_cap;
     uint32_t cur;
+    /* the vertices of a shape item (chain 2) with id id, into a buffer of
+     * the owner's that no query uses: the owner keeps what makes them */
+    const qc_vec2 *(*shape)(void *ud, uint32_t id);
+    void *shape_ud;
 } qc__cgrid;
 
 /* Skips item (kind, id) when it returns non-zero. */
@@ -90,6 +95,11 @@ QC__HIDDEN void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g);
 /* Adds a convex polygon (n >= 1, CCW when n >= 3). */
 QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
                              unsigned kind, uint32_t id);
+/* Adds convex polygon poly (n vertices) as a shape item: binned and
+ * tested as qc__cgrid_add's, its vertices not stored but asked of
+ * g->shape (which must then give poly again) when a query reaches it. */
+QC__HIDDEN int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                                   unsigned kind, uint32_t id);
 /* Adds an open polyline (2 <= n <= 1025) as one item that touches what
  * one of its segments touches: as its segments added one by one, in one
  * item, one vertex per joint and the cells its segments meet. */

@@ -100,6 +100,22 @@ static int grid_add(run *r, const qc_vec2 *poly, size_t n, unsigned kind, uint32
     return qc__cgrid_add(r->ctx, &r->grid, poly, n, kind, id);
 }
 
+/* The hull of placed motif id (a spot), as try_place put it in the grid:
+ * its vertices are made again from the spot's map, not stored (a third of
+ * a million-point grid's bytes). */
+static const qc_vec2 *placed_hull(void *ud, uint32_t id)
+{
+    const run *r = ud;
+    const spot *sp = &r->spots[id];
+    const qc_motif *m = &r->set->m[sp->motif];
+    qc_vec2 *h = r->buf + r->nbuf;
+    size_t i;
+
+    for (i = 0; i < m->nhull; i++)
+        h[i] = qc__xf_apply(&sp->xf, m->hull[i]);
+    return h;
+}
+
 /* Tries motif m at a along dir scaled k: places it (1) or not (0). */
 static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint32_t seg,
                      double t, int *rc)
@@ -121,7 +137,9 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
     if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
         return 0;
     *rc = QC__RESERVE(r->ctx, r->spots, r->spots_cap, r->nspots + 1);
-    if (*rc == QC_OK)
+    if (*rc == QC_OK && r->tile == NULL) /* the spot, filled below, keeps its vertices */
+        *rc = qc__cgrid_add_shape(r->ctx, &r->grid, full, nf, K_MOTIF, (uint32_t)r->nspots);
+    else if (*rc == QC_OK)
         *rc = grid_add(r, full, nf, K_MOTIF, (uint32_t)r->nspots);
     if (*rc == QC_OK && r->pl != NULL) {
         for (i = 0; i < nf && *rc == QC_OK; i++)
@@ -414,6 +432,8 @@ static int make_grid(run *r)
     b.max.x = fmax(b.max.x, vb.max.x) + s;
     b.max.y = fmax(b.max.y, vb.max.y) + s;
     QC__TRY(qc__cgrid_init(r->ctx, &r->grid, b, s, 16 * r->skel->norder + 4096));
+    r->grid.shape = placed_hull;
+    r->grid.shape_ud = r;
     for (j = 0; j < nseg; j++)
         chords += vine_chords(r, j);
     for (j = 0; j < r->nchoice; j++)
@@ -426,7 +446,7 @@ static int make_grid(run *r)
                                  2 * chords + hull * spots + 2 * nv + 1024,
                                  2 * chords + 6 * spots + 4 * nv + 256);
     return qc__cgrid_reserve(r->ctx, &r->grid, nseg + spots + nv + 64,
-                             chords + nseg + hull * spots + 2 * nv + 1024,
+                             chords + nseg + spots + 2 * nv + 1024,
                              chords / 2 + 5 * spots + 4 * nv + 256);
 }
 
@@ -464,7 +484,7 @@ static int fill_grid(run *r)
     size_t j;
 
     QC__TRY(make_shapes(r));
-    r->buf = qc__alloc_array(r->ctx, r->nbuf, sizeof *r->buf);
+    r->buf = qc__alloc_array(r->ctx, 2 * r->nbuf, sizeof *r->buf); /* + placed_hull's */
     if (r->buf == NULL)
         return QC_ENOMEM;
     QC__TRY(make_grid(r));
@@ -638,7 +658,7 @@ static void run_free(run *r)
 
     qc__cgrid_free(ctx, &r->grid);
     free_shapes(r);
-    qc__free(ctx, r->buf, r->nbuf * sizeof *r->buf);
+    qc__free(ctx, r->buf, 2 * r->nbuf * sizeof *r->buf);
     qc__free(ctx, r->spots, r->spots_cap * sizeof *r->spots);
     if (r->set != NULL)
         qc__free(ctx, r->choice, r->set->n * sizeof *r->choice);

@@ -133,20 +133,42 @@ static void store(qc__cgrid *g, const qc_vec2 *poly, size_t n, const qc_bbox *b,
     g->nv += n;
 }
 
-int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
-                  unsigned kind, uint32_t id)
+/* A polygon item (shape 0) or a shape item (1: no vertices stored). */
+static int add_polygon(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kind,
+                       uint32_t id, int shape)
 {
     qc_bbox b;
     uint32_t r[4], x, y;
 
-    QC__TRY(item_room(ctx, g, n));
+    if (n == 0 || n > 65535)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
+    QC__TRY(item_room(ctx, g, shape ? 1 : n));
     poly_box(poly, n, &b);
     cell_range(g, &b, r);
     for (y = r[1]; y <= r[3]; y++)
         for (x = r[0]; x <= r[2]; x++)
             QC__TRY(enter(ctx, g, x, y));
-    store(g, poly, n, &b, kind, 0, id);
+    if (!shape) {
+        store(g, poly, n, &b, kind, 0, id);
+        return QC_OK;
+    }
+    store(g, poly, 0, &b, kind, 2, id);
+    g->item[g->nitem - 1].n = (uint16_t)n;
     return QC_OK;
+}
+
+int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                  unsigned kind, uint32_t id)
+{
+    return add_polygon(ctx, g, poly, n, kind, id, 0);
+}
+
+int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                        unsigned kind, uint32_t id)
+{
+    if (g->shape == NULL)
+        return qc__fail(ctx, QC_EINVAL, "collision grid: a shape item without a shape callback");
+    return add_polygon(ctx, g, poly, n, kind, id, 1);
 }
 
 /* Whether cell (x, y) lies in one of the first k cell ranges r. */
@@ -329,6 +351,8 @@ static int item_touch(const qc__cgrid *g, const qc__cgrid_item *m, const qc_vec2
 
     if (boxes_apart(b, &m->box, 1e-9))
         return 0;
+    if (m->chain == 2)
+        return sat_touch(poly, n, g->shape(g->shape_ud, m->id), m->n, 1e-9);
     if (!m->chain)
         return sat_touch(poly, n, v, m->n, 1e-9);
     for (k = 0; k + 1 < m->n; k++) {
