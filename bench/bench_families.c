@@ -104,7 +104,7 @@ static void run(int family, size_t target, int reps)
 /* 10^6 points (issue 21: <= 5 s, <= 1 KB per point), one run each on the
  * block the issue names, 10 m at d = 10 mm (10^6 cells of d^2; Poisson
  * sampling puts about 0.63 points in each, lattices 1 or more; echo and
- * spiral, which have none, are counted as 10^6), with no sizing run (it would
+ * spiral, which have none, are counted by those cells), with no sizing run (it would
  * double a minute-long section). Opt-in: `make bench BENCH_ONLY=families1m`;
  * BENCH_FAMILY=NAME runs that family only, BENCH_SIDE=MM on another block. The process's CPU time is
  * printed beside the wall time: on a shared machine it is the steadier. */
@@ -135,7 +135,7 @@ void bench_families_1m(void)
                "  peak %6.0f B/pt\n",
                qc_family_name(f), (unsigned long)points, t * 1e3, cpu * 1e3, deco * 1e3,
                deco_cpu_last * 1e3,
-               (double)peak / (double)(points > 0 ? points : 1000000));
+               (double)peak / (points > 0 ? (double)points : side * side / (SPACING * SPACING)));
         fflush(stdout);
     }
 }
