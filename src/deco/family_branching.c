@@ -389,11 +389,13 @@ static int build_vine(run *r)
     const qc_skeleton *skel = r->skel;
     size_t i;
 
+    /* exactly: a doubling's slack would be the peak's at 10^6 points */
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->pts.v, r->pts.cap, skel->norder));
     for (i = 0; i < skel->norder; i++)
         QC__TRY(qc_points_push(r->ctx, &r->pts, skel->p[skel->order[i]]));
     /* room for the whole vine at once */
-    QC__TRY(QC__RESERVE(r->ctx, r->vine.cmd, r->vine.cmd_cap, r->pts.n + 1));
-    QC__TRY(QC__RESERVE(r->ctx, r->vine.pt, r->vine.pt_cap, 3 * r->pts.n + 1));
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->vine.cmd, r->vine.cmd_cap, r->pts.n + 1));
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->vine.pt, r->vine.pt_cap, 3 * r->pts.n + 1));
     QC__TRY(qc_curve_catmull_rom(r->ctx, r->pts.v, r->pts.n, skel->edges == NULL, &r->vine));
     if (r->tile != NULL)
         qc__btile_flat_ports(r->tile, &r->vine);
@@ -602,8 +604,8 @@ static int reserve_result(const run *r, qc_path *dst)
         nc += r->set->m[r->spots[i].motif].path.ncmd;
         np += r->set->m[r->spots[i].motif].path.npt;
     }
-    QC__TRY(QC__RESERVE(r->ctx, dst->cmd, dst->cmd_cap, nc));
-    return QC__RESERVE(r->ctx, dst->pt, dst->pt_cap, np);
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, dst->cmd, dst->cmd_cap, nc));
+    return QC__RESERVE_EXACT(r->ctx, dst->pt, dst->pt_cap, np);
 }
 
 /* The motif of spot sp as a detour from its attachment and back. */
