@@ -100,7 +100,7 @@ QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, siz
  * g->shape (which must then give poly again) when a query reaches it. */
 QC__HIDDEN int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
                                    unsigned kind, uint32_t id);
-/* Adds an open polyline (2 <= n <= 1025) as one item that touches what
+/* Adds an open polyline (2 <= n <= 65535) as one item that touches what
  * one of its segments touches: as its segments added one by one, in one
  * item, one vertex per joint and the cells its segments meet. */
 QC__HIDDEN int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,

@@ -24,6 +24,8 @@ enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 #define VINE_TOL 0.02
 /* Body hulls: a coarse polyline's hull pushed out by its tolerance (unit frame). */
 #define BODY_TOL 0.04
+/* Chords of one vine cubic at most. */
+#define MAX_CHORDS 256
 
 typedef struct spot {
     uint32_t seg;    /* vine cubic */
@@ -75,6 +77,7 @@ typedef struct run {
     size_t nchoice;
     qc_vec2 *buf;     /* transformed hull */
     size_t nbuf;
+    qc_vec2 *chain;   /* a vine cubic's chords (MAX_CHORDS + 1 points) */
     spot *spots;
     size_t nspots, spots_cap;
     qc_rng rng;
@@ -416,7 +419,7 @@ static size_t vine_chords(const run *r, size_t j)
     double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
     size_t nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
 
-    return nk < 1 ? 1 : nk > 256 ? 256 : nk;
+    return nk < 1 ? 1 : nk > MAX_CHORDS ? MAX_CHORDS : nk;
 }
 
 /* The collision grid over the region and the vine, s beyond both. */
@@ -457,7 +460,7 @@ static int add_vine_chords(run *r, size_t j)
 {
     const qc_vec2 *q = r->vine.pt + 3 * j;
     size_t k, nk = vine_chords(r, j);
-    qc_vec2 prev = q[0], chain[257];
+    qc_vec2 prev = q[0], *chain = r->chain;
 
     chain[0] = prev;
     for (k = 1; k <= nk; k++) {
@@ -487,7 +490,8 @@ static int fill_grid(run *r)
 
     QC__TRY(make_shapes(r));
     r->buf = qc__alloc_array(r->ctx, 2 * r->nbuf, sizeof *r->buf); /* + placed_hull's */
-    if (r->buf == NULL)
+    r->chain = qc__alloc_array(r->ctx, MAX_CHORDS + 1, sizeof *r->chain);
+    if (r->buf == NULL || r->chain == NULL)
         return QC_ENOMEM;
     QC__TRY(make_grid(r));
     QC__TRY(qc__cgrid_add_region(r->ctx, &r->grid, r->region, K_BOUND));
@@ -661,6 +665,7 @@ static void run_free(run *r)
     qc__cgrid_free(ctx, &r->grid);
     free_shapes(r);
     qc__free(ctx, r->buf, 2 * r->nbuf * sizeof *r->buf);
+    qc__free(ctx, r->chain, (MAX_CHORDS + 1) * sizeof *r->chain);
     qc__free(ctx, r->spots, r->spots_cap * sizeof *r->spots);
     if (r->set != NULL)
         qc__free(ctx, r->choice, r->set->n * sizeof *r->choice);

@@ -8,8 +8,10 @@
 
 #include "deco_internal.h"
 
-/* Segments in a chain item at most (its cell ranges live on the stack). */
-#define CHAIN_MAX 1024
+/* A chain's segment is filed under the cells its box meets, except those
+ * already filed for the CHAIN_WINDOW segments before it (a duplicate entry
+ * costs a little room, never an answer: queries stamp each item once). */
+#define CHAIN_WINDOW 8
 
 static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 {
@@ -171,7 +173,7 @@ int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n
     return add_polygon(ctx, g, poly, n, kind, id, 1);
 }
 
-/* Whether cell (x, y) lies in one of the first k cell ranges r. */
+/* Whether cell (x, y) lies in one of the k cell ranges r. */
 static int in_ranges(const uint32_t (*r)[4], size_t k, uint32_t x, uint32_t y)
 {
     size_t i;
@@ -188,19 +190,27 @@ int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
     qc_bbox b;
     size_t k;
 
-    uint32_t r[CHAIN_MAX][4], x, y;
+    uint32_t r[CHAIN_WINDOW + 1][4], x, y; /* r[k % (CHAIN_WINDOW + 1)]: segment k's */
 
-    if (n < 2 || n > CHAIN_MAX + 1)
+    if (n < 2 || n > 65535)
         return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
     QC__TRY(item_room(ctx, g, n));
-    for (k = 0; k + 1 < n; k++) { /* each segment's cells, once per chain */
+    for (k = 0; k + 1 < n; k++) {
+        uint32_t *rk = r[k % (CHAIN_WINDOW + 1)];
+        size_t before = k < CHAIN_WINDOW ? k : CHAIN_WINDOW, i;
         qc_bbox sb;
+
         poly_box(pts + k, 2, &sb);
-        cell_range(g, &sb, r[k]);
-        for (y = r[k][1]; y <= r[k][3]; y++)
-            for (x = r[k][0]; x <= r[k][2]; x++)
-                if (!in_ranges((const uint32_t(*)[4])r, k, x, y))
+        cell_range(g, &sb, rk);
+        for (y = rk[1]; y <= rk[3]; y++)
+            for (x = rk[0]; x <= rk[2]; x++) {
+                int filed = 0;
+                for (i = 1; i <= before && !filed; i++)
+                    filed = in_ranges((const uint32_t(*)[4])r + (k - i) % (CHAIN_WINDOW + 1),
+                                      1, x, y);
+                if (!filed)
                     QC__TRY(enter(ctx, g, x, y));
+            }
     }
     poly_box(pts, n, &b);
     store(g, pts, n, &b, kind, 1, id);
