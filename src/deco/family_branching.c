@@ -139,7 +139,10 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
         body[i] = qc__xf_apply(&f, sh->body[i]);
     if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
         return 0;
-    *rc = QC__RESERVE(r->ctx, r->spots, r->spots_cap, r->nspots + 1);
+    /* past make_grid's guess, by a quarter: 72 bytes a spot, a million spots */
+    *rc = r->nspots < r->spots_cap ? QC_OK
+                                   : QC__RESERVE_EXACT(r->ctx, r->spots, r->spots_cap,
+                                                       r->spots_cap + r->spots_cap / 4 + 16);
     if (*rc == QC_OK && r->tile == NULL) /* the spot, filled below, keeps its vertices */
         *rc = qc__cgrid_add_shape(r->ctx, &r->grid, full, nf, K_MOTIF, (uint32_t)r->nspots);
     else if (*rc == QC_OK)
@@ -427,7 +430,7 @@ static int make_grid(run *r)
 {
     const qc_path *vine = &r->vine;
     qc_bbox b = qc_region_bbox(r->region), vb = qc__points_bbox(vine->pt, vine->npt);
-    size_t nseg = r->nseg, nv = r->region->nv, spots = nseg + nseg / 8 + 16, chords = 0, hull = 0;
+    size_t nseg = r->nseg, nv = r->region->nv, spots = nseg + nseg / 16 + 16, chords = 0, hull = 0;
     size_t j;
     double s = r->s;
 
@@ -445,14 +448,13 @@ static int make_grid(run *r)
         hull = r->set->m[r->choice[j]].nhull > hull ? r->set->m[r->choice[j]].nhull : hull;
     QC__TRY(QC__RESERVE_EXACT(r->ctx, r->spots, r->spots_cap, spots));
     /* the vine's chains exactly, a guess at the motifs (about one per
-     * cubic): a regrowth would double arrays of a million entries */
+     * cubic; the grid and the spots grow by a quarter past it) */
     if (r->tile != NULL)
         return qc__cgrid_reserve(r->ctx, &r->grid, chords + spots + nv + 64,
                                  2 * chords + hull * spots + 2 * nv + 1024,
                                  2 * chords + 6 * spots + 4 * nv + 256);
     return qc__cgrid_reserve(r->ctx, &r->grid, nseg + spots + nv + 64,
-                             chords + nseg + spots + 2 * nv + 1024,
-                             chords / 2 + 5 * spots + 4 * nv + 256);
+                             chords + nseg + 2 * nv + 1024, chords / 2 + 4 * spots + 4 * nv + 256);
 }
 
 /* Vine cubic j as short chords into the grid, and into the placement if asked. */

@@ -90,16 +90,30 @@ static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
     }
 }
 
+/* Room for need elements, growing by a quarter past the owner's
+ * reservation (qc__cgrid_reserve) rather than doubling: at 10^6 points
+ * these arrays are hundreds of MB and the reservation is close. */
+static int grow(qc_ctx *ctx, void **p, size_t *cap, size_t need, size_t elem)
+{
+    size_t want = *cap + *cap / 4 + 64;
+
+    if (need <= *cap)
+        return QC_OK;
+    return qc__reserve_exact(ctx, p, cap, want > need ? want : need, elem);
+}
+
+#define GROW(ctx, arr, capv, need) grow((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+
 /* Room for one more item of n vertices. */
 static int item_room(qc_ctx *ctx, qc__cgrid *g, size_t n)
 {
     if (n == 0 || n > 65535 || g->nitem >= UINT32_MAX - 1 || g->nv + n >= UINT32_MAX)
         return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
-    if (QC__RESERVE(ctx, g->v, g->v_cap, g->nv + n) < 0)
+    if (GROW(ctx, g->v, g->v_cap, g->nv + n) < 0)
         return QC_ENOMEM;
-    if (QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + 1) < 0)
+    if (GROW(ctx, g->item, g->item_cap, g->nitem + 1) < 0)
         return QC_ENOMEM;
-    if (QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
+    if (GROW(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
         return QC_ENOMEM;
     return QC_OK;
 }
@@ -111,7 +125,7 @@ static int enter(qc_ctx *ctx, qc__cgrid *g, uint32_t x, uint32_t y)
 
     if (g->nent >= UINT32_MAX - 1)
         return qc__fail(ctx, QC_ELIMIT, "collision grid full");
-    if (QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
+    if (GROW(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
         return QC_ENOMEM;
     g->ent[g->nent].item = (uint32_t)g->nitem;
     g->ent[g->nent].next = g->head[c];
