@@ -15,6 +15,7 @@ void bench_pebbling(void);
 void bench_families(void);
 /* Every family at 10^3 points beside issue 21's 5 ms / 15 ms goals (bench_families_1k.c). */
 void bench_families_1k(void);
+void bench_families_1m(void); /* opt-in: slow */
 void bench_meander(void);
 void bench_quilt(void);
 

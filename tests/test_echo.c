@@ -448,6 +448,31 @@ static void echo_should_report_errors(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* The distance grid's size is decided before it is built: a quilter's
+ * largest block (3.5 m at d = 2 mm) and the bench's 10 m block at d = 10 mm
+ * fit within the d / 2 grid echo accepts; a 100 m block at 0.5 mm does not. */
+static void echo_grid_should_admit_a_quilters_largest_block(void)
+{
+    static const struct {
+        const char *spec;
+        double d;
+        int fits;
+    } cases[] = {{"square:3500", 2.0, 1}, {"square:10000", 10.0, 1}, {"square:100000", 0.5, 0}};
+    size_t k;
+
+    for (k = 0; k < sizeof cases / sizeof *cases; k++) {
+        qc_region r = {0};
+        double h;
+
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, cases[k].spec, 1.0, &r));
+        h = qc__sdf_step(&r, cases[k].d / 4);
+        TEST_ASSERT_TRUE(h >= cases[k].d / 4);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(cases[k].fits, h <= cases[k].d / 2, cases[k].spec);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* A zero margin puts the outermost ring on the outline. */
 static void echo_zero_margin_should_follow_the_outline(void)
 {
@@ -513,6 +538,7 @@ int main(void)
     RUN_TEST(echo_should_be_deterministic);
     RUN_TEST(echo_should_run_through_generate);
     RUN_TEST(echo_should_report_errors);
+    RUN_TEST(echo_grid_should_admit_a_quilters_largest_block);
     RUN_TEST(echo_zero_margin_should_follow_the_outline);
     RUN_TEST(echo_should_survive_allocation_failures);
     return UNITY_END();

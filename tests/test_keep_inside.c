@@ -141,11 +141,44 @@ static void keep_inside_should_keep_good_paths_and_name_bad_ones(void)
     TEST_ASSERT_TRUE(k > 3);
 }
 
+/* A stretch found clear of the boundary vouches only for what lies in it:
+ * a cubic whose ends lie there but whose bulge crosses the seam is still
+ * caught, and a line from there across the notch still routed round it. */
+static void keep_inside_should_check_what_leaves_a_clear_stretch(void)
+{
+    qc_path p = {0};
+    size_t fixed = 0;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, v2(10, 45)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(10, 46))); /* clear round here */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, v2(10, 70), v2(12, 70), v2(12, 47)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(11, 47)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(50, 50))); /* across no notch */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(50, 10))); /* across the notch */
+    TEST_ASSERT_TRUE(outside(&p) > 0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__path_keep_inside(&ctx, &c_shape, "test", &p, &fixed));
+    TEST_ASSERT_EQUAL_size_t(2, fixed);
+    TEST_ASSERT_EQUAL_size_t(0, outside(&p));
+    TEST_ASSERT_EQUAL_INT(QC_PATH_MOVE, p.cmd[0]); /* what came before the first fix, kept */
+    TEST_ASSERT_EQUAL_INT(QC_PATH_LINE, p.cmd[1]);
+    TEST_ASSERT_EQUAL_DOUBLE(45.0, p.pt[0].y);
+    TEST_ASSERT_EQUAL_DOUBLE(46.0, p.pt[1].y);
+    TEST_ASSERT_EQUAL_INT(QC_PATH_CUBIC, p.cmd[2]);
+    TEST_ASSERT_TRUE(p.pt[2].y < 70.0 && p.pt[3].y < 70.0); /* tightened */
+    TEST_ASSERT_EQUAL_DOUBLE(47.0, p.pt[4].y);
+    TEST_ASSERT_EQUAL_INT(QC_PATH_LINE, p.cmd[3]); /* and between the fixes */
+    TEST_ASSERT_EQUAL_DOUBLE(11.0, p.pt[5].x);
+    TEST_ASSERT_EQUAL_DOUBLE(50.0, qc_path_last(&p).x);
+    TEST_ASSERT_EQUAL_DOUBLE(10.0, qc_path_last(&p).y);
+    qc_path_free(&ctx, &p);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(keep_inside_should_route_a_chord_round_the_notch);
     RUN_TEST(keep_inside_should_tighten_a_bulging_cubic);
     RUN_TEST(keep_inside_should_keep_good_paths_and_name_bad_ones);
+    RUN_TEST(keep_inside_should_check_what_leaves_a_clear_stretch);
     return UNITY_END();
 }

@@ -108,6 +108,23 @@ void *qc__alloc_array(qc_ctx *ctx, size_t count, size_t elem)
     return qc__alloc(ctx, count * elem);
 }
 
+int qc__reserve_exact(qc_ctx *ctx, void **ptr, size_t *cap, size_t need, size_t elem)
+{
+    void *p;
+
+    if (need <= *cap)
+        return QC_OK;
+    if (need > (size_t)-1 / elem)
+        return qc__fail(ctx, QC_ENOMEM, "array of %lu elements too large",
+                        (unsigned long)need);
+    p = qc__realloc(ctx, *ptr, *cap * elem, need * elem);
+    if (p == NULL)
+        return QC_ENOMEM;
+    *ptr = p;
+    *cap = need;
+    return QC_OK;
+}
+
 int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need, size_t elem)
 {
     size_t ncap;

@@ -39,6 +39,14 @@ QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
 #define QC__RESERVE(ctx, arr, capv, need) \
     qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
 
+/* The same with room for exactly need elements (no doubling): for a large
+ * array whose final size is known or well estimated up front. */
+QC__HIDDEN int qc__reserve_exact(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
+                                 size_t elem);
+
+#define QC__RESERVE_EXACT(ctx, arr, capv, need) \
+    qc__reserve_exact((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+
 /* Scans a decimal number ([+-] digits [. digits] [(e|E) [+-] digits]; no
  * hex, nan, inf or locale) at s[*pos..n): 1 with *v correctly rounded
  * (possibly +-inf for a huge exponent) and *pos past it, or 0 when none

@@ -27,6 +27,10 @@ typedef struct kin {
     double *dist;
     uint32_t *prev;
     unsigned char *done;
+    /* a disc inside the region with no boundary within QC__INSIDE_TOL_MM
+     * of it (safe_r 0: none yet): every point in it passes ok_point */
+    qc_vec2 safe_c;
+    double safe_r;
 } kin;
 
 static int ok_point(const kin *k, qc_vec2 p)
@@ -58,14 +62,65 @@ static int hull_inside(const kin *k, const qc_vec2 *q, size_t n)
     return qc__rindex_box_inside(&k->ix, b);
 }
 
-static int seg_ok(const kin *k, qc_vec2 a, qc_vec2 b)
+/* Whether all n points lie in the safe disc. */
+static int in_safe(const kin *k, const qc_vec2 *p, size_t n)
+{
+    double r2 = k->safe_r * k->safe_r;
+    size_t i;
+
+    for (i = 0; i < n; i++) {
+        double dx = p[i].x - k->safe_c.x, dy = p[i].y - k->safe_c.y;
+        if (!(dx * dx + dy * dy <= r2))
+            return 0;
+    }
+    return k->safe_r > 0.0;
+}
+
+/* Whether the convex hull of the n points (a segment's ends, a cubic's
+ * control points: every sample the checks below take) lies in a safe
+ * disc, so they would all pass; the disc is re-centred on p[0] (radius 64,
+ * 8 or 1 times the points' spread, the largest clear of the boundary) when
+ * they leave it. Only a shortcut: sampling decides wherever this cannot,
+ * so the answers (and the output) are the same, with a few index queries
+ * per stretch of path instead of one per 0.2 mm. */
+static int clear_inside(kin *k, const qc_vec2 *p, size_t n)
+{
+    double e = 0.0, r;
+    size_t i;
+
+    if (in_safe(k, p, n))
+        return 1;
+    for (i = 1; i < n; i++)
+        e = fmax(e, qc_hypot(p[i].x - p[0].x, p[i].y - p[0].y));
+    e = fmax(e, STEP_MM);
+    if (!qc__rindex_contains(&k->ix, p[0]))
+        return 0;
+    for (r = 64.0 * e; r >= e; r *= 0.125)
+        if (!qc__rindex_near(&k->ix, p[0], r + QC__INSIDE_TOL_MM)) {
+            k->safe_c = p[0];
+            k->safe_r = r;
+            return in_safe(k, p, n);
+        }
+    return 0;
+}
+
+/* Whether every sample of the command q[0..n) is known inside without
+ * sampling: in the safe disc, its box inside the region, or in a disc
+ * found anew. Sampling decides wherever none can say. */
+static int known_inside(kin *k, const qc_vec2 *q, size_t n)
+{
+    return in_safe(k, q, n) || hull_inside(k, q, n) || clear_inside(k, q, n);
+}
+
+static int seg_ok(kin *k, qc_vec2 a, qc_vec2 b)
 {
     double len = qc_hypot(b.x - a.x, b.y - a.y), m = ceil(len / STEP_MM);
     size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
-    qc_vec2 ab[2];
+    qc_vec2 ends[2];
 
-    ab[0] = a, ab[1] = b;
-    if (hull_inside(k, ab, 2))
+    ends[0] = a;
+    ends[1] = b;
+    if (known_inside(k, ends, 2))
         return 1;
     for (i = 0; i <= n; i++) {
         double t = (double)i / (double)n;
@@ -75,7 +130,7 @@ static int seg_ok(const kin *k, qc_vec2 a, qc_vec2 b)
     return 1;
 }
 
-static int cubic_ok(const kin *k, const qc_vec2 *q)
+static int cubic_ok(kin *k, const qc_vec2 *q)
 {
     double len = qc_hypot(q[1].x - q[0].x, q[1].y - q[0].y) +
                  qc_hypot(q[2].x - q[1].x, q[2].y - q[1].y) +
@@ -83,7 +138,7 @@ static int cubic_ok(const kin *k, const qc_vec2 *q)
     double m = ceil(len / STEP_MM);
     size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
 
-    if (hull_inside(k, q, 4))
+    if (known_inside(k, q, 4))
         return 1;
     for (i = 0; i <= n; i++)
         if (!ok_point(k, qc_cubic_point(q, (double)i / (double)n)))
@@ -152,7 +207,7 @@ static int cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
            ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
 }
 
-static int visible(const kin *k, qc_vec2 a, qc_vec2 b)
+static int visible(kin *k, qc_vec2 a, qc_vec2 b)
 {
     const qc_region *r = k->region;
     double lx = fmin(a.x, b.x), hx = fmax(a.x, b.x), ly = fmin(a.y, b.y), hy = fmax(a.y, b.y);
@@ -311,18 +366,52 @@ static int fix_cubic(kin *k, const qc_vec2 *q, qc_path *out, size_t *fixed)
     return route(k, q[0], q[3], out);
 }
 
+/* The first fix, at command c (points from at): *out, which holds only
+ * that command's fixed form, becomes in's commands before c followed by it. */
+static int start_copy(qc_ctx *ctx, const qc_path *in, size_t c, size_t at, qc_path *out)
+{
+    qc_path head = {0};
+    int rc;
+
+    rc = QC__RESERVE_EXACT(ctx, head.cmd, head.cmd_cap, in->ncmd + out->ncmd + 16);
+    if (rc == QC_OK)
+        rc = QC__RESERVE_EXACT(ctx, head.pt, head.pt_cap, in->npt + out->npt + 48);
+    if (rc == QC_OK) {
+        memcpy(head.cmd, in->cmd, c);
+        memcpy(head.pt, in->pt, at * sizeof *in->pt);
+        head.ncmd = c;
+        head.npt = at;
+        rc = qc_path_append(ctx, &head, out, 0);
+    }
+    if (rc < 0) {
+        qc_path_free(ctx, &head);
+        return rc;
+    }
+    qc_path_free(ctx, out);
+    *out = head;
+    return QC_OK;
+}
+
+/* Writes the fixed path to *out only from the first fix on (before it,
+ * *out holds at most the command in hand): a path with nothing to fix,
+ * the usual case, is never copied. */
 static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
 {
     qc_vec2 cur = QC__V2(0.0, 0.0);
     size_t c, at = 0;
+    int copying = 0;
 
     for (c = 0; c < in->ncmd; c++) {
         const qc_vec2 *p = in->pt + at;
         unsigned char cmd = in->cmd[c];
         qc_vec2 end = cmd == QC_PATH_CUBIC ? p[2] : p[0];
+        size_t f0 = *fixed, at0 = at;
 
+        if (!copying)
+            out->ncmd = out->npt = 0; /* the previous command came through as it was */
         at += qc_path_cmd_points(cmd);
-        if (!ok_point(k, end)) { /* a loop's apex over the seam: pull it in */
+        /* a loop's apex over the seam: pull it in */
+        if (!in_safe(k, &end, 1) && !ok_point(k, end)) {
             int ok;
             qc_vec2 moved = project_inside(k, end, &ok);
             if (!ok)
@@ -343,6 +432,10 @@ static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
             qc_vec2 q[4];
             q[0] = cur, q[1] = p[0], q[2] = p[1], q[3] = end;
             QC__TRY(fix_cubic(k, q, out, fixed));
+        }
+        if (!copying && *fixed > f0) {
+            QC__TRY(start_copy(k->ctx, in, c, at0, out));
+            copying = 1;
         }
         cur = end;
     }

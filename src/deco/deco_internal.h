@@ -58,6 +58,8 @@ typedef struct qc__cgrid_item {
     uint32_t off;   /* first vertex in v */
     uint16_t n;     /* vertex count */
     uint8_t kind;   /* caller's class: boundary, vine, motif, join ... */
+    uint8_t chain;  /* 1: an open polyline, tested segment by segment;
+                     * 2: a convex polygon the owner's shape callback gives */
     uint32_t id;    /* caller's id */
 } qc__cgrid_item;
 
@@ -77,6 +79,10 @@ typedef struct qc__cgrid {
     qc_vec2 *v;
     size_t nv, v_cap;
     uint32_t cur;
+    /* the vertices of a shape item (chain 2) with id id, into a buffer of
+     * the owner's that no query uses: the owner keeps what makes them */
+    const qc_vec2 *(*shape)(void *ud, uint32_t id);
+    void *shape_ud;
 } qc__cgrid;
 
 /* Skips item (kind, id) when it returns non-zero. */
@@ -89,6 +95,16 @@ QC__HIDDEN void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g);
 /* Adds a convex polygon (n >= 1, CCW when n >= 3). */
 QC__HIDDEN int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
                              unsigned kind, uint32_t id);
+/* Adds convex polygon poly (n vertices) as a shape item: binned and
+ * tested as qc__cgrid_add's, its vertices not stored but asked of
+ * g->shape (which must then give poly again) when a query reaches it. */
+QC__HIDDEN int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                                   unsigned kind, uint32_t id);
+/* Adds an open polyline (2 <= n <= 65535) as one item that touches what
+ * one of its segments touches: as its segments added one by one, in one
+ * item, one vertex per joint and the cells its segments meet. */
+QC__HIDDEN int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
+                                   unsigned kind, uint32_t id);
 /* Adds every boundary edge of region as a two-point item of kind (id 0). */
 QC__HIDDEN int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region,
                                     unsigned kind);
@@ -102,7 +118,8 @@ typedef int (*qc__cgrid_skip_seg)(void *ud, unsigned kind, uint32_t id, size_t s
  * the cells under the polyline's box), else 0. */
 QC__HIDDEN int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n,
                                       unsigned kinds, qc__cgrid_skip_seg skip, void *ud);
-/* Makes room for items more items of about verts vertices and entries cells in all. */
+/* Makes room for exactly items more items of verts vertices and entries cells
+ * in all (a later add beyond them grows the arrays geometrically). */
 QC__HIDDEN int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts,
                                  size_t entries);
 /* Separating-axis test of two convex polygons (1 or 2 vertices allowed);
@@ -217,11 +234,14 @@ typedef struct qc__sdf {
 } qc__sdf;
 
 /* The signed distance of a normalized region on a grid of spacing about h
- * (raised so the grid has at most 2^22 nodes) padded by two nodes round its
+ * (raised so the grid has at most 2^24 nodes) padded by two nodes round its
  * box: exact distances near the boundary, nearest edges carried by two
  * raster sweeps elsewhere. Errors: QC_EEMPTY (no outline), QC_ERANGE (h not
  * > 0), QC_ENOMEM. */
 QC__HIDDEN int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out);
+/* The spacing qc__sdf_build would use for h (h itself when the region or h
+ * is unusable): decided before anything is allocated. */
+QC__HIDDEN double qc__sdf_step(const qc_region *region, double h);
 QC__HIDDEN void qc__sdf_free(qc_ctx *ctx, qc__sdf *s);
 /* Bilinear value at p (the border value outside the grid). */
 QC__HIDDEN double qc__sdf_at(const qc__sdf *s, qc_vec2 p);

@@ -24,6 +24,8 @@ enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 #define VINE_TOL 0.02
 /* Body hulls: a coarse polyline's hull pushed out by its tolerance (unit frame). */
 #define BODY_TOL 0.04
+/* Chords of one vine cubic at most. */
+#define MAX_CHORDS 256
 
 typedef struct spot {
     uint32_t seg;    /* vine cubic */
@@ -75,6 +77,7 @@ typedef struct run {
     size_t nchoice;
     qc_vec2 *buf;     /* transformed hull */
     size_t nbuf;
+    qc_vec2 *chain;   /* a vine cubic's chords (MAX_CHORDS + 1 points) */
     spot *spots;
     size_t nspots, spots_cap;
     qc_rng rng;
@@ -100,6 +103,22 @@ static int grid_add(run *r, const qc_vec2 *poly, size_t n, unsigned kind, uint32
     return qc__cgrid_add(r->ctx, &r->grid, poly, n, kind, id);
 }
 
+/* The hull of placed motif id (a spot), as try_place put it in the grid:
+ * its vertices are made again from the spot's map, not stored (a third of
+ * a million-point grid's bytes). */
+static const qc_vec2 *placed_hull(void *ud, uint32_t id)
+{
+    const run *r = ud;
+    const spot *sp = &r->spots[id];
+    const qc_motif *m = &r->set->m[sp->motif];
+    qc_vec2 *h = r->buf + r->nbuf;
+    size_t i;
+
+    for (i = 0; i < m->nhull; i++)
+        h[i] = qc__xf_apply(&sp->xf, m->hull[i]);
+    return h;
+}
+
 /* Tries motif m at a along dir scaled k: places it (1) or not (0). */
 static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint32_t seg,
                      double t, int *rc)
@@ -120,8 +139,13 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
         body[i] = qc__xf_apply(&f, sh->body[i]);
     if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
         return 0;
-    *rc = QC__RESERVE(r->ctx, r->spots, r->spots_cap, r->nspots + 1);
-    if (*rc == QC_OK)
+    /* past make_grid's guess, by a quarter: 72 bytes a spot, a million spots */
+    *rc = r->nspots < r->spots_cap ? QC_OK
+                                   : QC__RESERVE_EXACT(r->ctx, r->spots, r->spots_cap,
+                                                       r->spots_cap + r->spots_cap / 4 + 16);
+    if (*rc == QC_OK && r->tile == NULL) /* the spot, filled below, keeps its vertices */
+        *rc = qc__cgrid_add_shape(r->ctx, &r->grid, full, nf, K_MOTIF, (uint32_t)r->nspots);
+    else if (*rc == QC_OK)
         *rc = grid_add(r, full, nf, K_MOTIF, (uint32_t)r->nspots);
     if (*rc == QC_OK && r->pl != NULL) {
         for (i = 0; i < nf && *rc == QC_OK; i++)
@@ -371,11 +395,13 @@ static int build_vine(run *r)
     const qc_skeleton *skel = r->skel;
     size_t i;
 
+    /* exactly: a doubling's slack would be the peak's at 10^6 points */
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->pts.v, r->pts.cap, skel->norder));
     for (i = 0; i < skel->norder; i++)
         QC__TRY(qc_points_push(r->ctx, &r->pts, skel->p[skel->order[i]]));
     /* room for the whole vine at once */
-    QC__TRY(QC__RESERVE(r->ctx, r->vine.cmd, r->vine.cmd_cap, r->pts.n + 1));
-    QC__TRY(QC__RESERVE(r->ctx, r->vine.pt, r->vine.pt_cap, 3 * r->pts.n + 1));
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->vine.cmd, r->vine.cmd_cap, r->pts.n + 1));
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->vine.pt, r->vine.pt_cap, 3 * r->pts.n + 1));
     QC__TRY(qc_curve_catmull_rom(r->ctx, r->pts.v, r->pts.n, skel->edges == NULL, &r->vine));
     if (r->tile != NULL)
         qc__btile_flat_ports(r->tile, &r->vine);
@@ -386,12 +412,26 @@ static int build_vine(run *r)
     return QC_OK;
 }
 
+/* How many chords stand for vine cubic j: within about VINE_TOL s of the
+ * curve (n^2 >= dev / tol), 1 to 256. */
+static size_t vine_chords(const run *r, size_t j)
+{
+    const qc_vec2 *q = r->vine.pt + 3 * j; /* MOVE point + 3 per cubic */
+    double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
+    double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
+    double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
+    size_t nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
+
+    return nk < 1 ? 1 : nk > MAX_CHORDS ? MAX_CHORDS : nk;
+}
+
 /* The collision grid over the region and the vine, s beyond both. */
 static int make_grid(run *r)
 {
     const qc_path *vine = &r->vine;
     qc_bbox b = qc_region_bbox(r->region), vb = qc__points_bbox(vine->pt, vine->npt);
-    size_t nseg = r->nseg, nv = r->region->nv;
+    size_t nseg = r->nseg, nv = r->region->nv, spots = nseg + nseg / 8 + 16, chords = 0, hull = 0;
+    size_t j;
     double s = r->s;
 
     /* the control points bound the curve */
@@ -400,33 +440,47 @@ static int make_grid(run *r)
     b.max.x = fmax(b.max.x, vb.max.x) + s;
     b.max.y = fmax(b.max.y, vb.max.y) + s;
     QC__TRY(qc__cgrid_init(r->ctx, &r->grid, b, s, 16 * r->skel->norder + 4096));
-    QC__TRY(QC__RESERVE(r->ctx, r->spots, r->spots_cap, nseg + 16));
-    /* a guess at the vine's chords and the motifs: fewer regrowths */
-    return qc__cgrid_reserve(r->ctx, &r->grid, 4 * nseg + nv + 64, 16 * nseg + 2 * nv + 1024,
-                             12 * nseg + 4 * nv + 256);
+    r->grid.shape = placed_hull;
+    r->grid.shape_ud = r;
+    for (j = 0; j < nseg; j++)
+        chords += vine_chords(r, j);
+    for (j = 0; j < r->nchoice; j++)
+        hull = r->set->m[r->choice[j]].nhull > hull ? r->set->m[r->choice[j]].nhull : hull;
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, r->spots, r->spots_cap, spots));
+    /* the vine's chains exactly, a guess at the motifs (1.04 per cubic on
+     * a 3 m block, 1.09 on a 10 m one; the grid and the spots grow by a
+     * quarter past it) */
+    if (r->tile != NULL)
+        return qc__cgrid_reserve(r->ctx, &r->grid, chords + spots + nv + 64,
+                                 2 * chords + hull * spots + 2 * nv + 1024,
+                                 2 * chords + 6 * spots + 4 * nv + 256);
+    return qc__cgrid_reserve(r->ctx, &r->grid, nseg + spots + nv + 64,
+                             chords + nseg + 2 * nv + 1024, chords / 2 + 4 * spots + 4 * nv + 256);
 }
 
-/* Vine cubic j as short chords (within about VINE_TOL s of the curve:
- * n^2 >= dev / tol) into the grid, and into the placement if asked. */
+/* Vine cubic j as short chords into the grid, and into the placement if asked. */
 static int add_vine_chords(run *r, size_t j)
 {
-    const qc_vec2 *q = r->vine.pt + 3 * j; /* MOVE point + 3 per cubic */
-    double ax = q[0].x - 2 * q[1].x + q[2].x, ay = q[0].y - 2 * q[1].y + q[2].y;
-    double bx = q[1].x - 2 * q[2].x + q[3].x, by = q[1].y - 2 * q[2].y + q[3].y;
-    double dev = 0.75 * sqrt(fmax(ax * ax + ay * ay, bx * bx + by * by));
-    size_t k, nk = (size_t)ceil(sqrt(dev / (VINE_TOL * r->s)));
-    qc_vec2 prev = q[0];
+    const qc_vec2 *q = r->vine.pt + 3 * j;
+    size_t k, nk = vine_chords(r, j);
+    qc_vec2 prev = q[0], *chain = r->chain;
 
-    nk = nk < 1 ? 1 : nk > 256 ? 256 : nk;
+    chain[0] = prev;
     for (k = 1; k <= nk; k++) {
         qc_vec2 e[2];
         e[0] = prev;
         e[1] = qc_cubic_point(q, (double)k / nk);
-        QC__TRY(grid_add(r, e, 2, K_VINE, (uint32_t)j));
+        chain[k] = e[1];
+        if (r->tile != NULL) /* wrapped copies: chord by chord */
+            QC__TRY(grid_add(r, e, 2, K_VINE, (uint32_t)j));
         if (r->pl != NULL)
             QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
         prev = e[1];
     }
+    /* one item for the cubic's chords: a tenth of a million-point vine's
+     * items and half its vertices */
+    if (r->tile == NULL)
+        QC__TRY(qc__cgrid_add_chain(r->ctx, &r->grid, chain, nk + 1, K_VINE, (uint32_t)j));
     if (r->pl != NULL && j + 1 == r->nseg)
         QC__TRY(qc_points_push(r->ctx, &r->pl->vine, prev));
     return QC_OK;
@@ -438,8 +492,9 @@ static int fill_grid(run *r)
     size_t j;
 
     QC__TRY(make_shapes(r));
-    r->buf = qc__alloc_array(r->ctx, r->nbuf, sizeof *r->buf);
-    if (r->buf == NULL)
+    r->buf = qc__alloc_array(r->ctx, 2 * r->nbuf, sizeof *r->buf); /* + placed_hull's */
+    r->chain = qc__alloc_array(r->ctx, MAX_CHORDS + 1, sizeof *r->chain);
+    if (r->buf == NULL || r->chain == NULL)
         return QC_ENOMEM;
     QC__TRY(make_grid(r));
     QC__TRY(qc__cgrid_add_region(r->ctx, &r->grid, r->region, K_BOUND));
@@ -556,8 +611,8 @@ static int reserve_result(const run *r, qc_path *dst)
         nc += r->set->m[r->spots[i].motif].path.ncmd;
         np += r->set->m[r->spots[i].motif].path.npt;
     }
-    QC__TRY(QC__RESERVE(r->ctx, dst->cmd, dst->cmd_cap, nc));
-    return QC__RESERVE(r->ctx, dst->pt, dst->pt_cap, np);
+    QC__TRY(QC__RESERVE_EXACT(r->ctx, dst->cmd, dst->cmd_cap, nc));
+    return QC__RESERVE_EXACT(r->ctx, dst->pt, dst->pt_cap, np);
 }
 
 /* The motif of spot sp as a detour from its attachment and back. */
@@ -579,6 +634,7 @@ static int assemble(run *r, qc_path *dst)
 {
     size_t sp = 0, j, nseg = r->nseg;
 
+    qc__cgrid_free(r->ctx, &r->grid); /* placed: the result need not share the peak with it */
     if (r->nspots > 1)
         qsort(r->spots, r->nspots, sizeof *r->spots, cmp_spot);
     QC__TRY(reserve_result(r, dst));
@@ -611,7 +667,8 @@ static void run_free(run *r)
 
     qc__cgrid_free(ctx, &r->grid);
     free_shapes(r);
-    qc__free(ctx, r->buf, r->nbuf * sizeof *r->buf);
+    qc__free(ctx, r->buf, 2 * r->nbuf * sizeof *r->buf);
+    qc__free(ctx, r->chain, (MAX_CHORDS + 1) * sizeof *r->chain);
     qc__free(ctx, r->spots, r->spots_cap * sizeof *r->spots);
     if (r->set != NULL)
         qc__free(ctx, r->choice, r->set->n * sizeof *r->choice);

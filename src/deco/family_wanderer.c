@@ -24,6 +24,14 @@ typedef struct prim {
     qc_vec2 bis;   /* where the legs' bisector points */
 } prim;
 
+/* A primitive's hull in the grid: its map and motif (the grid asks for
+ * its vertices, hull_of, rather than storing them) and its owner
+ * primitive, or UINT32_MAX once replaced. */
+typedef struct hrec {
+    qc__xf xf;
+    uint32_t m, owner;
+} hrec;
+
 typedef struct cand {
     double score;
     uint32_t m;
@@ -37,7 +45,7 @@ typedef struct wrun {
     size_t nvar;
     double s;
     qc__cgrid grid;
-    uint32_t *rec_owner; /* hull records: owner primitive, or UINT32_MAX when replaced */
+    hrec *rec;           /* the hulls in the grid, by record */
     size_t nrec, rec_cap;
     qc_vec2 *hbuf;
     size_t nhbuf;
@@ -163,7 +171,7 @@ static int skip_seg(void *ud, unsigned kind, uint32_t id, size_t seg)
     const skipctx *s = ud;
     uint32_t next = (s->i + 1) % s->n, prev = (s->i + s->n - 1) % s->n;
     if (kind == K_PRIM) { /* a join starts and ends on its own two primitives */
-        uint32_t owner = s->w->rec_owner[id];
+        uint32_t owner = s->w->rec[id].owner;
         return owner == UINT32_MAX || owner == s->i || owner == next;
     }
     if (kind == K_JOIN) /* neighbouring joins share end points */
@@ -209,18 +217,34 @@ static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
                                   1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN, skip_seg, &sk);
 }
 
+/* The vertices of hull record id, as add_hull put them in the grid. */
+static const qc_vec2 *hull_of(void *ud, uint32_t id)
+{
+    const wrun *w = ud;
+    const hrec *h = &w->rec[id];
+    const qc_motif *m = &w->set->m[h->m];
+    qc_vec2 *v = w->hbuf + w->nhbuf;
+    size_t k;
+
+    for (k = 0; k < m->nhull; k++)
+        v[k] = qc__xf_apply(&h->xf, m->hull[k]);
+    return v;
+}
+
 /* Adds primitive i's hull as a new record. */
 static int add_hull(wrun *w, prim *p, uint32_t owner)
 {
     const qc_motif *m = &w->set->m[p->m];
     size_t k;
 
-    QC__TRY(QC__RESERVE(w->ctx, w->rec_owner, w->rec_cap, w->nrec + 1));
+    QC__TRY(QC__RESERVE(w->ctx, w->rec, w->rec_cap, w->nrec + 1));
     for (k = 0; k < m->nhull; k++)
         w->hbuf[k] = qc__xf_apply(&p->xf, m->hull[k]);
-    QC__TRY(qc__cgrid_add(w->ctx, &w->grid, w->hbuf, m->nhull, K_PRIM, (uint32_t)w->nrec));
-    p->rec = (uint32_t)w->nrec;
-    w->rec_owner[w->nrec++] = owner;
+    w->rec[w->nrec].xf = p->xf;
+    w->rec[w->nrec].m = p->m;
+    w->rec[w->nrec].owner = owner;
+    QC__TRY(qc__cgrid_add_shape(w->ctx, &w->grid, w->hbuf, m->nhull, K_PRIM, (uint32_t)w->nrec));
+    p->rec = (uint32_t)w->nrec++;
     return QC_OK;
 }
 
@@ -300,7 +324,7 @@ static int alloc_run(wrun *w)
         if (w->set->m[i].nhull > maxhull)
             maxhull = w->set->m[i].nhull;
     }
-    w->hbuf = qc__alloc_array(w->ctx, maxhull, sizeof *w->hbuf);
+    w->hbuf = qc__alloc_array(w->ctx, 2 * maxhull, sizeof *w->hbuf); /* + hull_of's */
     if (w->hbuf == NULL)
         return QC_ENOMEM;
     w->nhbuf = maxhull;
@@ -356,8 +380,14 @@ static int make_grid(wrun *w)
     }
     b.min.x -= s; b.min.y -= s; b.max.x += s; b.max.y += s;
     QC__TRY(qc__cgrid_init(w->ctx, &w->grid, b, s, 8 * n + 4096));
-    QC__TRY(qc__cgrid_reserve(w->ctx, &w->grid, (NFLAT + 1) * n + nv,
-                              (2 * NFLAT + w->nhbuf) * n + 2 * nv, (NFLAT * 2 + 4) * n + 4 * nv));
+    w->grid.shape = hull_of;
+    w->grid.shape_ud = w;
+    /* a chain per join, a hull (no vertices) per primitive and per
+     * replacement (a few percent): exactly, as a regrowth doubles arrays
+     * of millions */
+    QC__TRY(qc__cgrid_reserve(w->ctx, &w->grid, 2 * n + n / 16 + nv + 64,
+                              (NFLAT + 1) * n + 2 * nv + 1024,
+                              8 * n + 4 * nv + 256));
     return qc__cgrid_add_region(w->ctx, &w->grid, w->region, K_BOUND);
 }
 
@@ -412,7 +442,7 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
         if (qc__cgrid_hit(&w->grid, w->hbuf, m->nhull, 1u << K_JOIN | 1u << K_BOUND, skip_fn, &sk))
             continue;
         if (try_join(w, &w->pr[i], &q, w->l, i, w->n, c1, c2, f)) {
-            w->rec_owner[w->pr[j].rec] = UINT32_MAX;
+            w->rec[w->pr[j].rec].owner = UINT32_MAX;
             w->pr[j] = q;
             QC__TRY(add_hull(w, &w->pr[j], (uint32_t)j));
             return 1;
@@ -425,7 +455,7 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
 static int sew_step(wrun *w, size_t i, qc_path *out)
 {
     prim *pr = w->pr;
-    size_t n = w->n, j = (i + 1) % n, k;
+    size_t n = w->n, j = (i + 1) % n;
     qc_vec2 c1, c2, f[NFLAT + 1];
     int ok;
 
@@ -442,8 +472,7 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
         join_ctrl(&pr[i], &pr[j], w->l, &c1, &c2);
         flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
     }
-    for (k = 0; k < NFLAT; k++)
-        QC__TRY(qc__cgrid_add(w->ctx, &w->grid, f + k, 2, K_JOIN, (uint32_t)i));
+    QC__TRY(qc__cgrid_add_chain(w->ctx, &w->grid, f, NFLAT + 1, K_JOIN, (uint32_t)i));
     return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
 }
 
@@ -464,8 +493,8 @@ static void wrun_free(wrun *w)
     qc_ctx *ctx = w->ctx;
 
     qc__cgrid_free(ctx, &w->grid);
-    qc__free(ctx, w->rec_owner, w->rec_cap * sizeof *w->rec_owner);
-    qc__free(ctx, w->hbuf, w->nhbuf * sizeof *w->hbuf);
+    qc__free(ctx, w->rec, w->rec_cap * sizeof *w->rec);
+    qc__free(ctx, w->hbuf, 2 * w->nhbuf * sizeof *w->hbuf);
     qc__free(ctx, w->pr, w->n * sizeof *w->pr);
     if (w->set != NULL)
         qc__free(ctx, w->var, w->set->n * sizeof *w->var);

@@ -8,6 +8,11 @@
 
 #include "deco_internal.h"
 
+/* A chain's segment is filed under the cells its box meets, except those
+ * already filed for the CHAIN_WINDOW segments before it (a duplicate entry
+ * costs a little room, never an answer: queries stamp each item once). */
+#define CHAIN_WINDOW 8
+
 static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 {
     size_t i;
@@ -85,42 +90,144 @@ static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
     }
 }
 
-int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
-                  unsigned kind, uint32_t id)
+/* Room for need elements, growing by a quarter past the owner's
+ * reservation (qc__cgrid_reserve) rather than doubling: at 10^6 points
+ * these arrays are hundreds of MB and the reservation is close. */
+static int grow(qc_ctx *ctx, void **p, size_t *cap, size_t need, size_t elem)
 {
-    qc_bbox b;
-    uint32_t r[4], x, y;
+    size_t want = *cap + *cap / 4 + 64;
+
+    if (need <= *cap)
+        return QC_OK;
+    return qc__reserve_exact(ctx, p, cap, want > need ? want : need, elem);
+}
+
+#define GROW(ctx, arr, capv, need) grow((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+
+/* Room for one more item of n vertices. */
+static int item_room(qc_ctx *ctx, qc__cgrid *g, size_t n)
+{
     if (n == 0 || n > 65535 || g->nitem >= UINT32_MAX - 1 || g->nv + n >= UINT32_MAX)
         return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
-    if (QC__RESERVE(ctx, g->v, g->v_cap, g->nv + n) < 0)
+    if (GROW(ctx, g->v, g->v_cap, g->nv + n) < 0)
         return QC_ENOMEM;
-    if (QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + 1) < 0)
+    if (GROW(ctx, g->item, g->item_cap, g->nitem + 1) < 0)
         return QC_ENOMEM;
-    if (QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
+    if (GROW(ctx, g->stamp, g->stamp_cap, g->nitem + 1) < 0)
         return QC_ENOMEM;
-    poly_box(poly, n, &b);
-    cell_range(g, &b, r);
-    for (y = r[1]; y <= r[3]; y++) {
-        for (x = r[0]; x <= r[2]; x++) {
-            size_t c = (size_t)y * g->nx + x;
-            if (g->nent >= UINT32_MAX - 1)
-                return qc__fail(ctx, QC_ELIMIT, "collision grid full");
-            if (QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
-                return QC_ENOMEM;
-            g->ent[g->nent].item = (uint32_t)g->nitem;
-            g->ent[g->nent].next = g->head[c];
-            g->head[c] = (uint32_t)g->nent++;
-        }
-    }
+    return QC_OK;
+}
+
+/* Files the next item under cell (x, y). */
+static int enter(qc_ctx *ctx, qc__cgrid *g, uint32_t x, uint32_t y)
+{
+    size_t c = (size_t)y * g->nx + x;
+
+    if (g->nent >= UINT32_MAX - 1)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid full");
+    if (GROW(ctx, g->ent, g->ent_cap, g->nent + 1) < 0)
+        return QC_ENOMEM;
+    g->ent[g->nent].item = (uint32_t)g->nitem;
+    g->ent[g->nent].next = g->head[c];
+    g->head[c] = (uint32_t)g->nent++;
+    return QC_OK;
+}
+
+/* Stores the next item's vertices and fields. */
+static void store(qc__cgrid *g, const qc_vec2 *poly, size_t n, const qc_bbox *b, unsigned kind,
+                  int chain, uint32_t id)
+{
     memcpy(g->v + g->nv, poly, n * sizeof *poly);
-    g->item[g->nitem].box = b;
+    g->item[g->nitem].box = *b;
     g->item[g->nitem].off = (uint32_t)g->nv;
     g->item[g->nitem].n = (uint16_t)n;
     g->item[g->nitem].kind = (uint8_t)kind;
+    g->item[g->nitem].chain = (uint8_t)chain;
     g->item[g->nitem].id = id;
     g->stamp[g->nitem] = 0;
     g->nitem++;
     g->nv += n;
+}
+
+/* A polygon item (shape 0) or a shape item (1: no vertices stored). */
+static int add_polygon(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kind,
+                       uint32_t id, int shape)
+{
+    qc_bbox b;
+    uint32_t r[4], x, y;
+
+    if (n == 0 || n > 65535)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid item of %zu vertices", n);
+    QC__TRY(item_room(ctx, g, shape ? 1 : n));
+    poly_box(poly, n, &b);
+    cell_range(g, &b, r);
+    for (y = r[1]; y <= r[3]; y++)
+        for (x = r[0]; x <= r[2]; x++)
+            QC__TRY(enter(ctx, g, x, y));
+    if (!shape) {
+        store(g, poly, n, &b, kind, 0, id);
+        return QC_OK;
+    }
+    store(g, poly, 0, &b, kind, 2, id);
+    g->item[g->nitem - 1].n = (uint16_t)n;
+    return QC_OK;
+}
+
+int qc__cgrid_add(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                  unsigned kind, uint32_t id)
+{
+    return add_polygon(ctx, g, poly, n, kind, id, 0);
+}
+
+int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n,
+                        unsigned kind, uint32_t id)
+{
+    if (g->shape == NULL)
+        return qc__fail(ctx, QC_EINVAL, "collision grid: a shape item without a shape callback");
+    return add_polygon(ctx, g, poly, n, kind, id, 1);
+}
+
+/* Whether cell (x, y) lies in one of the k cell ranges r. */
+static int in_ranges(const uint32_t (*r)[4], size_t k, uint32_t x, uint32_t y)
+{
+    size_t i;
+
+    for (i = 0; i < k; i++)
+        if (x >= r[i][0] && x <= r[i][2] && y >= r[i][1] && y <= r[i][3])
+            return 1;
+    return 0;
+}
+
+int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
+                        unsigned kind, uint32_t id)
+{
+    qc_bbox b;
+    size_t k;
+
+    uint32_t r[CHAIN_WINDOW + 1][4], x, y; /* r[k % (CHAIN_WINDOW + 1)]: segment k's */
+
+    if (n < 2 || n > 65535)
+        return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
+    QC__TRY(item_room(ctx, g, n));
+    for (k = 0; k + 1 < n; k++) {
+        uint32_t *rk = r[k % (CHAIN_WINDOW + 1)];
+        size_t before = k < CHAIN_WINDOW ? k : CHAIN_WINDOW, i;
+        qc_bbox sb;
+
+        poly_box(pts + k, 2, &sb);
+        cell_range(g, &sb, rk);
+        for (y = rk[1]; y <= rk[3]; y++)
+            for (x = rk[0]; x <= rk[2]; x++) {
+                int filed = 0;
+                for (i = 1; i <= before && !filed; i++)
+                    filed = in_ranges((const uint32_t(*)[4])r + (k - i) % (CHAIN_WINDOW + 1),
+                                      1, x, y);
+                if (!filed)
+                    QC__TRY(enter(ctx, g, x, y));
+            }
+    }
+    poly_box(pts, n, &b);
+    store(g, pts, n, &b, kind, 1, id);
     return QC_OK;
 }
 
@@ -258,6 +365,29 @@ static const qc__cgrid_item *candidates_next(candidates *c)
     }
 }
 
+/* Whether poly (box b) touches item m: a chain's segments one by one, each
+ * behind its own box test, as if each were an item. */
+static int item_touch(const qc__cgrid *g, const qc__cgrid_item *m, const qc_vec2 *poly, size_t n,
+                      const qc_bbox *b)
+{
+    const qc_vec2 *v = g->v + m->off;
+    size_t k;
+
+    if (boxes_apart(b, &m->box, 1e-9))
+        return 0;
+    if (m->chain == 2)
+        return sat_touch(poly, n, g->shape(g->shape_ud, m->id), m->n, 1e-9);
+    if (!m->chain)
+        return sat_touch(poly, n, v, m->n, 1e-9);
+    for (k = 0; k + 1 < m->n; k++) {
+        qc_bbox sb;
+        poly_box(v + k, 2, &sb);
+        if (!boxes_apart(b, &sb, 1e-9) && sat_touch(poly, n, v + k, 2, 1e-9))
+            return 1;
+    }
+    return 0;
+}
+
 int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
                   qc__cgrid_skip skip, void *ud)
 {
@@ -272,7 +402,7 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     while ((m = candidates_next(&c)) != NULL) {
         if (skip != NULL && skip(ud, m->kind, m->id))
             continue;
-        if (!boxes_apart(&b, &m->box, 1e-9) && sat_touch(poly, n, g->v + m->off, m->n, 1e-9))
+        if (item_touch(g, m, poly, n, &b))
             return 1;
     }
     return 0;
@@ -296,10 +426,10 @@ int qc__cgrid_add_region(qc_ctx *ctx, qc__cgrid *g, const qc_region *region, uns
 
 int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, size_t entries)
 {
-    QC__TRY(QC__RESERVE(ctx, g->item, g->item_cap, g->nitem + items));
-    QC__TRY(QC__RESERVE(ctx, g->stamp, g->stamp_cap, g->nitem + items));
-    QC__TRY(QC__RESERVE(ctx, g->v, g->v_cap, g->nv + verts));
-    return QC__RESERVE(ctx, g->ent, g->ent_cap, g->nent + entries);
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->item, g->item_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->stamp, g->stamp_cap, g->nitem + items));
+    QC__TRY(QC__RESERVE_EXACT(ctx, g->v, g->v_cap, g->nv + verts));
+    return QC__RESERVE_EXACT(ctx, g->ent, g->ent_cap, g->nent + entries);
 }
 
 int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
@@ -324,7 +454,7 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
                 continue;
             if (skip != NULL && skip(ud, m->kind, m->id, k))
                 continue;
-            if (sat_touch(pts + k, 2, g->v + m->off, m->n, 1e-9))
+            if (item_touch(g, m, pts + k, 2, &sb))
                 return 1;
         }
     }

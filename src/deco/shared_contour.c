@@ -68,12 +68,10 @@ int qc__contour_build(qc_ctx *ctx, const qc_region *region, double d, double mar
     if (!(d > 0.0) || !isfinite(d))
         return qc__fail(ctx, QC_ERANGE, "%s: spacing %g mm must be > 0", who, d);
     c->l0 = fmax(margin, MIN_MARGIN * d);
+    if (qc__sdf_step(region, GRID * d) > 0.5 * d) /* before the grid is allocated */
+        return qc__fail(ctx, QC_ELIMIT, "%s: spacing %g mm is too fine for a region this "
+                        "size (grid %g mm)", who, d, qc__sdf_step(region, GRID * d));
     QC__TRY(qc__sdf_build(ctx, region, GRID * d, &c->sdf));
-    if (c->sdf.h > 0.5 * d) {
-        rc = qc__fail(ctx, QC_ELIMIT, "%s: spacing %g mm is too fine for a region this "
-                      "size (grid %g mm)", who, d, c->sdf.h);
-        goto fail;
-    }
     c->vmax = qc__sdf_max(&c->sdf, &c->at_max);
     if (!(c->vmax > c->l0)) {
         rc = qc__fail(ctx, QC_EEMPTY, "%s: no ring fits inside the margin of %g mm "
