@@ -308,6 +308,43 @@ static void test_sashing_and_border_should_be_sewn_as_one_line(void)
     sew_top("tests/data/quilt/sashing.svg", 43);
 }
 
+/* Proper self-crossings of the whole sewn line, flattened as the tests do. */
+static size_t line_crossings(const qc_path *path)
+{
+    qc_points flat = {0};
+    qc_order ends = {0};
+    size_t n = 0;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.05, &flat, &ends));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v, flat.n, 0, &n));
+    qc_points_free(&ctx, &flat);
+    qc_order_free(&ctx, &ends);
+    return n;
+}
+
+/* A vine running along a seam, or a pebble hugging it, lies between the
+ * piece's end and its nearest seam point: the straight link in or out
+ * must reach the seam elsewhere rather than cross the pattern (on main,
+ * log-cabin crossed itself 2 times with vine and 4 with pebbling). */
+static void test_links_to_the_seams_should_not_cross_the_pattern(void)
+{
+    static const int family[] = {QC_FAMILY_VINE, QC_FAMILY_PEBBLING};
+    qc_patches ps;
+    qc_quilt_result res;
+    qc_params p;
+    size_t f;
+
+    read_top("tests/data/quilt/log-cabin.svg", &ps);
+    for (f = 0; f < sizeof family / sizeof family[0]; f++) {
+        quilt_all(&ps, family[f], QC_JOIN_DITCH, &p, &res);
+        TEST_ASSERT_EQUAL_size_t(1, qc_path_pieces(&res.path));
+        TEST_ASSERT_EQUAL_size_t(0, line_crossings(&res.path));
+        assert_sewn_inside(&ps, &res.path);
+        qc_quilt_result_free(&ctx, &res);
+    }
+    qc_patches_free(&ctx, &ps);
+}
+
 static void test_join_jump_should_start_a_piece_per_patch(void)
 {
     qc_patches ps;
@@ -607,6 +644,7 @@ int main(void)
     RUN_TEST(test_log_cabin_should_be_sewn_as_one_line_in_the_ditch);
     RUN_TEST(test_drunkards_path_curved_seams_should_be_sewn_as_one_line);
     RUN_TEST(test_sashing_and_border_should_be_sewn_as_one_line);
+    RUN_TEST(test_links_to_the_seams_should_not_cross_the_pattern);
     RUN_TEST(test_join_jump_should_start_a_piece_per_patch);
     RUN_TEST(test_each_patch_should_get_its_own_family_and_none_stays_empty);
     RUN_TEST(test_same_seed_should_give_the_same_line);

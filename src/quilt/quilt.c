@@ -136,14 +136,24 @@ static int travel_to(quilter *q, qc__seam_pt b, int *ok)
     return QC_OK;
 }
 
+/* The seam point a link from p reaches: the nearest with QC_JOIN_JUMP (no
+ * link is sewn), else one whose link crosses none of the pattern. */
+static qc__seam_pt link_pt(const quilter *q, size_t i, const qc__links *lk, qc_vec2 p)
+{
+    if (q->join == QC_JOIN_JUMP)
+        return qc__seams_nearest(&q->seams, i, p);
+    return qc__links_seam_pt(lk, &q->seams, &q->ps->p[i].region, i, p);
+}
+
 /* Sews one piece of patch i's pattern (path commands [c0, c1), their
  * points from k0): along the seams from where the line is to the boundary
  * point nearest the piece's start, a straight stitch in, the piece, a
  * straight stitch out to the boundary point nearest its end. */
-static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t c1, size_t k0)
+static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t c1, size_t k0,
+                     const qc__links *lk)
 {
     qc_vec2 s = pat->pt[k0], t;
-    qc__seam_pt b = qc__seams_nearest(&q->seams, i, s), e;
+    qc__seam_pt b = link_pt(q, i, lk, s), e;
     size_t c, k = k0 + 1;
     int ok = 0, jump = q->join == QC_JOIN_JUMP || !q->started;
 
@@ -172,7 +182,7 @@ static int sew_piece(quilter *q, size_t i, const qc_path *pat, size_t c0, size_t
         }
     }
     t = pat->pt[k - 1];
-    e = qc__seams_nearest(&q->seams, i, t);
+    e = link_pt(q, i, lk, t);
     if (q->join != QC_JOIN_JUMP) {
         QC__TRY(qc_path_line_to(q->ctx, &q->out->path, e.p));
         q->out->link_mm += dist(t, e.p);
@@ -270,11 +280,13 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
     const qc_patch_job *job = &q->jobs[i];
     qc_params p = *job->params;
     qc_result res;
+    qc__links lk;
     qc_patch_result *pr = &q->out->patch[i];
     size_t c, c0 = 0, k = 0, k0 = 0;
     int rc;
 
     memset(&res, 0, sizeof res);
+    memset(&lk, 0, sizeof lk);
     p.seed += (uint64_t)i; /* equal patches get different patterns */
     QC__TRY(qc_params_set(q->ctx, &p, "start-x", entry.x));
     QC__TRY(qc_params_set(q->ctx, &p, "start-y", entry.y));
@@ -303,16 +315,18 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
     pr->farthest_fabric_mm = res.stats.farthest_fabric_mm;
     pr->seam_bare = res.stats.seam_bare;
     pr->pieces = qc_path_pieces(&res.path);
+    rc = q->join == QC_JOIN_JUMP ? QC_OK : qc__links_init(q->ctx, &res.path, &lk);
     for (c = 0; c <= res.path.ncmd && rc >= 0; c++) {
         if (c == res.path.ncmd || (res.path.cmd[c] == QC_PATH_MOVE && c > c0)) {
             if (c > c0)
-                rc = sew_piece(q, i, &res.path, c0, c, k0);
+                rc = sew_piece(q, i, &res.path, c0, c, k0, &lk);
             c0 = c;
             k0 = k;
         }
         if (c < res.path.ncmd)
             k += qc_path_cmd_points(res.path.cmd[c]);
     }
+    qc__links_free(q->ctx, &lk);
     qc_result_free(q->ctx, &res);
     return rc;
 }

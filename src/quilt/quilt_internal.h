@@ -60,4 +60,22 @@ QC__HIDDEN int qc__seam_dist_from(qc_ctx *ctx, const qc__seams *s, qc__seam_dist
 QC__HIDDEN double qc__seam_travel(qc_ctx *ctx, const qc__seams *s, const qc__seam_dist *sd,
                                   qc__seam_pt to, qc_points *path, int *rc);
 
+/* A patch's pattern flattened, its segments in a grid (links.c): for the
+ * straight links between the pattern and the seams. */
+typedef struct qc__links {
+    qc_points flat;
+    qc_order ends;  /* where each piece of flat ends */
+    qc__seg_grid grid;
+    int have_grid;
+} qc__links;
+
+QC__HIDDEN int qc__links_init(qc_ctx *ctx, const qc_path *pattern, qc__links *lk);
+QC__HIDDEN void qc__links_free(qc_ctx *ctx, qc__links *lk);
+/* The seam point of patch `patch` (its region) to link p to: the nearest
+ * when that link crosses no pattern segment, else the nearest of a bounded
+ * number of others whose link crosses none and stays inside the patch,
+ * else the nearest. */
+QC__HIDDEN qc__seam_pt qc__links_seam_pt(const qc__links *lk, const qc__seams *s,
+                                         const qc_region *region, size_t patch, qc_vec2 p);
+
 #endif
