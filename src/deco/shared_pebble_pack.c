@@ -832,16 +832,38 @@ static int phase2(pack *P)
     return QC_OK;
 }
 
+/*
+ * Every pebble's contacts (pebbles and boundary), each touching pair tested
+ * once: from the pebble whose cell comes first (row by row), over the
+ * cells from its own onwards; within one cell, from the lower id. The
+ * pair's test is symmetric and either pebble's box holds the other.
+ */
 static void count_contacts(pack *P)
 {
     qc__pebbles *pb = P->pb;
     size_t i;
 
+    for (i = 0; i < pb->n; i++)
+        pb->contacts[i] = 0;
     for (i = 0; i < pb->n; i++) {
-        uint32_t ids[3];
+        qc_vec2 x = pb->c[i];
+        double ri = pb->r[i];
+        uint32_t c0 = P->cellof[i], c0x = c0 % P->nx, c0y = c0 / P->nx, j;
+        uint32_t r[4], cx, cy;
         int bound;
-        unsigned cnt = contacts(P, (uint32_t)i, ids, &bound, UINT_MAX) + (unsigned)bound;
-        pb->contacts[i] = (unsigned char)(cnt > 255 ? 255 : cnt);
+
+        cell_box(P, x, ri + P->rmax + pb->touch, r);
+        r[1] = c0y;
+        FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
+            double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
+            double far = ri + pb->r[j] + pb->touch;
+            if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
+                continue;
+            pb->contacts[i] += pb->contacts[i] < 255;
+            pb->contacts[j] += pb->contacts[j] < 255;
+        }
+        bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
+        pb->contacts[i] += (unsigned char)(bound && pb->contacts[i] < 255);
     }
 }
 
