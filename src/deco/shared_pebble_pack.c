@@ -704,8 +704,7 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
 
     for (ring = 0; ring <= maxring; ring++) {
         double reach = MOVE_MAX * P->d;
-        uint32_t q;
-        uint32_t r[4], cx, cy;
+        uint32_t r[4], cy;
 
         if (pair_centre(pb, j, k, R, s, &x))
             reach = fmin(reach, dist(x, ci));
@@ -713,18 +712,27 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
         if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
             break;
         ring_box(P, c0x, c0y, ring, r);
-        /* the cells on the ring's edge: its inside was walked already */
-        FOR_EACH_PEBBLE_IF(P, r, cx, cy, q, cx + ring == c0x || cx == c0x + ring ||
-                                               cy + ring == c0y || cy == c0y + ring) {
-            double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
-            double far = reach + pb->r[q];
-            if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
-                continue;
-            rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
-            if (rq < 0)
-                return -1;
-            if (rq < R)
-                R = rq;
+        /* the cells on the ring's edge, row by row (its inside was walked
+         * already): whole rows at the top and bottom, else its two ends */
+        for (cy = r[1]; cy <= r[3]; cy++) {
+            int whole = cy + ring == c0y || cy == c0y + ring;
+            uint32_t cx = whole || c0x >= ring ? r[0] : r[2];
+            for (; cx <= r[2]; cx = whole || cx == r[2] ? cx + 1 : r[2]) {
+                uint32_t q;
+                if (!whole && cx != c0x - ring && cx != c0x + ring)
+                    break;
+                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
+                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
+                    double far = reach + pb->r[q];
+                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                        continue;
+                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+                    if (rq < 0)
+                        return -1;
+                    if (rq < R)
+                        R = rq;
+                }
+            }
         }
     }
     return R;
@@ -836,35 +844,38 @@ static int phase2(pack *P)
  * Every pebble's contacts (pebbles and boundary), each touching pair tested
  * once: from the pebble whose cell comes first (row by row), over the
  * cells from its own onwards; within one cell, from the lower id. The
- * pair's test is symmetric and either pebble's box holds the other.
+ * pair's test is symmetric and either pebble's box holds the other. The
+ * pebbles are taken cell by cell, so the neighbours walked are the ones
+ * walked just before (in cache).
  */
 static void count_contacts(pack *P)
 {
     qc__pebbles *pb = P->pb;
-    size_t i;
+    uint32_t c0x, c0y, i;
 
-    for (i = 0; i < pb->n; i++)
-        pb->contacts[i] = 0;
-    for (i = 0; i < pb->n; i++) {
-        qc_vec2 x = pb->c[i];
-        double ri = pb->r[i];
-        uint32_t c0 = P->cellof[i], c0x = c0 % P->nx, c0y = c0 / P->nx, j;
-        uint32_t r[4], cx, cy;
-        int bound;
+    memset(pb->contacts, 0, pb->n * sizeof *pb->contacts);
+    for (c0y = 0; c0y < P->ny; c0y++)
+        for (c0x = 0; c0x < P->nx; c0x++)
+            for (i = P->head[c0y * P->nx + c0x]; i != QC__PEB_NONE; i = P->next[i]) {
+                qc_vec2 x = pb->c[i];
+                double ri = pb->r[i];
+                uint32_t r[4], cx, cy, j;
+                int bound;
 
-        cell_box(P, x, ri + P->rmax + pb->touch, r);
-        r[1] = c0y;
-        FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
-            double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
-            double far = ri + pb->r[j] + pb->touch;
-            if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
-                continue;
-            pb->contacts[i] += pb->contacts[i] < 255;
-            pb->contacts[j] += pb->contacts[j] < 255;
-        }
-        bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
-        pb->contacts[i] += (unsigned char)(bound && pb->contacts[i] < 255);
-    }
+                cell_box(P, x, ri + P->rmax + pb->touch, r);
+                r[1] = c0y;
+                FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
+                    double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
+                    double far = ri + pb->r[j] + pb->touch;
+                    if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
+                        continue;
+                    pb->contacts[i] += pb->contacts[i] < 255;
+                    pb->contacts[j] += pb->contacts[j] < 255;
+                }
+                bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <=
+                        pb->k * ri + pb->touch;
+                pb->contacts[i] += (unsigned char)(bound && pb->contacts[i] < 255);
+            }
 }
 
 /* ---- what phase 3 (shared_pebble_reach.c) asks of the packing ---- */
