@@ -19,12 +19,81 @@
 #define DRAW_IN 0.05  /* motifs kept this many mm inside their pebble and the region ... */
 #define DRAW_IN_D 0.01 /* ... or this fraction of d when smaller */
 
-/* Where on motif m (unit frame) is nearest x: command *cmd at parameter *t. */
-static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
+/* The SAMPLES + 1 points of every cubic of every motif in the set (unit
+ * frame), computed once: each attachment only compares distances. */
+typedef struct samples {
+    qc_vec2 *pt;
+    size_t *first; /* per motif, its first sample */
+    size_t npt;    /* the samples (npt + 1 allocated) */
+} samples;
+
+static void samples_free(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
+{
+    qc__free(ctx, sm->pt, (sm->npt + 1) * sizeof *sm->pt);
+    qc__free(ctx, sm->first, (set->n + 1) * sizeof *sm->first);
+    memset(sm, 0, sizeof *sm);
+}
+
+static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
+{
+    size_t i, j, n = 0;
+
+    memset(sm, 0, sizeof *sm);
+    sm->first = qc__alloc_array(ctx, set->n + 1, sizeof *sm->first);
+    if (sm->first == NULL)
+        return QC_ENOMEM;
+    for (i = 0; i < set->n; i++) {
+        const qc_path *p = &set->m[i].path;
+        sm->first[i] = n;
+        for (j = 1; j < p->ncmd; j++)
+            n += p->cmd[j] == QC_PATH_CUBIC ? SAMPLES + 1 : 0;
+    }
+    sm->first[set->n] = n;
+    sm->npt = n;
+    sm->pt = qc__alloc_array(ctx, n + 1, sizeof *sm->pt); /* + 1: never empty */
+    if (sm->pt == NULL) {
+        samples_free(ctx, set, sm);
+        return QC_ENOMEM;
+    }
+    for (i = 0; i < set->n; i++) {
+        const qc_path *p = &set->m[i].path;
+        qc_vec2 *out = sm->pt + sm->first[i], cur;
+        size_t k;
+        if (p->ncmd == 0)
+            continue;
+        k = qc_path_cmd_points(p->cmd[0]);
+        cur = p->pt[0];
+        for (j = 1; j < p->ncmd; j++) {
+            const qc_vec2 *q = p->pt + k;
+            k += qc_path_cmd_points(p->cmd[j]);
+            if (p->cmd[j] == QC_PATH_CUBIC) {
+                qc_vec2 c[4];
+                int s;
+                c[0] = cur;
+                c[1] = q[0];
+                c[2] = q[1];
+                c[3] = q[2];
+                for (s = 0; s <= SAMPLES; s++)
+                    *out++ = qc_cubic_point(c, (double)s / SAMPLES);
+                cur = q[2];
+            } else {
+                cur = q[0];
+            }
+        }
+    }
+    return QC_OK;
+}
+
+/* Where on motif m (unit frame; its cubics sampled at smp) is nearest x:
+ * command *cmd at parameter *t. The squared distance sorts out the farther
+ * samples; sqrt only where it may decide (as strict as before, so ties
+ * still keep the first). */
+static void nearest_on(const qc_motif *m, const qc_vec2 *smp, qc_vec2 x, uint32_t *cmd,
+                       double *t)
 {
     const qc_path *p = &m->path;
     size_t j, k = qc_path_cmd_points(p->cmd[0]);
-    double best = HUGE_VAL;
+    double best = HUGE_VAL, best2 = HUGE_VAL;
     qc_vec2 cur = p->pt[0];
 
     *cmd = 1;
@@ -33,17 +102,15 @@ static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
         const qc_vec2 *q = p->pt + k;
         k += qc_path_cmd_points(p->cmd[j]);
         if (p->cmd[j] == QC_PATH_CUBIC) {
-            qc_vec2 c[4];
             int s;
-            c[0] = cur;
-            c[1] = q[0];
-            c[2] = q[1];
-            c[3] = q[2];
-            for (s = 0; s <= SAMPLES; s++) {
-                qc_vec2 b = qc_cubic_point(c, (double)s / SAMPLES);
-                double dd = qc_hypot(b.x - x.x, b.y - x.y);
+            for (s = 0; s <= SAMPLES; s++, smp++) {
+                double dx = smp->x - x.x, dy = smp->y - x.y, d2 = dx * dx + dy * dy, dd;
+                if (!(d2 < best2))
+                    continue; /* sqrt(d2) >= best */
+                dd = sqrt(d2);
                 if (dd < best) {
                     best = dd;
+                    best2 = d2;
                     *cmd = (uint32_t)j;
                     *t = (double)s / SAMPLES;
                 }
@@ -56,6 +123,7 @@ static void nearest_on(const qc_motif *m, qc_vec2 x, uint32_t *cmd, double *t)
             dd = qc_hypot(cur.x + tt * ex - x.x, cur.y + tt * ey - x.y);
             if (dd < best) {
                 best = dd;
+                best2 = dd * dd;
                 *cmd = (uint32_t)j;
                 *t = tt;
             }
@@ -272,11 +340,13 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
     size_t n = pb->n, i, m = 0;
     att *atts = qc__alloc_array(ctx, n, sizeof *atts);
     uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
+    samples sm;
 
     *atts_out = atts;
     *first_out = first;
     if (atts == NULL || first == NULL)
         return QC_ENOMEM;
+    QC__TRY(samples_init(ctx, set, &sm));
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         qc_vec2 e;
@@ -285,9 +355,11 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
         e = qc__xf_apply(&pb->xf[i], set->m[pb->motif[i]].entry);
         atts[m].parent = p;
         atts[m].kid = (uint32_t)i;
-        nearest_on(&set->m[pb->motif[p]], unmap(&pb->xf[p], e), &atts[m].cmd, &atts[m].t);
+        nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]], unmap(&pb->xf[p], e),
+                   &atts[m].cmd, &atts[m].t);
         m++;
     }
+    samples_free(ctx, set, &sm);
     if (m > 1)
         qsort(atts, m, sizeof *atts, cmp_att);
     memset(first, 0, (n + 1) * sizeof *first);

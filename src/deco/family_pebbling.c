@@ -94,6 +94,12 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
     rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0);
     if (rc == QC_OK)
         rc = QC__RESERVE(ctx, st, cap, 64);
+    /* room for the whole path at once, not by doublings: per pebble at most
+     * 4 + (children + 1) cubics and 2 lines, so 8 commands and 20 points */
+    if (rc == QC_OK)
+        rc = QC__RESERVE(ctx, out->cmd, out->cmd_cap, out->ncmd + 8 * pb->n + 2);
+    if (rc == QC_OK)
+        rc = QC__RESERVE(ctx, out->pt, out->pt_cap, out->npt + 20 * pb->n + 2);
     if (rc == QC_OK) {
         st[0].i = 0;
         st[0].next = first[0];

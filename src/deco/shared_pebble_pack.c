@@ -14,6 +14,7 @@
  * first contact with a pebble or an edge has a closed form. Neighbours come
  * from a uniform grid, so each query is O(1) and the whole run near-linear.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,10 +145,13 @@ static void move_to(pack *P, uint32_t i, qc_vec2 c, double r)
 /*
  * Largest radius (at most cap) of a circle at x touching no pebble (but ex0,
  * ex1, ex2) and keeping its centre k r from the boundary; *arg receives the
- * pebble that limits it, ARG_BOUND or QC__PEB_NONE (cap).
+ * pebble that limits it, ARG_BOUND or QC__PEB_NONE (cap). Once a pebble
+ * brings it below stop, some value below stop (the caller only asks
+ * whether it reaches stop: the rest of the walk and the boundary are
+ * skipped; -HUGE_VAL never stops).
  */
-static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t ex1,
-                        uint32_t ex2, uint32_t *arg)
+static double clearance_to(pack *P, qc_vec2 x, double cap, double stop, uint32_t ex0,
+                           uint32_t ex1, uint32_t ex2, uint32_t *arg)
 {
     const qc__pebbles *pb = P->pb;
     double best = cap, db;
@@ -163,6 +167,8 @@ static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t e
         if (v < best) {
             best = v;
             a = j;
+            if (best < stop)
+                return best; /* only ever lower from here */
         }
     }
     if (best > 0) {
@@ -175,6 +181,12 @@ static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t e
     if (arg != NULL)
         *arg = a;
     return best;
+}
+
+static double clearance(pack *P, qc_vec2 x, double cap, uint32_t ex0, uint32_t ex1,
+                        uint32_t ex2, uint32_t *arg)
+{
+    return clearance_to(P, x, cap, -HUGE_VAL, ex0, ex1, ex2, arg);
 }
 
 /* The circle (x0 + u s, r0 + s): the largest s <= cap touching no pebble
@@ -505,8 +517,10 @@ out:
 
 /* ---- phase 2: growth ---- */
 
-/* Pebbles touching i (up to 3 ids into ids) and whether the boundary does. */
-static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
+/* Pebbles touching i (up to 3 ids into ids) and whether the boundary does.
+ * Past most pebbles the count stops there (most + 1, the boundary not
+ * asked: *bound 0), for callers that want exactly a few. */
+static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsigned most)
 {
     const qc__pebbles *pb = P->pb;
     qc_vec2 x = pb->c[i];
@@ -522,7 +536,10 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound)
             continue;
         if (count < 3)
             ids[count] = j;
-        count++;
+        if (count++ == most) {
+            *bound = 0;
+            return count;
+        }
     }
     *bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <= pb->k * ri + pb->touch;
     return count;
@@ -555,7 +572,7 @@ static int pair_fits(pack *P, uint32_t i, uint32_t j, uint32_t k, double R, doub
 
     if (!pair_centre(pb, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
         return 0;
-    return clearance(P, *at, R, i, j, k, NULL) >= R;
+    return clearance_to(P, *at, R, R, i, j, k, NULL) >= R;
 }
 
 /*
@@ -687,8 +704,7 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
 
     for (ring = 0; ring <= maxring; ring++) {
         double reach = MOVE_MAX * P->d;
-        uint32_t q;
-        uint32_t r[4], cx, cy;
+        uint32_t r[4], cy;
 
         if (pair_centre(pb, j, k, R, s, &x))
             reach = fmin(reach, dist(x, ci));
@@ -696,18 +712,27 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
         if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
             break;
         ring_box(P, c0x, c0y, ring, r);
-        /* the cells on the ring's edge: its inside was walked already */
-        FOR_EACH_PEBBLE_IF(P, r, cx, cy, q, cx + ring == c0x || cx == c0x + ring ||
-                                               cy + ring == c0y || cy == c0y + ring) {
-            double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
-            double far = reach + pb->r[q];
-            if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
-                continue;
-            rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
-            if (rq < 0)
-                return -1;
-            if (rq < R)
-                R = rq;
+        /* the cells on the ring's edge, row by row (its inside was walked
+         * already): whole rows at the top and bottom, else its two ends */
+        for (cy = r[1]; cy <= r[3]; cy++) {
+            int whole = cy + ring == c0y || cy == c0y + ring;
+            uint32_t cx = whole || c0x >= ring ? r[0] : r[2];
+            for (; cx <= r[2]; cx = whole || cx == r[2] ? cx + 1 : r[2]) {
+                uint32_t q;
+                if (!whole && cx != c0x - ring && cx != c0x + ring)
+                    break;
+                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
+                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
+                    double far = reach + pb->r[q];
+                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                        continue;
+                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+                    if (rq < 0)
+                        return -1;
+                    if (rq < R)
+                        R = rq;
+                }
+            }
         }
     }
     return R;
@@ -732,7 +757,7 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
         R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
         done = pair_centre(pb, j, k, R, s, &x) &&
-               clearance(P, x, R, i, j, k, NULL) >= R * (1 - 1e-12);
+               clearance_to(P, x, R, R * (1 - 1e-12), i, j, k, NULL) >= R * (1 - 1e-12);
     }
     if (!done)
         R = pair_search(P, i, j, k, s, &x);
@@ -795,7 +820,7 @@ static int phase2(pack *P)
                 continue;
             for (k = 0; k < nkid[i]; k++)
                 tn[ntn++] = kid2[2 * i + k];
-            cnt = contacts(P, (uint32_t)i, ids, &bound);
+            cnt = contacts(P, (uint32_t)i, ids, &bound, (unsigned)step);
             if (bound || cnt != (unsigned)step)
                 continue;
             /* the tree neighbours must be among the contacts */
@@ -815,17 +840,42 @@ static int phase2(pack *P)
     return QC_OK;
 }
 
+/*
+ * Every pebble's contacts (pebbles and boundary), each touching pair tested
+ * once: from the pebble whose cell comes first (row by row), over the
+ * cells from its own onwards; within one cell, from the lower id. The
+ * pair's test is symmetric and either pebble's box holds the other. The
+ * pebbles are taken cell by cell, so the neighbours walked are the ones
+ * walked just before (in cache).
+ */
 static void count_contacts(pack *P)
 {
     qc__pebbles *pb = P->pb;
-    size_t i;
+    uint32_t c0x, c0y, i;
 
-    for (i = 0; i < pb->n; i++) {
-        uint32_t ids[3];
-        int bound;
-        unsigned cnt = contacts(P, (uint32_t)i, ids, &bound) + (unsigned)bound;
-        pb->contacts[i] = (unsigned char)(cnt > 255 ? 255 : cnt);
-    }
+    memset(pb->contacts, 0, pb->n * sizeof *pb->contacts);
+    for (c0y = 0; c0y < P->ny; c0y++)
+        for (c0x = 0; c0x < P->nx; c0x++)
+            for (i = P->head[c0y * P->nx + c0x]; i != QC__PEB_NONE; i = P->next[i]) {
+                qc_vec2 x = pb->c[i];
+                double ri = pb->r[i];
+                uint32_t r[4], cx, cy, j;
+                int bound;
+
+                cell_box(P, x, ri + P->rmax + pb->touch, r);
+                r[1] = c0y;
+                FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
+                    double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
+                    double far = ri + pb->r[j] + pb->touch;
+                    if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
+                        continue;
+                    pb->contacts[i] += pb->contacts[i] < 255;
+                    pb->contacts[j] += pb->contacts[j] < 255;
+                }
+                bound = qc__pbound_dist(P->b, x, pb->k * ri + 2 * pb->touch) <=
+                        pb->k * ri + pb->touch;
+                pb->contacts[i] += (unsigned char)(bound && pb->contacts[i] < 255);
+            }
 }
 
 /* ---- what phase 3 (shared_pebble_reach.c) asks of the packing ---- */
