@@ -268,19 +268,61 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
     return 0;
 }
 
+/* A convex polygon's edge vectors and lengths, worked out once for all the
+ * segments tested against it (the same arithmetic as per test, so the same
+ * answers); polygons of more than EDGE_CACHE vertices go without. */
+#define EDGE_CACHE 64
+
+typedef struct edges {
+    size_t n;       /* 0: not worked out */
+    double ex[EDGE_CACHE], ey[EDGE_CACHE], el[EDGE_CACHE];
+} edges;
+
+/* e for polygon p, if it has room and is not yet there: e, or NULL. */
+static const edges *edges_of(const qc_vec2 *p, size_t n, edges *e)
+{
+    size_t i;
+
+    if (n < 3 || n > EDGE_CACHE)
+        return NULL;
+    if (e->n == n)
+        return e;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = p[i], b = p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y;
+        e->ex[i] = ex;
+        e->ey[i] = ey;
+        e->el[i] = sqrt(ex * ex + ey * ey);
+    }
+    e->n = n;
+    return e;
+}
+
 /* A segment against a convex CCW polygon in O(n): apart when one edge's
- * outer half-plane holds both ends, or the segment's line misses the polygon. */
-static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps)
+ * outer half-plane holds both ends, or the segment's line misses the
+ * polygon. pe: p's edges, or NULL to work them out here. */
+static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps,
+                          const edges *pe)
 {
     double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl = sqrt(dx * dx + dy * dy);
     double lo, hi, c;
     size_t i;
 
     for (i = 0; i < n; i++) {
-        qc_vec2 a = p[i], b = p[(i + 1) % n];
-        double ex = b.x - a.x, ey = b.y - a.y, el = sqrt(ex * ex + ey * ey);
-        double s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
-        double s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        qc_vec2 a = p[i];
+        double ex, ey, el, s0, s1;
+        if (pe != NULL) {
+            ex = pe->ex[i];
+            ey = pe->ey[i];
+            el = pe->el[i];
+        } else {
+            qc_vec2 b = p[(i + 1) % n];
+            ex = b.x - a.x;
+            ey = b.y - a.y;
+            el = sqrt(ex * ex + ey * ey);
+        }
+        s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
+        s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
         if (s0 < -eps * el && s1 < -eps * el) /* both right of a CCW edge: outside */
             return 1;
     }
@@ -292,18 +334,24 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
     return hi + eps * sl < c || c + eps * sl < lo;
 }
 
-/* SAT once the boxes overlap. */
-static int sat_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+/* SAT once the boxes overlap; ea, eb: a's and b's edges or NULL. */
+static int sat_touch_e(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
+                       const edges *ea, const edges *eb)
 {
     if (na == 2 && nb >= 3)
-        return !seg_poly_apart(a, b, nb, eps);
+        return !seg_poly_apart(a, b, nb, eps, eb);
     if (nb == 2 && na >= 3)
-        return !seg_poly_apart(b, a, na, eps);
+        return !seg_poly_apart(b, a, na, eps, ea);
     if (na >= 2 && separated_by(a, na, b, nb, eps))
         return 0;
     if (nb >= 2 && separated_by(b, nb, a, na, eps))
         return 0;
     return 1;
+}
+
+static int sat_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    return sat_touch_e(a, na, b, nb, eps, NULL, NULL);
 }
 
 int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
@@ -365,27 +413,29 @@ static const qc__cgrid_item *candidates_next(candidates *c)
     }
 }
 
-/* Whether poly (box b) touches item m: a chain's segments one by one, each
- * behind its own box test, as if each were an item. */
-static int item_touch(const qc__cgrid *g, const qc__cgrid_item *m, const qc_vec2 *poly, size_t n,
-                      const qc_bbox *b)
+/* Whether poly (box b, edges pe or NULL) touches item m whose vertices
+ * are v: a chain's segments one by one, each behind its own box test, as
+ * if each were an item. */
+static int item_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_vec2 *poly, size_t n,
+                      const qc_bbox *b, const edges *pe)
 {
-    const qc_vec2 *v = g->v + m->off;
     size_t k;
 
-    if (boxes_apart(b, &m->box, 1e-9))
-        return 0;
-    if (m->chain == 2)
-        return sat_touch(poly, n, g->shape(g->shape_ud, m->id), m->n, 1e-9);
-    if (!m->chain)
-        return sat_touch(poly, n, v, m->n, 1e-9);
+    if (m->chain != 1)
+        return sat_touch_e(poly, n, v, m->n, 1e-9, pe, NULL);
     for (k = 0; k + 1 < m->n; k++) {
         qc_bbox sb;
         poly_box(v + k, 2, &sb);
-        if (!boxes_apart(b, &sb, 1e-9) && sat_touch(poly, n, v + k, 2, 1e-9))
+        if (!boxes_apart(b, &sb, 1e-9) && sat_touch_e(poly, n, v + k, 2, 1e-9, pe, NULL))
             return 1;
     }
     return 0;
+}
+
+/* Item m's vertices: stored, or asked of the shape callback. */
+static const qc_vec2 *item_verts(const qc__cgrid *g, const qc__cgrid_item *m)
+{
+    return m->chain == 2 ? g->shape(g->shape_ud, m->id) : g->v + m->off;
 }
 
 int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
@@ -394,15 +444,22 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     const qc__cgrid_item *m;
     candidates c;
     qc_bbox b;
+    edges pe;
+    const edges *pep = NULL;
 
     if (n == 0 || g->nitem == 0)
         return 0;
+    pe.n = 0;
     poly_box(poly, n, &b);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
         if (skip != NULL && skip(ud, m->kind, m->id))
             continue;
-        if (item_touch(g, m, poly, n, &b))
+        if (boxes_apart(&b, &m->box, 1e-9))
+            continue;
+        if (pep == NULL)
+            pep = edges_of(poly, n, &pe);
+        if (item_touch(m, item_verts(g, m), poly, n, &b, pep))
             return 1;
     }
     return 0;
@@ -445,8 +502,13 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
     poly_box(pts, n, &b);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
+        const qc_vec2 *v = NULL;
+        edges me;
+        const edges *mep = NULL;
+
         if (boxes_apart(&b, &m->box, 1e-9))
             continue;
+        me.n = 0;
         for (k = 0; k + 1 < n; k++) {
             qc_bbox sb;
             poly_box(pts + k, 2, &sb);
@@ -454,7 +516,13 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
                 continue;
             if (skip != NULL && skip(ud, m->kind, m->id, k))
                 continue;
-            if (item_touch(g, m, pts + k, 2, &sb))
+            if (v == NULL) { /* once per item: a shape's vertices are made again */
+                v = item_verts(g, m);
+                if (m->chain != 1)
+                    mep = edges_of(v, m->n, &me);
+            }
+            if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, mep)
+                              : item_touch(m, v, pts + k, 2, &sb, NULL))
                 return 1;
         }
     }
