@@ -489,20 +489,53 @@ int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, siz
     return QC__RESERVE_EXACT(ctx, g->ent, g->ent_cap, g->nent + entries);
 }
 
+/* Segment boxes worked out once per query (the polyline's) or once per
+ * item (a chain's), rather than once per pair of segments. */
+#define BOX_CACHE 64
+
+/* Box of segment k of pts: from cache (n - 1 <= BOX_CACHE) or made. */
+static void seg_box(const qc_vec2 *pts, const qc_bbox *cache, size_t k, qc_bbox *b)
+{
+    if (cache != NULL)
+        *b = cache[k];
+    else
+        poly_box(pts + k, 2, b);
+}
+
+/* Whether polyline segment s (box sb) touches chain m (vertices v, their
+ * segment boxes vb or NULL): item_touch's chain case. */
+static int seg_chain_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_bbox *vb,
+                           const qc_vec2 *s, const qc_bbox *sb)
+{
+    size_t k;
+
+    for (k = 0; k + 1 < m->n; k++) {
+        qc_bbox b;
+        seg_box(v, vb, k, &b);
+        if (!boxes_apart(sb, &b, 1e-9) && sat_touch(s, 2, v + k, 2, 1e-9))
+            return 1;
+    }
+    return 0;
+}
+
 int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
                            qc__cgrid_skip_seg skip, void *ud)
 {
     const qc__cgrid_item *m;
     candidates c;
-    qc_bbox b;
+    qc_bbox b, qb[BOX_CACHE], mb[BOX_CACHE];
+    const qc_bbox *qbp = n - 1 <= BOX_CACHE ? qb : NULL;
     size_t k;
 
     if (n < 2 || g->nitem == 0)
         return 0;
     poly_box(pts, n, &b);
+    for (k = 0; qbp != NULL && k + 1 < n; k++)
+        poly_box(pts + k, 2, &qb[k]);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
         const qc_vec2 *v = NULL;
+        const qc_bbox *mbp = NULL;
         edges me;
         const edges *mep = NULL;
 
@@ -511,18 +544,24 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
         me.n = 0;
         for (k = 0; k + 1 < n; k++) {
             qc_bbox sb;
-            poly_box(pts + k, 2, &sb);
+            seg_box(pts, qbp, k, &sb);
             if (boxes_apart(&sb, &m->box, 1e-9))
                 continue;
             if (skip != NULL && skip(ud, m->kind, m->id, k))
                 continue;
             if (v == NULL) { /* once per item: a shape's vertices are made again */
+                size_t i;
                 v = item_verts(g, m);
                 if (m->chain != 1)
                     mep = edges_of(v, m->n, &me);
+                else if (m->n - 1 <= BOX_CACHE) {
+                    for (i = 0; i + 1 < m->n; i++)
+                        poly_box(v + i, 2, &mb[i]);
+                    mbp = mb;
+                }
             }
             if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, mep)
-                              : item_touch(m, v, pts + k, 2, &sb, NULL))
+                              : seg_chain_touch(m, v, mbp, pts + k, &sb))
                 return 1;
         }
     }
