@@ -249,18 +249,95 @@ static void project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo
     *hi = h;
 }
 
-/* Whether an edge normal of a separates a from b (eps in mm). */
-static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+/* A convex polygon's edge data, worked out on first need for all the items
+ * a query meets (the same arithmetic as per test, so the same answers):
+ * its edge vectors and lengths (seg_poly_apart), its edge normals and its
+ * own extent along each (separated_by). Polygons of fewer than 3 or more
+ * than EDGE_CACHE vertices go without. */
+#define EDGE_CACHE 64
+
+typedef struct edges {
+    const qc_vec2 *p;
+    size_t n;
+    int have_e, have_n;
+    double ex[EDGE_CACHE], ey[EDGE_CACHE], el[EDGE_CACHE];
+    double ax[EDGE_CACHE], ay[EDGE_CACHE], len[EDGE_CACHE], lo[EDGE_CACHE], hi[EDGE_CACHE];
+} edges;
+
+static void edges_init(edges *e, const qc_vec2 *p, size_t n)
+{
+    e->p = p;
+    e->n = n;
+    e->have_e = e->have_n = 0;
+}
+
+/* e's edge vectors, worked out if need be: e, or NULL when it goes without. */
+static const edges *edge_vectors(edges *e)
+{
+    size_t i, n;
+
+    if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
+        return NULL;
+    for (i = 0, n = e->n; !e->have_e && i < n; i++) {
+        qc_vec2 a = e->p[i], b = e->p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y;
+        e->ex[i] = ex;
+        e->ey[i] = ey;
+        e->el[i] = sqrt(ex * ex + ey * ey);
+    }
+    e->have_e = 1;
+    return e;
+}
+
+/* e's normals and extents, worked out if need be: e, or NULL. */
+static const edges *edge_normals(edges *e)
+{
+    size_t i, n;
+
+    if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
+        return NULL;
+    for (i = 0, n = e->n; !e->have_n && i < n; i++) {
+        qc_vec2 p = e->p[i], q = e->p[(i + 1) % n];
+        double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
+        e->ax[i] = ax;
+        e->ay[i] = ay;
+        e->len[i] = len;
+        if (len >= 1e-15)
+            project(e->p, n, ax, ay, &e->lo[i], &e->hi[i]);
+    }
+    e->have_n = 1;
+    return e;
+}
+
+/* Whether an edge normal of a separates a from b (eps in mm); ea: a's
+ * edge data or NULL. */
+static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
+                        edges *ea)
 {
     size_t i, ne = na == 2 ? 1 : na;
+    const edges *c = edge_normals(ea);
 
     for (i = 0; i < ne; i++) {
-        qc_vec2 p = a[i], q = a[(i + 1) % na];
-        double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
-        double alo, ahi, blo, bhi, e = eps * len;
+        double ax, ay, len, alo, ahi, blo, bhi, e;
+        if (c != NULL) {
+            ax = c->ax[i];
+            ay = c->ay[i];
+            len = c->len[i];
+        } else {
+            qc_vec2 p = a[i], q = a[(i + 1) % na];
+            ax = q.y - p.y;
+            ay = p.x - q.x;
+            len = sqrt(ax * ax + ay * ay);
+        }
+        e = eps * len;
         if (len < 1e-15)
             continue;
-        project(a, na, ax, ay, &alo, &ahi);
+        if (c != NULL) {
+            alo = c->lo[i];
+            ahi = c->hi[i];
+        } else {
+            project(a, na, ax, ay, &alo, &ahi);
+        }
         project(b, nb, ax, ay, &blo, &bhi);
         if (ahi + e < blo || bhi + e < alo)
             return 1;
@@ -268,42 +345,13 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
     return 0;
 }
 
-/* A convex polygon's edge vectors and lengths, worked out once for all the
- * segments tested against it (the same arithmetic as per test, so the same
- * answers); polygons of more than EDGE_CACHE vertices go without. */
-#define EDGE_CACHE 64
-
-typedef struct edges {
-    size_t n;       /* 0: not worked out */
-    double ex[EDGE_CACHE], ey[EDGE_CACHE], el[EDGE_CACHE];
-} edges;
-
-/* e for polygon p, if it has room and is not yet there: e, or NULL. */
-static const edges *edges_of(const qc_vec2 *p, size_t n, edges *e)
-{
-    size_t i;
-
-    if (n < 3 || n > EDGE_CACHE)
-        return NULL;
-    if (e->n == n)
-        return e;
-    for (i = 0; i < n; i++) {
-        qc_vec2 a = p[i], b = p[(i + 1) % n];
-        double ex = b.x - a.x, ey = b.y - a.y;
-        e->ex[i] = ex;
-        e->ey[i] = ey;
-        e->el[i] = sqrt(ex * ex + ey * ey);
-    }
-    e->n = n;
-    return e;
-}
-
 /* A segment against a convex CCW polygon in O(n): apart when one edge's
  * outer half-plane holds both ends, or the segment's line misses the
  * polygon. pe: p's edges, or NULL to work them out here. */
 static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps,
-                          const edges *pe)
+                          edges *pcache)
 {
+    const edges *pe = edge_vectors(pcache);
     double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl = sqrt(dx * dx + dy * dy);
     double lo, hi, c;
     size_t i;
@@ -336,15 +384,15 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
 
 /* SAT once the boxes overlap; ea, eb: a's and b's edges or NULL. */
 static int sat_touch_e(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
-                       const edges *ea, const edges *eb)
+                       edges *ea, edges *eb)
 {
     if (na == 2 && nb >= 3)
         return !seg_poly_apart(a, b, nb, eps, eb);
     if (nb == 2 && na >= 3)
         return !seg_poly_apart(b, a, na, eps, ea);
-    if (na >= 2 && separated_by(a, na, b, nb, eps))
+    if (na >= 2 && separated_by(a, na, b, nb, eps, ea))
         return 0;
-    if (nb >= 2 && separated_by(b, nb, a, na, eps))
+    if (nb >= 2 && separated_by(b, nb, a, na, eps, eb))
         return 0;
     return 1;
 }
@@ -417,7 +465,7 @@ static const qc__cgrid_item *candidates_next(candidates *c)
  * are v: a chain's segments one by one, each behind its own box test, as
  * if each were an item. */
 static int item_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_vec2 *poly, size_t n,
-                      const qc_bbox *b, const edges *pe)
+                      const qc_bbox *b, edges *pe)
 {
     size_t k;
 
@@ -445,11 +493,10 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     candidates c;
     qc_bbox b;
     edges pe;
-    const edges *pep = NULL;
 
     if (n == 0 || g->nitem == 0)
         return 0;
-    pe.n = 0;
+    edges_init(&pe, poly, n);
     poly_box(poly, n, &b);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
@@ -457,9 +504,7 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
             continue;
         if (boxes_apart(&b, &m->box, 1e-9))
             continue;
-        if (pep == NULL)
-            pep = edges_of(poly, n, &pe);
-        if (item_touch(m, item_verts(g, m), poly, n, &b, pep))
+        if (item_touch(m, item_verts(g, m), poly, n, &b, &pe))
             return 1;
     }
     return 0;
@@ -537,11 +582,9 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
         const qc_vec2 *v = NULL;
         const qc_bbox *mbp = NULL;
         edges me;
-        const edges *mep = NULL;
 
         if (boxes_apart(&b, &m->box, 1e-9))
             continue;
-        me.n = 0;
         for (k = 0; k + 1 < n; k++) {
             qc_bbox sb;
             seg_box(pts, qbp, k, &sb);
@@ -552,15 +595,14 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
             if (v == NULL) { /* once per item: a shape's vertices are made again */
                 size_t i;
                 v = item_verts(g, m);
-                if (m->chain != 1)
-                    mep = edges_of(v, m->n, &me);
-                else if (m->n - 1 <= BOX_CACHE) {
+                edges_init(&me, v, m->n);
+                if (m->chain == 1 && m->n - 1 <= BOX_CACHE) {
                     for (i = 0; i + 1 < m->n; i++)
                         poly_box(v + i, 2, &mb[i]);
                     mbp = mb;
                 }
             }
-            if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, mep)
+            if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, &me)
                               : seg_chain_touch(m, v, mbp, pts + k, &sb))
                 return 1;
         }
