@@ -547,15 +547,18 @@ static void seg_box(const qc_vec2 *pts, const qc_bbox *cache, size_t k, qc_bbox 
         poly_box(pts + k, 2, b);
 }
 
-/* Whether polyline segment s (box sb) touches chain m (vertices v, their
- * segment boxes vb or NULL): item_touch's chain case. */
+/* Whether polyline segment s (box sb) touches chain m (vertices v): its
+ * segments near[0..nnear) (those whose boxes vb meet the polyline's box:
+ * no other can meet sb), or all of them when near is NULL. */
 static int seg_chain_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_bbox *vb,
-                           const qc_vec2 *s, const qc_bbox *sb)
+                           const unsigned char *near, size_t nnear, const qc_vec2 *s,
+                           const qc_bbox *sb)
 {
-    size_t k;
+    size_t i, k, nk = near != NULL ? nnear : (size_t)m->n - 1;
 
-    for (k = 0; k + 1 < m->n; k++) {
+    for (i = 0; i < nk; i++) {
         qc_bbox b;
+        k = near != NULL ? near[i] : i;
         seg_box(v, vb, k, &b);
         if (!boxes_apart(sb, &b, 1e-9) && sat_touch(s, 2, v + k, 2, 1e-9))
             return 1;
@@ -569,6 +572,7 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
     const qc__cgrid_item *m;
     candidates c;
     qc_bbox b, qb[BOX_CACHE], mb[BOX_CACHE];
+    unsigned char near[BOX_CACHE];
     const qc_bbox *qbp = n - 1 <= BOX_CACHE ? qb : NULL;
     size_t k;
 
@@ -581,6 +585,8 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
     while ((m = candidates_next(&c)) != NULL) {
         const qc_vec2 *v = NULL;
         const qc_bbox *mbp = NULL;
+        const unsigned char *nearp = NULL;
+        size_t nnear = 0;
         edges me;
 
         if (boxes_apart(&b, &m->box, 1e-9))
@@ -597,13 +603,17 @@ int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned 
                 v = item_verts(g, m);
                 edges_init(&me, v, m->n);
                 if (m->chain == 1 && m->n - 1 <= BOX_CACHE) {
-                    for (i = 0; i + 1 < m->n; i++)
+                    for (i = 0; i + 1 < m->n; i++) {
                         poly_box(v + i, 2, &mb[i]);
+                        if (!boxes_apart(&b, &mb[i], 1e-9))
+                            near[nnear++] = (unsigned char)i;
+                    }
                     mbp = mb;
+                    nearp = near;
                 }
             }
             if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, &me)
-                              : seg_chain_touch(m, v, mbp, pts + k, &sb))
+                              : seg_chain_touch(m, v, mbp, nearp, nnear, pts + k, &sb))
                 return 1;
         }
     }
