@@ -271,8 +271,9 @@ static void edges_init(edges *e, const qc_vec2 *p, size_t n)
     e->have_e = e->have_n = 0;
 }
 
-/* e's edge vectors, worked out if need be: e, or NULL when it goes without. */
-static const edges *edge_vectors(edges *e)
+/* e's edge vectors, worked out if need be (their lengths on first use,
+ * -1 till then): e, or NULL when it goes without. */
+static edges *edge_vectors(edges *e)
 {
     size_t i, n;
 
@@ -283,7 +284,7 @@ static const edges *edge_vectors(edges *e)
         double ex = b.x - a.x, ey = b.y - a.y;
         e->ex[i] = ex;
         e->ey[i] = ey;
-        e->el[i] = sqrt(ex * ex + ey * ey);
+        e->el[i] = -1;
     }
     e->have_e = 1;
     return e;
@@ -351,8 +352,8 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
 static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps,
                           edges *pcache)
 {
-    const edges *pe = edge_vectors(pcache);
-    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl = sqrt(dx * dx + dy * dy);
+    edges *pe = edge_vectors(pcache);
+    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl;
     double lo, hi, c;
     size_t i;
 
@@ -362,18 +363,23 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
         if (pe != NULL) {
             ex = pe->ex[i];
             ey = pe->ey[i];
-            el = pe->el[i];
         } else {
             qc_vec2 b = p[(i + 1) % n];
             ex = b.x - a.x;
             ey = b.y - a.y;
-            el = sqrt(ex * ex + ey * ey);
         }
         s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
         s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        /* -eps * el <= 0: an end on the inner side settles it without el */
+        if (!(s0 < 0 && s1 < 0))
+            continue;
+        if (pe != NULL && pe->el[i] < 0)
+            pe->el[i] = sqrt(ex * ex + ey * ey);
+        el = pe != NULL ? pe->el[i] : sqrt(ex * ex + ey * ey);
         if (s0 < -eps * el && s1 < -eps * el) /* both right of a CCW edge: outside */
             return 1;
     }
+    sl = sqrt(dx * dx + dy * dy);
     if (sl < 1e-15)
         return 0;
     /* the segment's own normal */
