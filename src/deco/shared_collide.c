@@ -319,27 +319,32 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
     const edges *c = edge_normals(ea);
 
     for (i = 0; i < ne; i++) {
-        double ax, ay, len, alo, ahi, blo, bhi, e;
+        double ax, ay, len, alo, ahi, blo, bhi, e = 0;
         if (c != NULL) {
             ax = c->ax[i];
             ay = c->ay[i];
             len = c->len[i];
+            if (len < 1e-15)
+                continue;
+            alo = c->lo[i];
+            ahi = c->hi[i];
+            e = eps * len;
         } else {
             qc_vec2 p = a[i], q = a[(i + 1) % na];
             ax = q.y - p.y;
             ay = p.x - q.x;
-            len = sqrt(ax * ax + ay * ay);
-        }
-        e = eps * len;
-        if (len < 1e-15)
-            continue;
-        if (c != NULL) {
-            alo = c->lo[i];
-            ahi = c->hi[i];
-        } else {
             project(a, na, ax, ay, &alo, &ahi);
         }
         project(b, nb, ax, ay, &blo, &bhi);
+        /* e >= 0: projections that overlap settle it without the length */
+        if (!(ahi < blo || bhi < alo))
+            continue;
+        if (c == NULL) {
+            len = sqrt(ax * ax + ay * ay);
+            if (len < 1e-15)
+                continue;
+            e = eps * len;
+        }
         if (ahi + e < blo || bhi + e < alo)
             return 1;
     }
