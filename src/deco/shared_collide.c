@@ -254,7 +254,7 @@ static void project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo
  * its edge vectors and lengths (seg_poly_apart), its edge normals and its
  * own extent along each (separated_by). Polygons of fewer than 3 or more
  * than EDGE_CACHE vertices go without. */
-#define EDGE_CACHE 64
+#define EDGE_CACHE 32
 
 typedef struct edges {
     const qc_vec2 *p;
@@ -547,7 +547,7 @@ int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, siz
 
 /* Segment boxes worked out once per query (the polyline's) or once per
  * item (a chain's), rather than once per pair of segments. */
-#define BOX_CACHE 64
+#define BOX_CACHE 32
 
 /* Box of segment k of pts: from cache (n - 1 <= BOX_CACHE) or made. */
 static void seg_box(const qc_vec2 *pts, const qc_bbox *cache, size_t k, qc_bbox *b)
