@@ -41,9 +41,15 @@ typedef struct shape { /* a motif's unit-frame collision geometry */
     qc_vec2 axis;      /* from the attachment towards the centre */
 } shape;
 
+/* qc_hypot's arithmetic, inlined: it runs per candidate and per step. */
+static double hyp(double x, double y)
+{
+    return sqrt(x * x + y * y);
+}
+
 static qc_vec2 unit(qc_vec2 d)
 {
-    double len = qc_hypot(d.x, d.y);
+    double len = hyp(d.x, d.y);
     qc_vec2 r = {0, 0};
     if (len > 0) {
         r.x = d.x / len;
@@ -82,6 +88,9 @@ typedef struct run {
     size_t nspots, spots_cap;
     qc_rng rng;
     qc__placement *pl;
+    struct turn { double deg, c, s; } turn[16]; /* rot's cosines and sines, by angle */
+    size_t nturn;
+    double step_w[17][4]; /* the cubic's weights at t = k / 16 (place_on_cubic) */
     qc__btile *tile;  /* a tile: items are added to the grid wrapped too */
     /* the inputs and what the steps of qc__branching_run build */
     const qc_skeleton *skel;
@@ -129,15 +138,18 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
     size_t i, nf = m->nhull, nb = sh->nbody;
     qc_vec2 *full = r->buf, *body = r->buf + nf;
 
+    /* three tests without side effects, the likeliest to fail first: the
+     * body against the vine (two thirds of the attempts that get that far),
+     * the whole hull against the boundary and the other motifs, inside */
+    for (i = 0; i < nb; i++)
+        body[i] = qc__xf_apply(&f, sh->body[i]);
+    if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
+        return 0;
     for (i = 0; i < nf; i++)
         full[i] = qc__xf_apply(&f, m->hull[i]);
     if (qc__cgrid_hit(&r->grid, full, nf, 1u << K_BOUND | 1u << K_MOTIF, NULL, NULL))
         return 0;
     if (!qc_region_contains(r->region, full[0]))
-        return 0;
-    for (i = 0; i < nb; i++)
-        body[i] = qc__xf_apply(&f, sh->body[i]);
-    if (qc__cgrid_hit(&r->grid, body, nb, 1u << K_VINE, NULL, NULL))
         return 0;
     /* past make_grid's guess, by a quarter: 72 bytes a spot, a million spots */
     *rc = r->nspots < r->spots_cap ? QC_OK
@@ -170,10 +182,30 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
     return 1;
 }
 
-static qc_vec2 rot(qc_vec2 d, double deg)
+/* d turned deg degrees; the few angles resolve tries are worked out once. */
+static qc_vec2 rot(run *rn, qc_vec2 d, double deg)
 {
-    double a = deg * (QC_PI / 180), c = qc_cos(a), s = qc_sin(a);
+    double c, s;
     qc_vec2 r;
+    size_t i;
+
+    for (i = 0; i < rn->nturn; i++)
+        if (memcmp(&rn->turn[i].deg, &deg, sizeof deg) == 0)
+            break;
+    if (i < rn->nturn) {
+        c = rn->turn[i].c;
+        s = rn->turn[i].s;
+    } else {
+        double a = deg * (QC_PI / 180);
+        c = qc_cos(a);
+        s = qc_sin(a);
+        if (rn->nturn < sizeof rn->turn / sizeof rn->turn[0]) {
+            rn->turn[rn->nturn].deg = deg;
+            rn->turn[rn->nturn].c = c;
+            rn->turn[rn->nturn].s = s;
+            rn->nturn++;
+        }
+    }
     r.x = c * d.x - s * d.y;
     r.y = s * d.x + c * d.y;
     return r;
@@ -199,7 +231,7 @@ static int resolve(run *r, uint32_t mi, qc_vec2 a, qc_vec2 tangent, int side, do
             for (sd = 0; sd < flips; sd++) {
                 int sgn = sd == 0 ? side : -side;
                 /* tips turn about the tangent; elsewhere alpha from the normal, leaning forward */
-                qc_vec2 dir = side == 0 ? rot(tangent, ang) : rot(tangent, sgn * (90 - ang));
+                qc_vec2 dir = side == 0 ? rot(r, tangent, ang) : rot(r, tangent, sgn * (90 - ang));
                 if (try_place(r, mi, a, dir, s / 2 * scales[si], seg, t, &rc)) {
                     st->motifs_placed++;
                     st->motifs_shrunk += si > 0;
@@ -267,7 +299,7 @@ static int make_shapes(run *r)
         pts.n = 0;
         rc = qc_curve_flatten(r->ctx, &m->path, BODY_TOL, &pts, NULL);
         for (j = 0; rc == QC_OK && j < pts.n; j++)
-            if (qc_hypot(pts.v[j].x - m->entry.x, pts.v[j].y - m->entry.y) > TRIM)
+            if (hyp(pts.v[j].x - m->entry.x, pts.v[j].y - m->entry.y) > TRIM)
                 pts.v[keep++] = pts.v[j];
         if (rc == QC_OK && keep < 3) { /* too small to trim: the whole hull */
             keep = m->nhull;
@@ -550,8 +582,13 @@ static int place_on_cubic(run *r, size_t j, double step, double *acc, int *side)
 
     for (k = 1; k <= nk; k++) {
         double t = (double)k / nk;
-        qc_vec2 p = qc_cubic_point(q, t);
-        double dl = qc_hypot(p.x - prev.x, p.y - prev.y);
+        const double *w = r->step_w[k];
+        qc_vec2 p; /* qc_cubic_point(q, t), its weights made once */
+        double dl;
+
+        p.x = w[0] * q[0].x + w[1] * q[1].x + w[2] * q[2].x + w[3] * q[3].x;
+        p.y = w[0] * q[0].y + w[1] * q[1].y + w[2] * q[2].y + w[3] * q[3].y;
+        dl = hyp(p.x - prev.x, p.y - prev.y);
 
         if (*acc + dl >= step && k < nk) {
             qc_vec2 tg = unit(qc_cubic_tangent(q, t));
@@ -577,6 +614,14 @@ static int place_along(run *r)
     unsigned char *seen = NULL;
     size_t j;
     int rc = QC_OK;
+
+    for (j = 0; j <= 16; j++) { /* qc_cubic_point's weights, as it works them out */
+        double t = (double)j / 16, u = 1 - t;
+        r->step_w[j][0] = u * u * u;
+        r->step_w[j][1] = 3 * u * u * t;
+        r->step_w[j][2] = 3 * u * t * t;
+        r->step_w[j][3] = t * t * t;
+    }
 
     if (walk) {
         seen = qc__alloc(r->ctx, skel->n);

@@ -249,19 +249,102 @@ static void project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo
     *hi = h;
 }
 
-/* Whether an edge normal of a separates a from b (eps in mm). */
-static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+/* A convex polygon's edge data, worked out on first need for all the items
+ * a query meets (the same arithmetic as per test, so the same answers):
+ * its edge vectors and lengths (seg_poly_apart), its edge normals and its
+ * own extent along each (separated_by). Polygons of fewer than 3 or more
+ * than EDGE_CACHE vertices go without. */
+#define EDGE_CACHE 32
+
+typedef struct edges {
+    const qc_vec2 *p;
+    size_t n;
+    int have_e, have_n;
+    double ex[EDGE_CACHE], ey[EDGE_CACHE], el[EDGE_CACHE];
+    double ax[EDGE_CACHE], ay[EDGE_CACHE], len[EDGE_CACHE], lo[EDGE_CACHE], hi[EDGE_CACHE];
+} edges;
+
+static void edges_init(edges *e, const qc_vec2 *p, size_t n)
+{
+    e->p = p;
+    e->n = n;
+    e->have_e = e->have_n = 0;
+}
+
+/* e's edge vectors, worked out if need be (their lengths on first use,
+ * -1 till then): e, or NULL when it goes without. */
+static edges *edge_vectors(edges *e)
+{
+    size_t i, n;
+
+    if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
+        return NULL;
+    for (i = 0, n = e->n; !e->have_e && i < n; i++) {
+        qc_vec2 a = e->p[i], b = e->p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y;
+        e->ex[i] = ex;
+        e->ey[i] = ey;
+        e->el[i] = -1;
+    }
+    e->have_e = 1;
+    return e;
+}
+
+/* e's normals and extents, worked out if need be: e, or NULL. */
+static const edges *edge_normals(edges *e)
+{
+    size_t i, n;
+
+    if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
+        return NULL;
+    for (i = 0, n = e->n; !e->have_n && i < n; i++) {
+        qc_vec2 p = e->p[i], q = e->p[(i + 1) % n];
+        double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
+        e->ax[i] = ax;
+        e->ay[i] = ay;
+        e->len[i] = len;
+        if (len >= 1e-15)
+            project(e->p, n, ax, ay, &e->lo[i], &e->hi[i]);
+    }
+    e->have_n = 1;
+    return e;
+}
+
+/* Whether an edge normal of a separates a from b (eps in mm); ea: a's
+ * edge data or NULL. */
+static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
+                        edges *ea)
 {
     size_t i, ne = na == 2 ? 1 : na;
+    const edges *c = edge_normals(ea);
 
     for (i = 0; i < ne; i++) {
-        qc_vec2 p = a[i], q = a[(i + 1) % na];
-        double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
-        double alo, ahi, blo, bhi, e = eps * len;
-        if (len < 1e-15)
-            continue;
-        project(a, na, ax, ay, &alo, &ahi);
+        double ax, ay, len, alo, ahi, blo, bhi, e = 0;
+        if (c != NULL) {
+            ax = c->ax[i];
+            ay = c->ay[i];
+            len = c->len[i];
+            if (len < 1e-15)
+                continue;
+            alo = c->lo[i];
+            ahi = c->hi[i];
+            e = eps * len;
+        } else {
+            qc_vec2 p = a[i], q = a[(i + 1) % na];
+            ax = q.y - p.y;
+            ay = p.x - q.x;
+            project(a, na, ax, ay, &alo, &ahi);
+        }
         project(b, nb, ax, ay, &blo, &bhi);
+        /* e >= 0: projections that overlap settle it without the length */
+        if (!(ahi < blo || bhi < alo))
+            continue;
+        if (c == NULL) {
+            len = sqrt(ax * ax + ay * ay);
+            if (len < 1e-15)
+                continue;
+            e = eps * len;
+        }
         if (ahi + e < blo || bhi + e < alo)
             return 1;
     }
@@ -269,21 +352,39 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
 }
 
 /* A segment against a convex CCW polygon in O(n): apart when one edge's
- * outer half-plane holds both ends, or the segment's line misses the polygon. */
-static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps)
+ * outer half-plane holds both ends, or the segment's line misses the
+ * polygon. pe: p's edges, or NULL to work them out here. */
+static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps,
+                          edges *pcache)
 {
-    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl = sqrt(dx * dx + dy * dy);
+    edges *pe = edge_vectors(pcache);
+    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl;
     double lo, hi, c;
     size_t i;
 
     for (i = 0; i < n; i++) {
-        qc_vec2 a = p[i], b = p[(i + 1) % n];
-        double ex = b.x - a.x, ey = b.y - a.y, el = sqrt(ex * ex + ey * ey);
-        double s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
-        double s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        qc_vec2 a = p[i];
+        double ex, ey, el, s0, s1;
+        if (pe != NULL) {
+            ex = pe->ex[i];
+            ey = pe->ey[i];
+        } else {
+            qc_vec2 b = p[(i + 1) % n];
+            ex = b.x - a.x;
+            ey = b.y - a.y;
+        }
+        s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
+        s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        /* -eps * el <= 0: an end on the inner side settles it without el */
+        if (!(s0 < 0 && s1 < 0))
+            continue;
+        if (pe != NULL && pe->el[i] < 0)
+            pe->el[i] = sqrt(ex * ex + ey * ey);
+        el = pe != NULL ? pe->el[i] : sqrt(ex * ex + ey * ey);
         if (s0 < -eps * el && s1 < -eps * el) /* both right of a CCW edge: outside */
             return 1;
     }
+    sl = sqrt(dx * dx + dy * dy);
     if (sl < 1e-15)
         return 0;
     /* the segment's own normal */
@@ -292,18 +393,24 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
     return hi + eps * sl < c || c + eps * sl < lo;
 }
 
-/* SAT once the boxes overlap. */
-static int sat_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+/* SAT once the boxes overlap; ea, eb: a's and b's edges or NULL. */
+static int sat_touch_e(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
+                       edges *ea, edges *eb)
 {
     if (na == 2 && nb >= 3)
-        return !seg_poly_apart(a, b, nb, eps);
+        return !seg_poly_apart(a, b, nb, eps, eb);
     if (nb == 2 && na >= 3)
-        return !seg_poly_apart(b, a, na, eps);
-    if (na >= 2 && separated_by(a, na, b, nb, eps))
+        return !seg_poly_apart(b, a, na, eps, ea);
+    if (na >= 2 && separated_by(a, na, b, nb, eps, ea))
         return 0;
-    if (nb >= 2 && separated_by(b, nb, a, na, eps))
+    if (nb >= 2 && separated_by(b, nb, a, na, eps, eb))
         return 0;
     return 1;
+}
+
+static int sat_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    return sat_touch_e(a, na, b, nb, eps, NULL, NULL);
 }
 
 int qc__convex_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
@@ -365,27 +472,29 @@ static const qc__cgrid_item *candidates_next(candidates *c)
     }
 }
 
-/* Whether poly (box b) touches item m: a chain's segments one by one, each
- * behind its own box test, as if each were an item. */
-static int item_touch(const qc__cgrid *g, const qc__cgrid_item *m, const qc_vec2 *poly, size_t n,
-                      const qc_bbox *b)
+/* Whether poly (box b, edges pe or NULL) touches item m whose vertices
+ * are v: a chain's segments one by one, each behind its own box test, as
+ * if each were an item. */
+static int item_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_vec2 *poly, size_t n,
+                      const qc_bbox *b, edges *pe)
 {
-    const qc_vec2 *v = g->v + m->off;
     size_t k;
 
-    if (boxes_apart(b, &m->box, 1e-9))
-        return 0;
-    if (m->chain == 2)
-        return sat_touch(poly, n, g->shape(g->shape_ud, m->id), m->n, 1e-9);
-    if (!m->chain)
-        return sat_touch(poly, n, v, m->n, 1e-9);
+    if (m->chain != 1)
+        return sat_touch_e(poly, n, v, m->n, 1e-9, pe, NULL);
     for (k = 0; k + 1 < m->n; k++) {
         qc_bbox sb;
         poly_box(v + k, 2, &sb);
-        if (!boxes_apart(b, &sb, 1e-9) && sat_touch(poly, n, v + k, 2, 1e-9))
+        if (!boxes_apart(b, &sb, 1e-9) && sat_touch_e(poly, n, v + k, 2, 1e-9, pe, NULL))
             return 1;
     }
     return 0;
+}
+
+/* Item m's vertices: stored, or asked of the shape callback. */
+static const qc_vec2 *item_verts(const qc__cgrid *g, const qc__cgrid_item *m)
+{
+    return m->chain == 2 ? g->shape(g->shape_ud, m->id) : g->v + m->off;
 }
 
 int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
@@ -394,15 +503,19 @@ int qc__cgrid_hit(qc__cgrid *g, const qc_vec2 *poly, size_t n, unsigned kinds,
     const qc__cgrid_item *m;
     candidates c;
     qc_bbox b;
+    edges pe;
 
     if (n == 0 || g->nitem == 0)
         return 0;
+    edges_init(&pe, poly, n);
     poly_box(poly, n, &b);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
         if (skip != NULL && skip(ud, m->kind, m->id))
             continue;
-        if (item_touch(g, m, poly, n, &b))
+        if (boxes_apart(&b, &m->box, 1e-9))
+            continue;
+        if (item_touch(m, item_verts(g, m), poly, n, &b, &pe))
             return 1;
     }
     return 0;
@@ -432,29 +545,86 @@ int qc__cgrid_reserve(qc_ctx *ctx, qc__cgrid *g, size_t items, size_t verts, siz
     return QC__RESERVE_EXACT(ctx, g->ent, g->ent_cap, g->nent + entries);
 }
 
+/* Segment boxes worked out once per query (the polyline's) or once per
+ * item (a chain's), rather than once per pair of segments. */
+#define BOX_CACHE 32
+
+/* Box of segment k of pts: from cache (n - 1 <= BOX_CACHE) or made. */
+static void seg_box(const qc_vec2 *pts, const qc_bbox *cache, size_t k, qc_bbox *b)
+{
+    if (cache != NULL)
+        *b = cache[k];
+    else
+        poly_box(pts + k, 2, b);
+}
+
+/* Whether polyline segment s (box sb) touches chain m (vertices v): its
+ * segments near[0..nnear) (those whose boxes vb meet the polyline's box:
+ * no other can meet sb), or all of them when near is NULL. */
+static int seg_chain_touch(const qc__cgrid_item *m, const qc_vec2 *v, const qc_bbox *vb,
+                           const unsigned char *near, size_t nnear, const qc_vec2 *s,
+                           const qc_bbox *sb)
+{
+    size_t i, k, nk = near != NULL ? nnear : (size_t)m->n - 1;
+
+    for (i = 0; i < nk; i++) {
+        qc_bbox b;
+        k = near != NULL ? near[i] : i;
+        seg_box(v, vb, k, &b);
+        if (!boxes_apart(sb, &b, 1e-9) && sat_touch(s, 2, v + k, 2, 1e-9))
+            return 1;
+    }
+    return 0;
+}
+
 int qc__cgrid_hit_polyline(qc__cgrid *g, const qc_vec2 *pts, size_t n, unsigned kinds,
                            qc__cgrid_skip_seg skip, void *ud)
 {
     const qc__cgrid_item *m;
     candidates c;
-    qc_bbox b;
+    qc_bbox b, qb[BOX_CACHE], mb[BOX_CACHE];
+    unsigned char near[BOX_CACHE];
+    const qc_bbox *qbp = n - 1 <= BOX_CACHE ? qb : NULL;
     size_t k;
 
     if (n < 2 || g->nitem == 0)
         return 0;
     poly_box(pts, n, &b);
+    for (k = 0; qbp != NULL && k + 1 < n; k++)
+        poly_box(pts + k, 2, &qb[k]);
     candidates_begin(g, &b, kinds, &c);
     while ((m = candidates_next(&c)) != NULL) {
+        const qc_vec2 *v = NULL;
+        const qc_bbox *mbp = NULL;
+        const unsigned char *nearp = NULL;
+        size_t nnear = 0;
+        edges me;
+
         if (boxes_apart(&b, &m->box, 1e-9))
             continue;
         for (k = 0; k + 1 < n; k++) {
             qc_bbox sb;
-            poly_box(pts + k, 2, &sb);
+            seg_box(pts, qbp, k, &sb);
             if (boxes_apart(&sb, &m->box, 1e-9))
                 continue;
             if (skip != NULL && skip(ud, m->kind, m->id, k))
                 continue;
-            if (item_touch(g, m, pts + k, 2, &sb))
+            if (v == NULL) { /* once per item: a shape's vertices are made again */
+                size_t i;
+                v = item_verts(g, m);
+                edges_init(&me, v, m->n);
+                if (m->chain == 1 && m->n - 1 <= BOX_CACHE) {
+                    for (i = 0; i + 1 < m->n; i++) {
+                        poly_box(v + i, 2, &mb[i]);
+                        if (!boxes_apart(&b, &mb[i], 1e-9))
+                            near[nnear++] = (unsigned char)i;
+                    }
+                    mbp = mb;
+                    nearp = near;
+                }
+            }
+            if (m->chain != 1 ? sat_touch_e(pts + k, 2, v, m->n, 1e-9, NULL, &me)
+                              : seg_chain_touch(m, v, mbp, nearp, nnear, pts + k, &sb))
                 return 1;
         }
     }
