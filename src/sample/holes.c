@@ -21,32 +21,64 @@ typedef struct hole {
     uint32_t at;
 } hole;
 
-/* Clears mask wherever a seed (a 0 cell of g) lies within squared cell
- * distance lim: what stays set is a hole (its nearest seed beyond lim),
- * found by stamping a disk round each seed, cheaper than a distance
- * transform of the whole raster when seeds are points. */
-static void stamp_seeds(const qc__gap_grid *g, unsigned char *mask, double lim)
+/* The cell qc__gap_seed_segment(g, p, p) zeroes (the same arithmetic, at
+ * t = 0), or SIZE_MAX when p lies off the raster. */
+static size_t seed_cell(const qc__gap_grid *g, qc_vec2 p)
 {
-    long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, i, j, dy;
+    double xn = (double)g->nx, yn = (double)g->ny;
+    double x = (p.x + (p.x - p.x) * 0.0 - g->x0) / g->h;
+    double y = (p.y + (p.y - p.y) * 0.0 - g->y0) / g->h;
+
+    if (!(x >= -1.0 && y >= -1.0 && x < xn + 1.0 && y < yn + 1.0))
+        return SIZE_MAX;
+    x = x > 0.0 ? (x < xn - 1.0 ? x : xn - 1.0) : 0.0;
+    y = y > 0.0 ? (y < yn - 1.0 ? y : yn - 1.0) : 0.0;
+    return (size_t)y * g->nx + (size_t)x;
+}
+
+/* Clears mask wherever a seed (the cell of a point of pts) lies within
+ * squared cell distance lim: what stays set is a hole (its nearest seed
+ * beyond lim), found by stamping a disk round each seed, cheaper than a
+ * distance transform of the whole raster when seeds are points. The disk's
+ * half-width per row is worked out once. */
+static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
+                       unsigned char *mask, double lim)
+{
+    long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, dy;
+    long *half;
+    size_t n;
 
     while ((double)(r + 1) * (double)(r + 1) <= lim)
         r++;
     while (r > 0 && (double)r * (double)r > lim)
         r--;
-    for (j = 0; j < ny; j++)
-        for (i = 0; i < nx; i++) {
-            if (g->f[j * nx + i] != 0.0f)
+    half = qc__alloc_array(ctx, (size_t)(2 * r + 1), sizeof *half);
+    if (half == NULL)
+        return QC_ENOMEM;
+    for (dy = -r; dy <= r; dy++) {
+        long dx = r;
+        while (dx > 0 && (double)dx * (double)dx + (double)dy * (double)dy > lim)
+            dx--;
+        half[dy + r] = dx;
+    }
+    for (n = 0; n < pts->n; n++) {
+        size_t k = seed_cell(g, pts->v[n]);
+        long i, j;
+        if (k == SIZE_MAX)
+            continue;
+        i = (long)(k % g->nx);
+        j = (long)(k / g->nx);
+        for (dy = -r; dy <= r; dy++) {
+            long y = j + dy, lo = i - half[dy + r], hi = i + half[dy + r];
+            if (y < 0 || y >= ny)
                 continue;
-            for (dy = -r; dy <= r; dy++) {
-                long y = j + dy, dx = r, x;
-                if (y < 0 || y >= ny)
-                    continue;
-                while (dx > 0 && (double)dx * (double)dx + (double)dy * (double)dy > lim)
-                    dx--;
-                for (x = i - dx < 0 ? 0 : i - dx; x <= i + dx && x < nx; x++)
-                    mask[y * nx + x] = 0;
-            }
+            lo = lo < 0 ? 0 : lo;
+            hi = hi >= nx ? nx - 1 : hi;
+            memset(mask + y * nx + lo, 0, (size_t)(hi - lo + 1));
         }
+    }
+    qc__free(ctx, half, (size_t)(2 * r + 1) * sizeof *half);
+    return QC_OK;
 }
 
 /* Cell (i, j)'s squared distance to the nearest seed, cells, looking in
@@ -107,7 +139,9 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         goto out;
     for (i = 0; i < out->n; i++)
         qc__gap_seed_segment(&g, out->v[i], out->v[i]);
-    stamp_seeds(&g, mask, lim);
+    rc = stamp_seeds(ctx, &g, out, mask, lim);
+    if (rc < 0)
+        goto out;
     for (k = 0; k < cells; k++)
         nh += mask[k];
     if (nh > cells / 64) { /* many holes: their distances by one transform */
