@@ -2,7 +2,8 @@
  * The measures' distance raster (qc__gap_transform, src/measure/gap.c):
  * every cell's squared distance to the nearest seeded cell, capped at
  * QC__GAP_FAR, checked cell by cell against brute force on rasters whose
- * seeds are scattered, in one column, one row, one cell or absent.
+ * seeds are scattered, in one column, one row, one cell, round the border
+ * (a region's outline: the rows switch to the envelope) or absent.
  */
 #include <stdio.h>
 #include <string.h>
@@ -59,7 +60,10 @@ static void check(size_t nx, size_t ny, int kind, unsigned every)
             int s = kind == 0 ? seeded(i, j, every, (unsigned)nx)
                   : kind == 1 ? i == nx / 3
                   : kind == 2 ? j == ny - 1
-                  : kind == 3 ? (i == nx - 1 && j == 0) : 0;
+                  : kind == 3 ? (i == nx - 1 && j == 0)
+                  : kind == 5 ? (i == 0 || j == 0 || i == nx - 1 || j == ny - 1 ||
+                                 (j > 2 * ny / 3 && seeded(i, j, every, 7u)))
+                              : 0;
             g.f[j * nx + i] = s ? 0.0f : far;
         }
     for (j = 0; j < ny; j++)
@@ -167,6 +171,16 @@ void test_gap_transform_should_carry_a_lone_column_row_or_cell_across(void)
     check(200, 3, 1, 0);
 }
 
+/* Seeded round the border only (medial.c's raster), the middle rows run
+ * past the looking-out budget and those after skip it; the rows near the
+ * foot, scattered seeds, must come out the same. */
+void test_gap_transform_should_match_brute_force_seeded_round_the_border(void)
+{
+    check(90, 70, 5, 9);
+    check(70, 90, 5, 40);
+    check(200, 40, 5, 0);
+}
+
 void test_gap_transform_should_leave_an_unseeded_raster_far(void)
 {
     check(13, 9, 4, 0);
@@ -177,6 +191,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_gap_transform_should_match_brute_force_on_scattered_seeds);
     RUN_TEST(test_gap_transform_should_carry_a_lone_column_row_or_cell_across);
+    RUN_TEST(test_gap_transform_should_match_brute_force_seeded_round_the_border);
     RUN_TEST(test_gap_transform_should_leave_an_unseeded_raster_far);
     RUN_TEST(test_gap_transform_above_should_agree_where_it_matters);
     return UNITY_END();

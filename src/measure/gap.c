@@ -156,17 +156,29 @@ static int scratch_alloc(qc_ctx *ctx, row_scratch *r, const qc__gap_grid *g)
     return QC_OK;
 }
 
-/* Row j's exact transform into r->out, from its column values in r->col. */
-static void row_exact(row_scratch *r, size_t nx)
+/* Row j's exact transform into r->out, from its column values in r->col.
+ * Both ways give the same values; once looking out has run over its budget
+ * (seeds far apart, as in a region seeded only at its boundary), the rows
+ * after go straight to the envelope, looking out again every
+ * RETRY_EVERY-th row. Returns whether looking out failed. */
+#define RETRY_EVERY 16
+static int row_exact(row_scratch *r, size_t nx, size_t j, int failed)
 {
-    if (!row_by_looking_out(r->col, nx, r->out, 8 * nx + 64))
+    if (failed && j % RETRY_EVERY != 0) {
         qc__edt_1d(r->col, nx, r->out, r->v, r->z);
+        return 1;
+    }
+    if (row_by_looking_out(r->col, nx, r->out, 8 * nx + 64))
+        return 0;
+    qc__edt_1d(r->col, nx, r->out, r->v, r->z);
+    return 1;
 }
 
 int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
     row_scratch r;
     size_t i, j;
+    int failed = 0;
 
     QC__TRY(scratch_alloc(ctx, &r, g));
     columns_by_sweeps(g, r.run);
@@ -174,7 +186,7 @@ int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
         float *row = g->f + j * g->nx;
         for (i = 0; i < g->nx; i++)
             r.col[i] = (double)row[i];
-        row_exact(&r, g->nx);
+        failed = row_exact(&r, g->nx, j, failed);
         for (i = 0; i < g->nx; i++)
             row[i] = (float)r.out[i];
     }
@@ -234,7 +246,7 @@ int qc__gap_transform_above(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *m
         if (looks > budget) { /* far seeds: the whole row, then its scan */
             floor = floor0;
             *best_at = at0;
-            row_exact(&r, nx);
+            (void)row_exact(&r, nx, 0, 0);
             for (i = 0; i < nx; i++)
                 if (raise && in[i] && r.out[i] > floor) {
                     floor = r.out[i];

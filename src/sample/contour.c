@@ -62,10 +62,28 @@ static double local_offset(const qc__rindex *ix, qc_vec2 q, qc_vec2 n, double of
 
 /* The row's point for boundary point q and inward unit normal n, if it
  * keeps the margin and its distance from the points already placed. */
+/* Whether every point the row could place for q (q + c n, c between the
+ * margin and the offset: what offer keeps) lies nearer the last point than
+ * the step, so offer would drop it whatever local_offset finds: the
+ * distance along the line is convex in c, its largest at an end; the
+ * slack covers the rounding of the distance offer works out. */
+static int surely_too_near(const row_walk *w, qc_vec2 q, qc_vec2 n)
+{
+    double c0 = w->margin, c1 = fmax(w->margin, w->offset);
+    double d0 = qc_hypot(q.x + c0 * n.x - w->last.x, q.y + c0 * n.y - w->last.y);
+    double d1 = qc_hypot(q.x + c1 * n.x - w->last.x, q.y + c1 * n.y - w->last.y);
+
+    return w->placed && fmax(d0, d1) < w->step * (1.0 - 1e-9);
+}
+
 static int offer(qc_ctx *ctx, row_walk *w, qc_vec2 q, qc_vec2 n)
 {
-    double c = local_offset(w->ix, q, n, w->offset);
+    double c;
     qc_vec2 p;
+
+    if (surely_too_near(w, q, n)) /* the usual case: 8 boundary samples a step */
+        return QC_OK;
+    c = local_offset(w->ix, q, n, w->offset);
 
     if (c < w->margin && 2 * c >= w->margin * MARGIN_LINE)
         c = w->margin;

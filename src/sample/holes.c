@@ -15,44 +15,77 @@
 #include "../measure/measure_internal.h"
 
 #define CELLS_PER_D 8.0 /* raster: d / 8 */
+#define SEED 2          /* mask bit: a point's cell (few holes only) */
 
 typedef struct hole {
     float f; /* squared distance to the nearest point, cells */
     uint32_t at;
 } hole;
 
-/* Clears mask wherever a seed (a 0 cell of g) lies within squared cell
- * distance lim: what stays set is a hole (its nearest seed beyond lim),
- * found by stamping a disk round each seed, cheaper than a distance
- * transform of the whole raster when seeds are points. */
-static void stamp_seeds(const qc__gap_grid *g, unsigned char *mask, double lim)
+/* The cell qc__gap_seed_segment(g, p, p) zeroes (the same arithmetic, at
+ * t = 0), or SIZE_MAX when p lies off the raster. */
+static size_t seed_cell(const qc__gap_grid *g, qc_vec2 p)
 {
-    long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, i, j, dy;
+    double xn = (double)g->nx, yn = (double)g->ny;
+    double x = (p.x + (p.x - p.x) * 0.0 - g->x0) / g->h;
+    double y = (p.y + (p.y - p.y) * 0.0 - g->y0) / g->h;
+
+    if (!(x >= -1.0 && y >= -1.0 && x < xn + 1.0 && y < yn + 1.0))
+        return SIZE_MAX;
+    x = x > 0.0 ? (x < xn - 1.0 ? x : xn - 1.0) : 0.0;
+    y = y > 0.0 ? (y < yn - 1.0 ? y : yn - 1.0) : 0.0;
+    return (size_t)y * g->nx + (size_t)x;
+}
+
+/* Clears mask wherever a seed (the cell of a point of pts) lies within
+ * squared cell distance lim: what stays set is a hole (its nearest seed
+ * beyond lim), found by stamping a disk round each seed, cheaper than a
+ * distance transform of the whole raster when seeds are points. The disk's
+ * half-width per row is worked out once. */
+static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
+                       unsigned char *mask, double lim)
+{
+    long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, dy;
+    long *half;
+    size_t n;
 
     while ((double)(r + 1) * (double)(r + 1) <= lim)
         r++;
     while (r > 0 && (double)r * (double)r > lim)
         r--;
-    for (j = 0; j < ny; j++)
-        for (i = 0; i < nx; i++) {
-            if (g->f[j * nx + i] != 0.0f)
+    half = qc__alloc_array(ctx, (size_t)(2 * r + 1), sizeof *half);
+    if (half == NULL)
+        return QC_ENOMEM;
+    for (dy = -r; dy <= r; dy++) {
+        long dx = r;
+        while (dx > 0 && (double)dx * (double)dx + (double)dy * (double)dy > lim)
+            dx--;
+        half[dy + r] = dx;
+    }
+    for (n = 0; n < pts->n; n++) {
+        size_t k = seed_cell(g, pts->v[n]);
+        long i, j;
+        if (k == SIZE_MAX)
+            continue;
+        i = (long)(k % g->nx);
+        j = (long)(k / g->nx);
+        for (dy = -r; dy <= r; dy++) {
+            long y = j + dy, lo = i - half[dy + r], hi = i + half[dy + r];
+            if (y < 0 || y >= ny)
                 continue;
-            for (dy = -r; dy <= r; dy++) {
-                long y = j + dy, dx = r, x;
-                if (y < 0 || y >= ny)
-                    continue;
-                while (dx > 0 && (double)dx * (double)dx + (double)dy * (double)dy > lim)
-                    dx--;
-                for (x = i - dx < 0 ? 0 : i - dx; x <= i + dx && x < nx; x++)
-                    mask[y * nx + x] = 0;
-            }
+            lo = lo < 0 ? 0 : lo;
+            hi = hi >= nx ? nx - 1 : hi;
+            memset(mask + y * nx + lo, 0, (size_t)(hi - lo + 1));
         }
+    }
+    qc__free(ctx, half, (size_t)(2 * r + 1) * sizeof *half);
+    return QC_OK;
 }
 
-/* Cell (i, j)'s squared distance to the nearest seed, cells, looking in
- * square rings outward until no nearer seed can lie beyond (the value a
- * distance transform gives it: integers, exact). */
-static double seed_dist2(const qc__gap_grid *g, long i, long j)
+/* Cell (i, j)'s squared distance to the nearest seed (a cell of mask with
+ * SEED set), cells, looking in square rings outward until no nearer seed
+ * can lie beyond (the value a distance transform gives it: integers, exact). */
+static double seed_dist2(const qc__gap_grid *g, const unsigned char *mask, long i, long j)
 {
     long nx = (long)g->nx, ny = (long)g->ny, r, x, y;
     double best = (double)(float)QC__GAP_FAR;
@@ -63,7 +96,7 @@ static double seed_dist2(const qc__gap_grid *g, long i, long j)
             if (y < 0 || y >= ny)
                 continue;
             for (x = i - r; x <= i + r; x += step > 0 ? step : 1)
-                if (x >= 0 && x < nx && g->f[y * nx + x] == 0.0f) {
+                if (x >= 0 && x < nx && (mask[y * nx + x] & SEED)) {
                     double d2 = (double)(x - i) * (double)(x - i) +
                                 (double)(y - j) * (double)(y - j);
                     best = d2 < best ? d2 : best;
@@ -81,6 +114,67 @@ static int cmp_hole(const void *pa, const void *pb) /* farthest first */
     return (a->at > b->at) - (a->at < b->at);
 }
 
+/* The distances of the few hole cells (mask set) by looking round each,
+ * the seeds marked in mask: no raster of distances. Those beyond lim go to
+ * hs (room for nh), their count to *nout. */
+static void few_holes(const qc__gap_grid *g, const qc_points *pts, unsigned char *mask,
+                      double lim, hole *hs, size_t *nout)
+{
+    size_t k, n = 0, cells = g->nx * g->ny;
+
+    for (k = 0; k < pts->n; k++) {
+        size_t c = seed_cell(g, pts->v[k]);
+        if (c != SIZE_MAX)
+            mask[c] |= SEED; /* its own disk cleared the hole bit */
+    }
+    for (k = 0; k < cells; k++)
+        if (mask[k] & 1) {
+            float f = (float)seed_dist2(g, mask, (long)(k % g->nx), (long)(k / g->nx));
+            if ((double)f > lim) {
+                hs[n].f = f;
+                hs[n].at = (uint32_t)k;
+                n++;
+            }
+        }
+    *nout = n;
+}
+
+/* The distances of many hole cells by one transform of a raster seeded at
+ * the points. Those beyond lim go to *hs (allocated, room for *cap). */
+static int many_holes(qc_ctx *ctx, qc__gap_grid *g, const qc_points *pts,
+                      const unsigned char *mask, double lim, hole **hs, size_t *cap,
+                      size_t *nout)
+{
+    size_t cells = g->nx * g->ny, k, n = 0;
+    int rc;
+
+    g->f = qc__alloc_array(ctx, cells, sizeof *g->f);
+    if (g->f == NULL)
+        return QC_ENOMEM;
+    for (k = 0; k < cells; k++)
+        g->f[k] = (float)QC__GAP_FAR;
+    for (k = 0; k < pts->n; k++)
+        qc__gap_seed_segment(g, pts->v[k], pts->v[k]);
+    rc = qc__gap_transform_above(ctx, g, mask, lim, 0, &k);
+    if (rc < 0)
+        return rc;
+    for (k = 0; k < cells; k++)
+        n += mask[k] && (double)g->f[k] > lim;
+    *cap = n ? n : 1;
+    *hs = qc__alloc_array(ctx, *cap, sizeof **hs);
+    if (*hs == NULL)
+        return QC_ENOMEM;
+    n = 0;
+    for (k = 0; k < cells; k++)
+        if (mask[k] && (double)g->f[k] > lim) {
+            (*hs)[n].f = g->f[k];
+            (*hs)[n].at = (uint32_t)k;
+            n++;
+        }
+    *nout = n;
+    return QC_OK;
+}
+
 int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double margin,
                           double gap, qc_points *out)
 {
@@ -89,7 +183,7 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
     qc__near_grid ng;
     unsigned char *mask = NULL;
     hole *hs = NULL;
-    size_t cells, k, nh = 0, i;
+    size_t cells, k, nh = 0, cap = 0, i;
     qc_bbox box = qc_region_bbox(region);
     double lim;
     int rc, have_ix = 0;
@@ -97,44 +191,35 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
     if (out->n == 0 || !(gap > 0))
         return QC_OK;
     memset(&ng, 0, sizeof ng);
-    rc = qc__gap_grid_inside(ctx, region, d / CELLS_PER_D, &g, &mask);
+    /* the raster of qc__gap_grid_inside, its distances only if many holes */
+    qc__gap_grid_size(&g, box, d / CELLS_PER_D);
     cells = g.nx * g.ny;
     lim = gap / g.h;
     lim *= lim;
+    mask = qc__alloc(ctx, cells);
+    rc = mask == NULL ? QC_ENOMEM
+                      : qc__raster_inside(ctx, region, g.x0 + 0.5 * g.h, g.y0 + 0.5 * g.h, g.h,
+                                          g.nx, g.ny, mask);
     if (rc == QC_OK)
         rc = qc__near_grid_init(ctx, &ng, box, fmax(gap, d));
+    if (rc == QC_OK)
+        rc = stamp_seeds(ctx, &g, out, mask, lim);
     if (rc < 0)
         goto out;
-    for (i = 0; i < out->n; i++)
-        qc__gap_seed_segment(&g, out->v[i], out->v[i]);
-    stamp_seeds(&g, mask, lim);
     for (k = 0; k < cells; k++)
         nh += mask[k];
     if (nh > cells / 64) { /* many holes: their distances by one transform */
-        rc = qc__gap_transform_above(ctx, &g, mask, lim, 0, &k);
-        if (rc < 0)
-            goto out;
+        rc = many_holes(ctx, &g, out, mask, lim, &hs, &cap, &nh);
     } else {
-        for (k = 0; k < cells; k++)
-            if (mask[k])
-                g.f[k] = (float)seed_dist2(&g, (long)(k % g.nx), (long)(k / g.nx));
+        cap = nh ? nh : 1;
+        hs = qc__alloc_array(ctx, cap, sizeof *hs);
+        if (hs == NULL)
+            rc = QC_ENOMEM;
+        else
+            few_holes(&g, out, mask, lim, hs, &nh);
     }
-    for (k = 0, nh = 0; k < cells; k++)
-        nh += mask[k] && (double)g.f[k] > lim;
-    if (nh == 0)
+    if (rc < 0 || nh == 0)
         goto out;
-    hs = qc__alloc_array(ctx, nh, sizeof *hs);
-    if (hs == NULL) {
-        rc = QC_ENOMEM;
-        goto out;
-    }
-    nh = 0;
-    for (k = 0; k < cells; k++)
-        if (mask[k] && (double)g.f[k] > lim) {
-            hs[nh].f = g.f[k];
-            hs[nh].at = (uint32_t)k;
-            nh++;
-        }
     qsort(hs, nh, sizeof *hs, cmp_hole);
     rc = qc__rindex_build(ctx, region, &ix);
     have_ix = rc == QC_OK;
@@ -153,7 +238,7 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
 out:
     if (have_ix)
         qc__rindex_free(ctx, &ix);
-    qc__free(ctx, hs, nh * sizeof *hs);
+    qc__free(ctx, hs, cap * sizeof *hs);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
     qc__free(ctx, mask, cells);

@@ -38,6 +38,19 @@ static int cmp_ridge(const void *pa, const void *pb)
     return (a->at > b->at) - (a->at < b->at);
 }
 
+/* Whether the cells at offsets -o and +o of c are both inside, and c is no
+ * lower than either and strictly above one. */
+static int ridge_across(const float *f, const unsigned char *mask, size_t c, size_t o)
+{
+    double v = (double)f[c], a, b;
+
+    if (!mask[c + o] || !mask[c - o])
+        return 0;
+    a = (double)f[c + o];
+    b = (double)f[c - o];
+    return v >= a && v >= b && (v > a || v > b);
+}
+
 /* Whether cell k is a ridge: no lower than both neighbours across it in
  * some direction, and strictly above one of them. */
 static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, size_t j)
@@ -46,6 +59,12 @@ static int is_ridge(const qc__gap_grid *g, const unsigned char *mask, size_t i, 
     double c = (double)g->f[j * g->nx + i];
     int k;
 
+    if (i > 0 && j > 0 && i + 1 < g->nx && j + 1 < g->ny) {
+        /* inside the raster's border: every neighbour exists */
+        size_t at = j * g->nx + i, w = g->nx;
+        return ridge_across(g->f, mask, at, 1) || ridge_across(g->f, mask, at, w) ||
+               ridge_across(g->f, mask, at, w + 1) || ridge_across(g->f, mask, at, w - 1);
+    }
     for (k = 0; k < 4; k++) {
         long ax = (long)i + dx[k], ay = (long)j + dy[k], bx = (long)i - dx[k], by = (long)j - dy[k];
         double a, b;

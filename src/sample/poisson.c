@@ -8,12 +8,10 @@
 
 #include "sample_internal.h"
 
-#define EMPTY UINT32_MAX
-
 typedef struct pgrid {
     double x0, y0, cell, d2;
     size_t nx, ny;
-    uint32_t *slot; /* point index per cell, or EMPTY */
+    qc_vec2 *at; /* the cell's point, or {HUGE_VAL, HUGE_VAL} when empty */
 } pgrid;
 
 static size_t cell_index(const pgrid *g, qc_vec2 p)
@@ -22,10 +20,24 @@ static size_t cell_index(const pgrid *g, qc_vec2 p)
     return (cy < g->ny ? cy : g->ny - 1) * g->nx + (cx < g->nx ? cx : g->nx - 1);
 }
 
-/* No point of pts closer than d to p. Cells are d / sqrt 2 wide, so only the
- * 5x5 cells round p's can hold one, less the corners (at least d away);
- * nearest first, since a near conflict ends the search. */
-static int is_far(const pgrid *g, const qc_points *pts, qc_vec2 p)
+static int is_empty(const pgrid *g, size_t c)
+{
+    return g->at[c].x == HUGE_VAL;
+}
+
+/* Whether the point q (an empty cell's is infinitely far) is nearer p than d. */
+static int near(const pgrid *g, qc_vec2 q, qc_vec2 p)
+{
+    double dx = q.x - p.x, dy = q.y - p.y;
+    return dx * dx + dy * dy < g->d2;
+}
+
+/* No point closer than d to p. Cells are d / sqrt 2 wide, so only the 5x5
+ * cells round p's can hold one, less the corners (at least d away). The
+ * cells hold their point's coordinates, so a cell is tested without a
+ * branch on whether it is empty: the 3x3 block first (a near conflict ends
+ * the search), then the ring of 12. */
+static int is_far(const pgrid *g, qc_vec2 p)
 {
     static const signed char off[21][2] = {
         {0, 0},   {1, 0},   {-1, 0}, {0, 1},  {0, -1}, {1, 1},   {-1, 1},
@@ -36,29 +48,23 @@ static int is_far(const pgrid *g, const qc_points *pts, qc_vec2 p)
 
     if (cx >= 2 && cy >= 2 && cx + 2 < (long)g->nx && cy + 2 < (long)g->ny) {
         /* away from the grid's sides: the same cells, no bounds to check */
-        const uint32_t *at = g->slot + (size_t)cy * g->nx + (size_t)cx;
+        const qc_vec2 *at = g->at + (size_t)cy * g->nx + (size_t)cx;
         long w = (long)g->nx;
-        for (i = 0; i < 21; i++) {
-            uint32_t s = at[off[i][1] * w + off[i][0]];
-            if (s != EMPTY) {
-                double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
-                if (dx * dx + dy * dy < g->d2)
-                    return 0;
-            }
-        }
-        return 1;
+        int hit = 0;
+        for (i = 0; i < 9; i++)
+            hit |= near(g, at[off[i][1] * w + off[i][0]], p);
+        if (hit)
+            return 0;
+        for (i = 9; i < 21; i++)
+            hit |= near(g, at[off[i][1] * w + off[i][0]], p);
+        return !hit;
     }
     for (i = 0; i < 21; i++) {
         long x = cx + off[i][0], y = cy + off[i][1];
-        uint32_t s;
         if (x < 0 || y < 0 || x >= (long)g->nx || y >= (long)g->ny)
             continue;
-        s = g->slot[(size_t)y * g->nx + (size_t)x];
-        if (s != EMPTY) {
-            double dx = pts->v[s].x - p.x, dy = pts->v[s].y - p.y;
-            if (dx * dx + dy * dy < g->d2)
-                return 0;
-        }
+        if (near(g, g->at[(size_t)y * g->nx + (size_t)x], p))
+            return 0;
     }
     return 1;
 }
@@ -71,7 +77,7 @@ static int inside_box(const qc__rindex *ix, qc_vec2 p)
 
 static int add_point(qc_ctx *ctx, pgrid *g, qc_points *pts, qc_order *active, qc_vec2 p)
 {
-    g->slot[cell_index(g, p)] = (uint32_t)pts->n;
+    g->at[cell_index(g, p)] = p;
     QC__TRY(qc_order_push(ctx, active, (uint32_t)pts->n));
     return qc_points_push(ctx, pts, p);
 }
@@ -109,7 +115,7 @@ static int grow(qc_ctx *ctx, const qc__rindex *ix, pgrid *g, double d, double ma
 
             p.x = c.x + r * u.x;
             p.y = c.y + r * u.y;
-            if (inside_box(ix, p) && is_far(g, pts, p) && qc__rindex_admits(ix, p, margin)) {
+            if (inside_box(ix, p) && is_far(g, p) && qc__rindex_admits(ix, p, margin)) {
                 QC__TRY(add_point(ctx, g, pts, active, p));
                 placed = 1;
             }
@@ -137,19 +143,19 @@ int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margi
     g.d2 = d * d;
     g.nx = (size_t)((ix->box.max.x - g.x0) / g.cell) + 1;
     g.ny = (size_t)((ix->box.max.y - g.y0) / g.cell) + 1;
-    g.slot = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.slot);
-    if (g.slot == NULL)
+    g.at = qc__alloc_array(ctx, g.nx * g.ny, sizeof *g.at);
+    if (g.at == NULL)
         return QC_ENOMEM;
     for (c = 0; c < g.nx * g.ny; c++)
-        g.slot[c] = EMPTY;
+        g.at[c] = QC__V2(HUGE_VAL, HUGE_VAL);
     qc_rng_seed(&rng, seed);
     for (c = 0; c < g.nx * g.ny && rc == QC_OK; c++) {
         qc_vec2 p;
-        if (g.slot[c] != EMPTY)
+        if (!is_empty(&g, c))
             continue;
         p.x = g.x0 + ((double)(c % g.nx) + 0.5) * g.cell;
         p.y = g.y0 + ((double)(c / g.nx) + 0.5) * g.cell;
-        if (inside_box(ix, p) && is_far(&g, &pts, p) && qc__rindex_admits(ix, p, margin)) {
+        if (inside_box(ix, p) && is_far(&g, p) && qc__rindex_admits(ix, p, margin)) {
             rc = add_point(ctx, &g, &pts, &active, p);
             if (rc == QC_OK)
                 rc = grow(ctx, ix, &g, d, margin, k, &rng, &pts, &active);
@@ -159,6 +165,6 @@ int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margi
         rc = qc_points_push(ctx, out, pts.v[i]);
     qc_points_free(ctx, &pts);
     qc_order_free(ctx, &active);
-    qc__free(ctx, g.slot, g.nx * g.ny * sizeof *g.slot);
+    qc__free(ctx, g.at, g.nx * g.ny * sizeof *g.at);
     return rc;
 }
