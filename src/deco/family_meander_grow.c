@@ -38,6 +38,12 @@
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
 #define SHARP_REACH 2.5  /* ... a smaller spacing within this many d of the tip, */
 #define SCALE_MIN 0.5    /* down to this times d at the tip */
+#define TILE_CELLS 8     /* tiles of this many cells a side settle on their own: */
+#define SETTLE_ROUNDS 5  /* every this many rounds, past half of them, a tile ... */
+#define SETTLE_GAIN 0.001 /* ... whose curve grew by less than this share is frozen */
+#define SETTLE_MARGIN 2.0 /* only tiles this many d clear of the boundary (beyond
+                           * their half diagonal) settle: the rim, the corners and
+                           * the small blocks keep every round */
 
 /* A vertex as the repulsion pass reads it, in cell order. */
 typedef struct qc__grow_vert {
@@ -72,6 +78,14 @@ typedef struct grow {
     size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
     double sh;          /* ... at this step */
     int scaled;         /* whether any node is below 1 (else it is not read) */
+    size_t tx, ty;      /* tiles (TILE_CELLS cells a side) */
+    unsigned char *frozen; /* per tile: 1 settled (its vertices stay put), 2 may
+                            * settle (clear of the boundary), 0 neither */
+    double *tile_len;   /* per tile: the curve's length in it when last looked */
+    double *tile_now;   /* per tile: its length now */
+    unsigned char *still; /* per vertex: its tile is frozen */
+    size_t still_cap;
+    int any_frozen;
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
@@ -92,6 +106,12 @@ static size_t cell_index(const grow *g, qc_vec2 p)
     return j * g->gx + i;
 }
 
+/* The tile of cell c. */
+static size_t tile_of(const grow *g, size_t c)
+{
+    return (c / g->gx / TILE_CELLS) * g->tx + (c % g->gx) / TILE_CELLS;
+}
+
 /* Counting sort of the vertices into their cells (stable: index order). */
 static int bin(qc_ctx *ctx, grow *g)
 {
@@ -106,10 +126,12 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->sv, g->sv_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sf, g->sf_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sc, g->sc_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->still, g->still_cap, g->n));
     memset(g->start, 0, (nc + 1) * sizeof *g->start);
     for (i = 0; i < g->n; i++) {
         g->cell[i] = (uint32_t)cell_index(g, g->p[i]);
         g->start[g->cell[i] + 1]++;
+        g->still[i] = g->any_frozen && g->frozen[tile_of(g, g->cell[i])] == 1;
     }
     for (i = 0; i < nc; i++)
         g->start[i + 1] += g->start[i];
@@ -306,14 +328,18 @@ static void repulsion(grow *g, double R)
     for (cy = 0; cy < g->gy; cy++)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
-            for (a = g->start[c]; a < g->start[c + 1]; a++)
-                repel_run(g, a, a + 1, g->start[c + 1], R, R2);
+            int still = g->any_frozen && g->frozen[tile_of(g, c)] == 1;
+            if (!still) /* a frozen tile's vertices need no push among themselves */
+                for (a = g->start[c]; a < g->start[c + 1]; a++)
+                    repel_run(g, a, a + 1, g->start[c + 1], R, R2);
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
                 if (x < 0 || (size_t)x >= g->gx || (size_t)y >= g->gy)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
+                if (still && g->frozen[tile_of(g, cc)] == 1)
+                    continue;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
             }
@@ -427,7 +453,8 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
         double mx, my, len, v, known = g->pv[i], wall = WALL * o->clear + 2.0 * o->sdf->h;
 
-        if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
+        if ((g->open && (i == 0 || i + 1 == n)) || g->still[i]) {
+            /* the ends stay on their ports, a settled tile's vertices in place */
             g->q[i] = p;
             g->qv[i] = g->pv[i];
             continue;
@@ -615,6 +642,59 @@ static void guard(grow *g)
     memcpy(g->qv, g->pv, g->n * sizeof *g->qv);
 }
 
+/* The tiles that may settle: clear of the boundary by their half diagonal
+ * and SETTLE_MARGIN d (2 in frozen), with their lengths zeroed. */
+static int tiles_init(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
+{
+    double side = TILE_CELLS * g->h, half = 0.5 * side * 1.4142135623730951;
+    size_t i, j;
+
+    g->tx = (g->gx + TILE_CELLS - 1) / TILE_CELLS;
+    g->ty = (g->gy + TILE_CELLS - 1) / TILE_CELLS;
+    g->frozen = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->frozen);
+    g->tile_len = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->tile_len);
+    g->tile_now = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->tile_now);
+    if (g->frozen == NULL || g->tile_len == NULL || g->tile_now == NULL)
+        return QC_ENOMEM;
+    for (j = 0; j < g->ty; j++)
+        for (i = 0; i < g->tx; i++) {
+            qc_vec2 mid = QC__V2(g->x0 + ((double)i + 0.5) * side, g->y0 + ((double)j + 0.5) * side);
+            g->frozen[j * g->tx + i] = qc__sdf_at(o->sdf, mid) > half + SETTLE_MARGIN * o->d ? 2 : 0;
+            g->tile_len[j * g->tx + i] = 0.0;
+        }
+    return QC_OK;
+}
+
+/* Every SETTLE_ROUNDS rounds: the curve's length per tile (segments by
+ * the cell of their start); past half of the rounds, a tile that may
+ * settle and grew by less than SETTLE_GAIN since the last look is frozen
+ * for the rest. */
+static void settle(grow *g, const qc__grow_opts *o, size_t it)
+{
+    size_t nt = g->tx * g->ty, n = g->n, t, i;
+
+    if (g->open || it % SETTLE_ROUNDS != 0)
+        return;
+    for (t = 0; t < nt; t++)
+        g->tile_now[t] = 0.0;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
+        size_t tt = tile_of(g, cell_index(g, a));
+        if (g->frozen[tt] == 2)
+            g->tile_now[tt] += qc_hypot(b.x - a.x, b.y - a.y);
+    }
+    for (t = 0; t < nt; t++) {
+        if (g->frozen[t] != 2)
+            continue;
+        if (2 * it >= o->iterations && g->tile_len[t] > 0.0 &&
+            g->tile_now[t] - g->tile_len[t] < SETTLE_GAIN * g->tile_len[t]) {
+            g->frozen[t] = 1;
+            g->any_frozen = 1;
+        }
+        g->tile_len[t] = g->tile_now[t];
+    }
+}
+
 int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
 {
     grow g;
@@ -648,9 +728,14 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
         rc = QC_ENOMEM;
         goto out;
     }
+    if (tiles_init(ctx, &g, o) < 0) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
     g.phase[0] = 2.0 * QC_PI * qc_rng_unit(&rng);
     g.phase[1] = 2.0 * QC_PI * qc_rng_unit(&rng);
     for (it = 0; it < o->iterations; it++) {
+        settle(&g, o, it);
         rc = bin(ctx, &g);
         if (rc < 0)
             break;
@@ -686,6 +771,10 @@ out:
     qc__free(ctx, g.sc, g.sc_cap * sizeof *g.sc);
     qc__free(ctx, g.scale, g.sx * g.sy * sizeof *g.scale);
     qc__free(ctx, g.start, (nc + 1) * sizeof *g.start);
+    qc__free(ctx, g.still, g.still_cap * sizeof *g.still);
+    qc__free(ctx, g.frozen, g.tx * g.ty * sizeof *g.frozen);
+    qc__free(ctx, g.tile_len, g.tx * g.ty * sizeof *g.tile_len);
+    qc__free(ctx, g.tile_now, g.tx * g.ty * sizeof *g.tile_now);
     if (rc < 0)
         return qc__fail(ctx, rc, "out of memory growing a meander of %lu vertices",
                         (unsigned long)g.n);
