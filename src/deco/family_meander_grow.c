@@ -79,11 +79,14 @@ typedef struct grow {
     double sh;          /* ... at this step */
     int scaled;         /* whether any node is below 1 (else it is not read) */
     size_t tx, ty;      /* tiles (TILE_CELLS cells a side) */
-    unsigned char *frozen; /* per tile: 1 settled (its vertices stay put), 2 may
-                            * settle (clear of the boundary), 0 neither */
+    unsigned char *frozen; /* per tile: 1 settled (its vertices stay put), 3
+                            * settled among settled tiles (nothing that moves
+                            * comes near: not even binned), 2 may settle
+                            * (clear of the boundary), 0 none of these */
     double *tile_len;   /* per tile: the curve's length in it when last looked */
     double *tile_now;   /* per tile: its length now */
-    unsigned char *still; /* per vertex: its tile is frozen */
+    unsigned char *still; /* per vertex: its tile is settled (2: among settled
+                           * tiles, not binned) */
     size_t still_cap;
     int any_frozen;
     int open;           /* an open curve: its ends stay put, no closing segment */
@@ -112,6 +115,12 @@ static size_t tile_of(const grow *g, size_t c)
     return (c / g->gx / TILE_CELLS) * g->tx + (c % g->gx) / TILE_CELLS;
 }
 
+/* Whether cell c lies in a settled tile. */
+static int settled(const grow *g, size_t c)
+{
+    return g->any_frozen && (g->frozen[tile_of(g, c)] & 1);
+}
+
 /* Counting sort of the vertices into their cells (stable: index order). */
 static int bin(qc_ctx *ctx, grow *g)
 {
@@ -130,13 +139,16 @@ static int bin(qc_ctx *ctx, grow *g)
     memset(g->start, 0, (nc + 1) * sizeof *g->start);
     for (i = 0; i < g->n; i++) {
         g->cell[i] = (uint32_t)cell_index(g, g->p[i]);
-        g->start[g->cell[i] + 1]++;
-        g->still[i] = g->any_frozen && g->frozen[tile_of(g, g->cell[i])] == 1;
+        g->still[i] = (unsigned char)(g->any_frozen ? g->frozen[tile_of(g, g->cell[i])] : 0);
+        g->still[i] = g->still[i] == 3 ? 2 : g->still[i] == 1; /* 2: not binned */
+        if (g->still[i] != 2)
+            g->start[g->cell[i] + 1]++;
     }
     for (i = 0; i < nc; i++)
         g->start[i + 1] += g->start[i];
     for (i = 0; i < g->n; i++)
-        g->idx[g->start[g->cell[i]]++] = (uint32_t)i;
+        if (g->still[i] != 2)
+            g->idx[g->start[g->cell[i]]++] = (uint32_t)i;
     for (i = nc; i > 0; i--) /* start[c] was advanced to start[c + 1] */
         g->start[i] = g->start[i - 1];
     g->start[0] = 0;
@@ -311,7 +323,7 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
 static void repulsion(grow *g, double R)
 {
     static const int nb[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    size_t cx, cy, a, n = g->n;
+    size_t cx, cy, a, n = g->start[g->gx * g->gy]; /* the binned vertices */
     double R2 = R * R;
     int t;
 
@@ -328,7 +340,7 @@ static void repulsion(grow *g, double R)
     for (cy = 0; cy < g->gy; cy++)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
-            int still = g->any_frozen && g->frozen[tile_of(g, c)] == 1;
+            int still = settled(g, c);
             if (!still) /* a frozen tile's vertices need no push among themselves */
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     repel_run(g, a, a + 1, g->start[c + 1], R, R2);
@@ -338,7 +350,7 @@ static void repulsion(grow *g, double R)
                 if (x < 0 || (size_t)x >= g->gx || (size_t)y >= g->gy)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
-                if (still && g->frozen[tile_of(g, cc)] == 1)
+                if (still && settled(g, cc))
                     continue;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
@@ -692,6 +704,15 @@ static void settle(grow *g, const qc__grow_opts *o, size_t it)
             g->any_frozen = 1;
         }
         g->tile_len[t] = g->tile_now[t];
+    }
+    for (t = 0; t < nt; t++) { /* settled all round: left out of the bins */
+        size_t x = t % g->tx, y = t / g->tx, k = 0;
+        if (g->frozen[t] != 1 || x == 0 || y == 0 || x + 1 == g->tx || y + 1 == g->ty)
+            continue;
+        for (i = 0; i < 9; i++)
+            k += (g->frozen[t + (i / 3) * g->tx + i % 3 - g->tx - 1] & 1u) != 0;
+        if (k == 9)
+            g->frozen[t] = 3;
     }
 }
 
