@@ -436,6 +436,57 @@ static void meander_should_give_the_same_bytes_for_the_same_seed(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* The path's points within half a side of c, sorted (by x, then y). */
+static int by_xy(const void *pa, const void *pb)
+{
+    const qc_vec2 *a = pa, *b = pb;
+
+    return a->x < b->x ? -1 : a->x > b->x ? 1 : a->y < b->y ? -1 : a->y > b->y;
+}
+
+static size_t points_near(const qc_path *path, qc_vec2 c, double half, qc_vec2 *out, size_t cap)
+{
+    size_t i, n = 0;
+
+    for (i = 0; i < path->npt; i++)
+        if (fabs(path->pt[i].x - c.x) < half && fabs(path->pt[i].y - c.y) < half && n < cap)
+            out[n++] = path->pt[i];
+    qsort(out, n, sizeof *out, by_xy);
+    return n;
+}
+
+/* Issue 17's 3 s for a 100 x 100 in top: the middle of a large block
+ * settles once its curve stops growing and is left alone while the rim and
+ * the corners take the remaining rounds. So 61 and 66 rounds (the same
+ * rounds until the 61st) give the same curve in the middle of a 30 x 30 in
+ * block, point for point; where nothing settles every round moves it. */
+static void meander_should_leave_a_settled_middle_alone(void)
+{
+    static qc_vec2 a[4096], b[4096];
+    qc_region r;
+    qc_result ra, rb;
+    double d = 0.4 * IN;
+    qc_vec2 mid = v2(15.0 * IN, 15.0 * IN);
+    size_t na, nb, i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "rect:30x30", IN, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, 3, "iterations", 61, &ra));
+    TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, 3, "iterations", 66, &rb));
+    na = points_near(&ra.path, mid, 3.0 * d, a, 4096);
+    nb = points_near(&rb.path, mid, 3.0 * d, b, 4096);
+    TEST_ASSERT_TRUE(na > 20 && na < 4096);
+    TEST_ASSERT_EQUAL_size_t(na, nb);
+    for (i = 0; i < na; i++) {
+        TEST_ASSERT_EQUAL_DOUBLE(a[i].x, b[i].x);
+        TEST_ASSERT_EQUAL_DOUBLE(a[i].y, b[i].y);
+    }
+    TEST_ASSERT_FALSE(same_path(&ra.path, &rb.path)); /* the rim took 5 more rounds */
+    qc_result_free(&ctx, &ra);
+    qc_result_free(&ctx, &rb);
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Without a start the path is the closed curve; with one it leaves from
  * the boundary next to the start and comes back to the boundary beside it. */
 static void meander_should_start_and_end_on_the_boundary_where_asked(void)
@@ -765,6 +816,7 @@ int main(void)
     RUN_TEST(meander_should_reach_into_the_corners_and_along_the_seams);
     RUN_TEST(meander_should_be_more_even_than_stipple);
     RUN_TEST(meander_should_give_the_same_bytes_for_the_same_seed);
+    RUN_TEST(meander_should_leave_a_settled_middle_alone);
     RUN_TEST(meander_should_start_and_end_on_the_boundary_where_asked);
     RUN_TEST(meander_should_take_its_parameters_from_the_table);
     RUN_TEST(meander_should_fit_a_patch_smaller_than_d);

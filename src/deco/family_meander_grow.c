@@ -38,6 +38,12 @@
 #define SHARP 80.0       /* corners sharper than this (degrees) get ... */
 #define SHARP_REACH 2.5  /* ... a smaller spacing within this many d of the tip, */
 #define SCALE_MIN 0.5    /* down to this times d at the tip */
+#define TILE_CELLS 8     /* tiles of this many cells a side settle on their own: */
+#define SETTLE_ROUNDS 5  /* every this many rounds, past half of them, a tile ... */
+#define SETTLE_GAIN 0.001 /* ... whose curve grew by less than this share is frozen */
+#define SETTLE_MARGIN 2.0 /* only tiles this many d clear of the boundary (beyond
+                           * their half diagonal) settle: the rim, the corners and
+                           * the small blocks keep every round */
 
 /* A vertex as the repulsion pass reads it, in cell order. */
 typedef struct qc__grow_vert {
@@ -72,6 +78,17 @@ typedef struct grow {
     size_t sx, sy;      /* its grid: nodes (x0 + i h / 2, y0 + j h / 2)... */
     double sh;          /* ... at this step */
     int scaled;         /* whether any node is below 1 (else it is not read) */
+    size_t tx, ty;      /* tiles (TILE_CELLS cells a side) */
+    unsigned char *frozen; /* per tile: 1 settled (its vertices stay put), 3
+                            * settled among settled tiles (nothing that moves
+                            * comes near: not even binned), 2 may settle
+                            * (clear of the boundary), 0 none of these */
+    double *tile_len;   /* per tile: the curve's length in it when last looked */
+    double *tile_now;   /* per tile: its length now */
+    unsigned char *still; /* per vertex: its tile is settled (2: among settled
+                           * tiles, not binned) */
+    size_t still_cap;
+    int any_frozen;
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
@@ -92,6 +109,18 @@ static size_t cell_index(const grow *g, qc_vec2 p)
     return j * g->gx + i;
 }
 
+/* The tile of cell c. */
+static size_t tile_of(const grow *g, size_t c)
+{
+    return (c / g->gx / TILE_CELLS) * g->tx + (c % g->gx) / TILE_CELLS;
+}
+
+/* Whether cell c lies in a settled tile. */
+static int settled(const grow *g, size_t c)
+{
+    return g->any_frozen && (g->frozen[tile_of(g, c)] & 1);
+}
+
 /* Counting sort of the vertices into their cells (stable: index order). */
 static int bin(qc_ctx *ctx, grow *g)
 {
@@ -106,15 +135,20 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->sv, g->sv_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sf, g->sf_cap, g->n));
     QC__TRY(QC__RESERVE(ctx, g->sc, g->sc_cap, g->n));
+    QC__TRY(QC__RESERVE(ctx, g->still, g->still_cap, g->n));
     memset(g->start, 0, (nc + 1) * sizeof *g->start);
     for (i = 0; i < g->n; i++) {
         g->cell[i] = (uint32_t)cell_index(g, g->p[i]);
-        g->start[g->cell[i] + 1]++;
+        g->still[i] = (unsigned char)(g->any_frozen ? g->frozen[tile_of(g, g->cell[i])] : 0);
+        g->still[i] = g->still[i] == 3 ? 2 : g->still[i] == 1; /* 2: not binned */
+        if (g->still[i] != 2)
+            g->start[g->cell[i] + 1]++;
     }
     for (i = 0; i < nc; i++)
         g->start[i + 1] += g->start[i];
     for (i = 0; i < g->n; i++)
-        g->idx[g->start[g->cell[i]]++] = (uint32_t)i;
+        if (g->still[i] != 2)
+            g->idx[g->start[g->cell[i]]++] = (uint32_t)i;
     for (i = nc; i > 0; i--) /* start[c] was advanced to start[c + 1] */
         g->start[i] = g->start[i - 1];
     g->start[0] = 0;
@@ -229,41 +263,53 @@ static int scale_field(qc_ctx *ctx, grow *g, const qc_region *r, double d)
 /* Vertex a (in cell order, copied into u) against the slots [b0, b1): each
  * pair nearer than R and not neighbours along the curve pushes both apart.
  * a's push is summed in registers (in the same order as one by one, so the
- * sums are the same to the bit); r2 is tested before any root is taken. */
+ * sums are the same to the bit); r2 is tested before any root is taken.
+ * The slots within R are first gathered without a branch (a third of the
+ * pairs are, and which ones cannot be guessed), a chunk at a time, then
+ * summed in slot order as before. */
+#define REPEL_CHUNK 64
 static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double R2)
 {
     const qc__grow_vert u = g->sv[a];
     const qc__grow_vert *sv = g->sv;
     qc_vec2 *sf = g->sf, fa = sf[a];
     unsigned char *sc = g->sc, ca = sc[a];
-    size_t b, n = g->n;
+    size_t b, n = g->n, lo, m, k;
+    uint32_t near[REPEL_CHUNK];
     int closed = !g->open;
 
-    for (b = b0; b < b1; b++) {
-        const qc__grow_vert *w = &sv[b];
-        double dx = u.x - w->x, dy = u.y - w->y, r2 = dx * dx + dy * dy, r, k, Rs;
-        size_t gap;
-
-        if (r2 >= R2)
-            continue;
-        gap = u.i > w->i ? u.i - w->i : w->i - u.i;
-        if (gap <= 1 || (closed && gap + 1 >= n)) /* neighbours along the curve */
-            continue;
-        if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
-            ca = sc[b] = 1;
-            continue;
+    for (lo = b0; lo < b1; lo += REPEL_CHUNK) {
+        size_t hi = b1 - lo > REPEL_CHUNK ? lo + REPEL_CHUNK : b1;
+        for (b = lo, m = 0; b < hi; b++) {
+            double dx = u.x - sv[b].x, dy = u.y - sv[b].y;
+            near[m] = (uint32_t)b;
+            m += dx * dx + dy * dy < R2;
         }
-        r = sqrt(r2);
-        if (r < u.reach + w->reach) /* their segments might cross after the move */
-            ca = sc[b] = 1;
-        Rs = R * (u.scale < w->scale ? u.scale : w->scale);
-        if (r >= Rs)
-            continue;
-        k = (1.0 - r / Rs) / r;
-        fa.x += dx * k;
-        fa.y += dy * k;
-        sf[b].x -= dx * k;
-        sf[b].y -= dy * k;
+        for (k = 0; k < m; k++) {
+            const qc__grow_vert *w = &sv[near[k]];
+            double dx = u.x - w->x, dy = u.y - w->y, r2 = dx * dx + dy * dy, r, f, Rs;
+            size_t gap;
+
+            b = near[k];
+            gap = u.i > w->i ? u.i - w->i : w->i - u.i;
+            if (gap <= 1 || (closed && gap + 1 >= n)) /* neighbours along the curve */
+                continue;
+            if (r2 < 1e-18) { /* coincident: no direction to push, but watch them */
+                ca = sc[b] = 1;
+                continue;
+            }
+            r = sqrt(r2);
+            if (r < u.reach + w->reach) /* their segments might cross after the move */
+                ca = sc[b] = 1;
+            Rs = R * (u.scale < w->scale ? u.scale : w->scale);
+            if (r >= Rs)
+                continue;
+            f = (1.0 - r / Rs) / r;
+            fa.x += dx * f;
+            fa.y += dy * f;
+            sf[b].x -= dx * f;
+            sf[b].y -= dy * f;
+        }
     }
     sf[a] = fa;
     sc[a] = ca;
@@ -277,7 +323,7 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
 static void repulsion(grow *g, double R)
 {
     static const int nb[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
-    size_t cx, cy, a, n = g->n;
+    size_t cx, cy, a, n = g->start[g->gx * g->gy]; /* the binned vertices */
     double R2 = R * R;
     int t;
 
@@ -294,14 +340,18 @@ static void repulsion(grow *g, double R)
     for (cy = 0; cy < g->gy; cy++)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
-            for (a = g->start[c]; a < g->start[c + 1]; a++)
-                repel_run(g, a, a + 1, g->start[c + 1], R, R2);
+            int still = settled(g, c);
+            if (!still) /* a frozen tile's vertices need no push among themselves */
+                for (a = g->start[c]; a < g->start[c + 1]; a++)
+                    repel_run(g, a, a + 1, g->start[c + 1], R, R2);
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
                 if (x < 0 || (size_t)x >= g->gx || (size_t)y >= g->gy)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
+                if (still && settled(g, cc))
+                    continue;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
             }
@@ -415,7 +465,8 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
         double mx, my, len, v, known = g->pv[i], wall = WALL * o->clear + 2.0 * o->sdf->h;
 
-        if (g->open && (i == 0 || i + 1 == n)) { /* the ends stay on their ports */
+        if ((g->open && (i == 0 || i + 1 == n)) || g->still[i]) {
+            /* the ends stay on their ports, a settled tile's vertices in place */
             g->q[i] = p;
             g->qv[i] = g->pv[i];
             continue;
@@ -603,6 +654,68 @@ static void guard(grow *g)
     memcpy(g->qv, g->pv, g->n * sizeof *g->qv);
 }
 
+/* The tiles that may settle: clear of the boundary by their half diagonal
+ * and SETTLE_MARGIN d (2 in frozen), with their lengths zeroed. */
+static int tiles_init(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
+{
+    double side = TILE_CELLS * g->h, half = 0.5 * side * 1.4142135623730951;
+    size_t i, j;
+
+    g->tx = (g->gx + TILE_CELLS - 1) / TILE_CELLS;
+    g->ty = (g->gy + TILE_CELLS - 1) / TILE_CELLS;
+    g->frozen = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->frozen);
+    g->tile_len = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->tile_len);
+    g->tile_now = qc__alloc_array(ctx, g->tx * g->ty, sizeof *g->tile_now);
+    if (g->frozen == NULL || g->tile_len == NULL || g->tile_now == NULL)
+        return QC_ENOMEM;
+    for (j = 0; j < g->ty; j++)
+        for (i = 0; i < g->tx; i++) {
+            qc_vec2 mid = QC__V2(g->x0 + ((double)i + 0.5) * side, g->y0 + ((double)j + 0.5) * side);
+            g->frozen[j * g->tx + i] = qc__sdf_at(o->sdf, mid) > half + SETTLE_MARGIN * o->d ? 2 : 0;
+            g->tile_len[j * g->tx + i] = 0.0;
+        }
+    return QC_OK;
+}
+
+/* Every SETTLE_ROUNDS rounds: the curve's length per tile (segments by
+ * the cell of their start); past half of the rounds, a tile that may
+ * settle and grew by less than SETTLE_GAIN since the last look is frozen
+ * for the rest. */
+static void settle(grow *g, const qc__grow_opts *o, size_t it)
+{
+    size_t nt = g->tx * g->ty, n = g->n, t, i;
+
+    if (g->open || it % SETTLE_ROUNDS != 0)
+        return;
+    for (t = 0; t < nt; t++)
+        g->tile_now[t] = 0.0;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
+        size_t tt = tile_of(g, cell_index(g, a));
+        if (g->frozen[tt] == 2)
+            g->tile_now[tt] += qc_hypot(b.x - a.x, b.y - a.y);
+    }
+    for (t = 0; t < nt; t++) {
+        if (g->frozen[t] != 2)
+            continue;
+        if (2 * it >= o->iterations && g->tile_len[t] > 0.0 &&
+            g->tile_now[t] - g->tile_len[t] < SETTLE_GAIN * g->tile_len[t]) {
+            g->frozen[t] = 1;
+            g->any_frozen = 1;
+        }
+        g->tile_len[t] = g->tile_now[t];
+    }
+    for (t = 0; t < nt; t++) { /* settled all round: left out of the bins */
+        size_t x = t % g->tx, y = t / g->tx, k = 0;
+        if (g->frozen[t] != 1 || x == 0 || y == 0 || x + 1 == g->tx || y + 1 == g->ty)
+            continue;
+        for (i = 0; i < 9; i++)
+            k += (g->frozen[t + (i / 3) * g->tx + i % 3 - g->tx - 1] & 1u) != 0;
+        if (k == 9)
+            g->frozen[t] = 3;
+    }
+}
+
 int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
 {
     grow g;
@@ -636,9 +749,14 @@ int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *o)
         rc = QC_ENOMEM;
         goto out;
     }
+    if (tiles_init(ctx, &g, o) < 0) {
+        rc = QC_ENOMEM;
+        goto out;
+    }
     g.phase[0] = 2.0 * QC_PI * qc_rng_unit(&rng);
     g.phase[1] = 2.0 * QC_PI * qc_rng_unit(&rng);
     for (it = 0; it < o->iterations; it++) {
+        settle(&g, o, it);
         rc = bin(ctx, &g);
         if (rc < 0)
             break;
@@ -674,6 +792,10 @@ out:
     qc__free(ctx, g.sc, g.sc_cap * sizeof *g.sc);
     qc__free(ctx, g.scale, g.sx * g.sy * sizeof *g.scale);
     qc__free(ctx, g.start, (nc + 1) * sizeof *g.start);
+    qc__free(ctx, g.still, g.still_cap * sizeof *g.still);
+    qc__free(ctx, g.frozen, g.tx * g.ty * sizeof *g.frozen);
+    qc__free(ctx, g.tile_len, g.tx * g.ty * sizeof *g.tile_len);
+    qc__free(ctx, g.tile_now, g.tx * g.ty * sizeof *g.tile_now);
     if (rc < 0)
         return qc__fail(ctx, rc, "out of memory growing a meander of %lu vertices",
                         (unsigned long)g.n);

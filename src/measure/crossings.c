@@ -18,16 +18,40 @@ typedef struct xgrid {
     size_t nseg;
 } xgrid;
 
+/* fmin and fmax as C99 has them (a NaN loses), without the library call
+ * (cell_range runs several times a segment). */
+static double lesser(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
+static double greater(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
 static void cell_range(const xgrid *g, qc_vec2 a, qc_vec2 b, size_t r[4])
 {
-    double lx = (fmin(a.x, b.x) - g->x0) / g->cell, hx = (fmax(a.x, b.x) - g->x0) / g->cell;
-    double ly = (fmin(a.y, b.y) - g->y0) / g->cell, hy = (fmax(a.y, b.y) - g->y0) / g->cell;
+    double lx = (lesser(a.x, b.x) - g->x0) / g->cell, hx = (greater(a.x, b.x) - g->x0) / g->cell;
+    double ly = (lesser(a.y, b.y) - g->y0) / g->cell, hy = (greater(a.y, b.y) - g->y0) / g->cell;
     double mx = (double)(g->nx - 1), my = (double)(g->ny - 1);
 
-    r[0] = (size_t)fmin(fmax(floor(lx), 0.0), mx);
-    r[1] = (size_t)fmin(fmax(floor(ly), 0.0), my);
-    r[2] = (size_t)fmin(fmax(floor(hx), 0.0), mx);
-    r[3] = (size_t)fmin(fmax(floor(hy), 0.0), my);
+    r[0] = (size_t)lesser(greater(floor(lx), 0.0), mx);
+    r[1] = (size_t)lesser(greater(floor(ly), 0.0), my);
+    r[2] = (size_t)lesser(greater(floor(hx), 0.0), mx);
+    r[3] = (size_t)lesser(greater(floor(hy), 0.0), my);
+}
+
+/* Whether the bounding boxes of ab and cd are strictly apart (then the
+ * segments cannot cross properly). */
+static int apart(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    double abx0 = a.x < b.x ? a.x : b.x, abx1 = a.x < b.x ? b.x : a.x;
+    double aby0 = a.y < b.y ? a.y : b.y, aby1 = a.y < b.y ? b.y : a.y;
+    double cdx0 = c.x < d.x ? c.x : d.x, cdx1 = c.x < d.x ? d.x : c.x;
+    double cdy0 = c.y < d.y ? c.y : d.y, cdy1 = c.y < d.y ? d.y : c.y;
+
+    return abx1 < cdx0 || cdx1 < abx0 || aby1 < cdy0 || cdy1 < aby0;
 }
 
 static int cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
@@ -139,6 +163,8 @@ int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed
 
                 if (hi == lo + 1 || (closed && lo == 0 && hi == nseg - 1))
                     continue; /* neighbours share a vertex */
+                if (apart(a0, a1, b0, b1))
+                    continue; /* boxes apart: no crossing, and cell_range is dear */
                 cell_range(&g, b0, b1, rb);
                 if ((ra[0] > rb[0] ? ra[0] : rb[0]) != cx || (ra[1] > rb[1] ? ra[1] : rb[1]) != cy)
                     continue; /* counted in the first common cell */
