@@ -174,6 +174,7 @@ int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
     s.ctx = ctx;
     s.p = p;
     s.n = n;
+    s.max_reversal = QC__TSP_MAX_REVERSAL;
     rc = solve(&s, method, neighbours, params);
     if (rc == QC_OK)
         emit(&s, out);

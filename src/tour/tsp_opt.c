@@ -108,10 +108,6 @@ void qc__tsp_queue_all(qc__tsp *s)
 
 /* ---- 2-opt ---- */
 
-/* Moves whose shorter side is longer than this are skipped by the local
- * search (never by the uncrossing): at 10^6 points they cost a fifth of
- * the time for 0.2% of length; below 10^5 points no move is that long. */
-#define MAX_REVERSAL 50000
 /* From this many points on, the default's kicks sweep the points in
  * Hilbert order (each near the last: memory stays in cache) and their
  * re-optimisation reverses at most KICK_REVERSAL positions. On 623,518
@@ -127,8 +123,7 @@ void qc__tsp_queue_all(qc__tsp *s)
 int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
 {
     uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
-    uint32_t cap = s->max_reversal > 0 ? s->max_reversal : MAX_REVERSAL;
-    return d > cap && s->m - d > cap;
+    return d > s->max_reversal && s->m - d > s->max_reversal;
 }
 
 /* The best 2-opt move removing an edge at a; applies it. 1 if moved. */
@@ -400,6 +395,6 @@ int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, doubl
     }
     undo_to(s, 0);
     s->logging = 0;
-    s->max_reversal = 0;
+    s->max_reversal = QC__TSP_MAX_REVERSAL;
     return rc;
 }
