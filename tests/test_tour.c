@@ -413,6 +413,35 @@ void tsp_should_repeat_for_a_seed(void)
     repeat_for_a_seed(QC_TSP_METHOD_OR3OPT);
 }
 
+/* From 50,000 points on, the default's kicks sweep the points in Hilbert
+ * order with bounded reversals (tsp_opt.c): still a permutation, the same
+ * for a seed whatever the allocator, and still shorter than Or-opt's. */
+void tsp_should_sweep_the_kicks_of_large_inputs(void)
+{
+    const size_t n = 60000;
+    qc_vec2 *p = random_points(n, 53, 2000.0);
+    qc_order a = {0}, b = {0}, c = {0};
+    qc_tsp_params tp = params(QC_TSP_METHOD_OR3OPT, 0, 7);
+    qc_ctx other;
+    testalloc ta2;
+
+    memset(&ta2, 0, sizeof ta2);
+    qc_ctx_init(&other, testalloc_fn, &ta2);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&ctx, p, n, &tp, &a));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&other, p, n, &tp, &b));
+    assert_permutation(a.i, n);
+    TEST_ASSERT_EQUAL_MEMORY(a.i, b.i, n * sizeof *a.i);
+    tp.method = QC_TSP_METHOD_OROPT;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tsp(&ctx, p, n, &tp, &c));
+    TEST_ASSERT_LESS_THAN_DOUBLE(0.996 * qc_tour_length(p, c.i, n, 1),
+                                 qc_tour_length(p, a.i, n, 1));
+    qc_order_free(&ctx, &a);
+    qc_order_free(&other, &b);
+    qc_order_free(&ctx, &c);
+    TEST_ASSERT_EQUAL_size_t(0, ta2.live_blocks);
+    free(p);
+}
+
 static void fail_cleanly_out_of_memory(int method)
 {
     qc_vec2 *p = random_points(300, 41, 20.0);
@@ -689,6 +718,7 @@ int main(void)
     RUN_TEST(tsp_should_refuse_bad_input_and_keep_the_output);
     RUN_TEST(tsp_method_zero_should_be_or3opt);
     RUN_TEST(tsp_should_repeat_for_a_seed);
+    RUN_TEST(tsp_should_sweep_the_kicks_of_large_inputs);
     RUN_TEST(tsp_should_fail_cleanly_out_of_memory);
     RUN_TEST(tour_length_should_sum_the_edges);
     RUN_TEST(tsp_should_come_near_the_tsplib_optima);

@@ -124,7 +124,7 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     qc__tsp_queue_all(s);
     if (method == QC_TSP_METHOD_OROPT) {
         QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OROPT, &delta));
-        QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, extra, seed, 0.0));
+        QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, extra, seed, 0.0, 0));
         return qc__tsp_uncross(s);
     }
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
@@ -137,11 +137,11 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
      * chains, tsp_or3opt.c) and walk on within one edge: up to 2000 points,
      * 1000 ms, 0.13% above the optima (within 0.2 edge, Or-3opt: 0.31%). */
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, QC_TSP_OR3OPT_KICKS(m), seed,
-                            DEFAULT_KICK_SLACK));
+                            DEFAULT_KICK_SLACK, 1));
     qc__tsp_queue_all(s);
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_LK, extra, seed ^ UINT64_C(0x9e3779b97f4a7c15),
-                            BUDGET_SLACK));
+                            BUDGET_SLACK, 0));
     return qc__tsp_uncross(s);
 }
 
@@ -174,6 +174,7 @@ int qc_tsp(qc_ctx *ctx, const qc_vec2 *p, size_t n, const qc_tsp_params *params,
     s.ctx = ctx;
     s.p = p;
     s.n = n;
+    s.max_reversal = QC__TSP_MAX_REVERSAL;
     rc = solve(&s, method, neighbours, params);
     if (rc == QC_OK)
         emit(&s, out);

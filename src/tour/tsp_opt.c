@@ -108,16 +108,22 @@ void qc__tsp_queue_all(qc__tsp *s)
 
 /* ---- 2-opt ---- */
 
-/* Moves whose shorter side is longer than this are skipped by the local
- * search (never by the uncrossing): at 10^6 points they cost a fifth of
- * the time for 0.2% of length; below 10^5 points no move is that long. */
-#define MAX_REVERSAL 50000
+/* From this many points on, the default's kicks sweep the points in
+ * Hilbert order (each near the last: memory stays in cache) and their
+ * re-optimisation reverses at most KICK_REVERSAL positions. On 623,518
+ * points (bench/: a jittered grid) the kicks took 4.8 s of 6.4 s: 3.9 s
+ * now for 0.05% of length (10^5 points: 0.94 -> 0.59 s, +0.05%). Below,
+ * random positions as before: on TSPLIB (up to 18,512 points, all in
+ * cache) the sweep gave 2.08% above the optima against 1.85%. */
+#define SWEEP_MIN_POINTS 50000
+#define SWEEP_JITTER 64 /* points: the next kick is this near the sweep */
+#define KICK_REVERSAL 1000
 
 /* Whether reversing between a and c (either side) costs too much. */
 int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
 {
     uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
-    return d > MAX_REVERSAL && s->m - d > MAX_REVERSAL;
+    return d > s->max_reversal && s->m - d > s->max_reversal;
 }
 
 /* The best 2-opt move removing an edge at a; applies it. 1 if moved. */
@@ -299,12 +305,11 @@ int qc__tsp_local_search(qc__tsp *s, int level, double *delta)
 
 /* ---- perturbation ---- */
 
-/* Swaps two short adjacent segments after a random position: a B C d ->
- * a C B d. Returns the change of length. */
-static int kick(qc__tsp *s, qc_rng *rng, uint32_t longest, double *delta)
+/* Swaps two short adjacent segments after position i: a B C d -> a C B d.
+ * Adds the change of length to *delta. */
+static int kick(qc__tsp *s, qc_rng *rng, uint32_t i, uint32_t longest, double *delta)
 {
     uint32_t m = s->m, lmax = (m - 2) / 2 < longest ? (m - 2) / 2 : longest;
-    uint32_t i = (uint32_t)qc_rng_below(rng, m);
     uint32_t l1 = 1 + (uint32_t)qc_rng_below(rng, lmax);
     uint32_t l2 = 1 + (uint32_t)qc_rng_below(rng, lmax);
     uint32_t ib1 = (i + 1) % m, ib2 = (i + l1) % m, ic1 = (i + l1 + 1) % m;
@@ -336,8 +341,10 @@ static void undo_to(qc__tsp *s, size_t keep)
     }
 }
 
-int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, double slack_edges)
+int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, double slack_edges,
+                    int sweep)
 {
+    uint64_t period = rounds < s->m ? rounds : s->m;
     qc_rng rng;
     uint64_t r;
     uint32_t i;
@@ -355,11 +362,22 @@ int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, doubl
     }
     s->logging = 1;
     s->nlog = 0;
+    if (sweep && s->m < SWEEP_MIN_POINTS)
+        sweep = 0;
+    if (sweep)
+        s->max_reversal = KICK_REVERSAL;
     for (r = 0; r < rounds && rc == QC_OK; r++) {
         double delta = 0.0;
         size_t mark = s->nlog;
+        uint32_t at;
 
-        rc = kick(s, &rng, level == QC__TSP_LEVEL_LK ? KICK_MAX_LK : KICK_MAX, &delta);
+        if (sweep) { /* near the point the sweep has reached */
+            uint64_t u = (r % period) * s->m / period + qc_rng_below(&rng, SWEEP_JITTER);
+            at = s->pos[u % s->m];
+        } else {
+            at = (uint32_t)qc_rng_below(&rng, s->m);
+        }
+        rc = kick(s, &rng, at, level == QC__TSP_LEVEL_LK ? KICK_MAX_LK : KICK_MAX, &delta);
         if (rc == QC_OK)
             rc = qc__tsp_local_search(s, level, &delta);
         if (rc == QC_OK && over + delta < -s->eps) { /* a new best */
@@ -377,5 +395,6 @@ int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, doubl
     }
     undo_to(s, 0);
     s->logging = 0;
+    s->max_reversal = QC__TSP_MAX_REVERSAL;
     return rc;
 }
