@@ -101,6 +101,17 @@ static inline double qc__tsp_cand_dist(const qc__tsp *s, uint32_t a, unsigned j)
 
 /* Sorts the caller's points along a Hilbert curve, groups duplicates and
  * fills q, sorted, ustart, m and eps (tsp_prep.c). QC_OK or QC_ENOMEM. */
+/* Whether x is among the k ids of list (neighbour lists are short). */
+static inline int qc__tsp_listed(const uint32_t *list, unsigned k, uint32_t x)
+{
+    unsigned j;
+
+    for (j = 0; j < k; j++)
+        if (list[j] == x)
+            return 1;
+    return 0;
+}
+
 QC__HIDDEN int qc__tsp_prepare(qc__tsp *s);
 
 /* Gives the last slots of each candidate list to Delaunay neighbours the

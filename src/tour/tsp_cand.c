@@ -25,16 +25,6 @@ static int in_range(double x)
     return a == 0.0 || (a >= 1e-40 && a <= 1e30);
 }
 
-static int listed(const uint32_t *list, unsigned k, uint32_t x)
-{
-    unsigned j;
-
-    for (j = 0; j < k; j++)
-        if (list[j] == x)
-            return 1;
-    return 0;
-}
-
 /* The Delaunay edges of the distinct points, already in Hilbert order (the
  * insertion order qc_delaunay would sort them into), so the triangulation
  * is run directly; no edges when all points are collinear. */
@@ -80,7 +70,7 @@ static void give_slots(qc__tsp *s, uint32_t i, uint32_t *dn, uint32_t deg, unsig
     unsigned k = s->k, c = 0, j, h, take;
 
     for (j = 0; j < deg; j++) /* the unlisted ones to the front */
-        if (!listed(list, k, dn[j])) {
+        if (!qc__tsp_listed(list, k, dn[j])) {
             uint32_t x = dn[c];
             dn[c++] = dn[j];
             dn[j] = x;

@@ -43,16 +43,6 @@ static uint64_t edge_key(const qc_vec2 *q, uint32_t a, uint32_t b, size_t slot)
     return (uint64_t)bits << 32 | (uint64_t)slot;
 }
 
-static int listed(const uint32_t *list, unsigned k, uint32_t x)
-{
-    unsigned j;
-
-    for (j = 0; j < k; j++)
-        if (list[j] == x)
-            return 1;
-    return 0;
-}
-
 /*
  * One greedy pass over the k-nearest-neighbour candidates among the points
  * id[0..c) (id == NULL: all m points, with the solver's lists). Each edge
@@ -75,7 +65,7 @@ static int greedy_pass(greedy *g, const uint32_t *id, size_t c, const qc_vec2 *p
             uint32_t b = nb[a * stride + j];
             uint32_t u = id ? id[a] : (uint32_t)a, v = id ? id[b] : b;
 
-            if (b < a && listed(nb + (size_t)b * stride, k, (uint32_t)a))
+            if (b < a && qc__tsp_listed(nb + (size_t)b * stride, k, (uint32_t)a))
                 continue;
             if (id != NULL && qc__uf_find(g->parent, u) == qc__uf_find(g->parent, v))
                 continue;
