@@ -165,7 +165,7 @@ static void catmull_rom_should_continue_an_existing_path(void)
 static void catmull_rom_should_fail_cleanly_out_of_memory(void)
 {
     qc_vec2 pts[5] = {{0, 0}, {1, 2}, {3, 1}, {4, 4}, {0, 7}};
-    qc_vec2 bad[2] = {{0, 0}, {NAN, 1}};
+    qc_vec2 bad[2] = {{0, 0}, {(double)NAN, 1}};
     qc_path p = {0};
     size_t k;
     int rc = QC_ENOMEM;
@@ -263,8 +263,8 @@ static void flatten_should_split_pieces_and_measure(void)
     TEST_ASSERT_EQUAL_DOUBLE(0.0, box.min.x);
     TEST_ASSERT_EQUAL_DOUBLE(12.0, box.max.y);
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, 0, &out, &ends));
-    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, NAN, &out, &ends));
-    p.pt[1].y = NAN;
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, (double)NAN, &out, &ends));
+    p.pt[1].y = (double)NAN;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_curve_flatten(&ctx, &p, 0.1, &out, &ends));
     TEST_ASSERT_EQUAL_size_t(4, out.n); /* nothing appended */
     qc_path_free(&ctx, &p);

@@ -135,7 +135,7 @@ static void fabric_should_not_count_jumps(void)
 static void fabric_should_reject_bad_input_and_survive_oom(void)
 {
     qc_region r, empty = {0};
-    qc_vec2 p = v2(50, 50), bad = v2(NAN, 1);
+    qc_vec2 p = v2(50, 50), bad = v2((double)NAN, 1);
     qc_fabric f;
     size_t k, base;
     int rc = QC_ENOMEM;

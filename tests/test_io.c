@@ -234,7 +234,7 @@ static void pat_should_refuse_negative_and_report_errors(void)
     TEST_ASSERT_EQUAL_INT(QC_EEMPTY, qc_io_write(&ctx, QC_FORMAT_PAT, &empty, NULL, mem_write, &m));
     TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_io_write(&ctx, 0, &plan, NULL, mem_write, &m));
     TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_io_write(&ctx, QC_FORMAT_COUNT, &plan, NULL, mem_write, &m));
-    plan.p[1].x = NAN;
+    plan.p[1].x = (double)NAN;
     TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_io_write(&ctx, QC_FORMAT_SVG, &plan, NULL, mem_write, &m));
     free(m.p);
     qc_plan_free(&ctx, &plan);

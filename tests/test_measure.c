@@ -110,7 +110,7 @@ static void largest_gap_should_measure_path_pieces_apart(void)
 static void largest_gap_should_reject_bad_input(void)
 {
     qc_region r, empty;
-    qc_vec2 bad = v2(NAN, 0);
+    qc_vec2 bad = v2((double)NAN, 0);
 
     memset(&empty, 0, sizeof empty);
     square(&r, 10, 0);

@@ -120,7 +120,7 @@ static void names_should_map_both_ways(void)
 static void set_should_refuse_enum_values_no_int_holds(void)
 {
     qc_params p;
-    static const double bad[] = {NAN, INFINITY, -INFINITY, 1e300, 0.5e10, 0.0, 99.0};
+    static const double bad[] = {(double)NAN, (double)INFINITY, -(double)INFINITY, 1e300, 0.5e10, 0.0, 99.0};
     size_t i;
 
     memset(&p, 0, sizeof p);

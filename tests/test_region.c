@@ -197,7 +197,7 @@ static void test_normalize_rejects_bad_regions(void)
     qc_region_free(&ctx, &r);
 
     square_ring(&r, 0, 0, 10, 1);
-    r.v[2].x = NAN;
+    r.v[2].x = (double)NAN;
     expect_error(qc_region_normalize(&ctx, &r), QC_ERANGE, "ring 1 vertex 3 is (nan");
     qc_region_free(&ctx, &r);
 

@@ -194,7 +194,7 @@ static void test_bad_requests_are_refused_before_allocating(void)
 
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "square:1000", 1.0, &r));
     expect_error(&r, params(QC_SAMPLE_SQUARE, 0.0, 1.0), QC_ERANGE, "spacing 0 mm");
-    expect_error(&r, params(QC_SAMPLE_SQUARE, NAN, 1.0), QC_ERANGE, "spacing nan mm");
+    expect_error(&r, params(QC_SAMPLE_SQUARE, (double)NAN, 1.0), QC_ERANGE, "spacing nan mm");
     expect_error(&r, params(QC_SAMPLE_SQUARE, 5.0, -1.0), QC_ERANGE, "margin -1 mm");
     expect_error(&r, params(99, 5.0, 1.0), QC_EINVAL, "unknown point distribution 99");
     expect_error(&empty, params(QC_SAMPLE_SQUARE, 5.0, 1.0), QC_EEMPTY, "no outline");
