@@ -45,6 +45,15 @@ void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region)
     }
 }
 
+qc_vec2 qc__gap_grid_centre(const qc__gap_grid *g, size_t at)
+{
+    qc_vec2 c;
+
+    c.x = g->x0 + ((double)(at % g->nx) + 0.5) * g->h;
+    c.y = g->y0 + ((double)(at / g->nx) + 0.5) * g->h;
+    return c;
+}
+
 void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
 {
     g->h = resolution;
@@ -323,7 +332,7 @@ static double gap_run(qc_ctx *ctx, const qc_region *region, const pieces *pc,
     size_t n = pc->n;
     qc__gap_grid g;
     unsigned char *mask = NULL;
-    size_t i, j, k, best_at = 0;
+    size_t i, k, best_at = 0;
     double best = -1.0, r;
     int rc;
 
@@ -371,12 +380,8 @@ out:
         qc__free(ctx, mask, g.nx * g.ny);
         return rc;
     }
-    j = best_at / g.nx;
-    i = best_at % g.nx;
     {
-        qc_vec2 c;
-        c.x = g.x0 + ((double)i + 0.5) * g.h;
-        c.y = g.y0 + ((double)j + 0.5) * g.h;
+        qc_vec2 c = qc__gap_grid_centre(&g, best_at);
         r = best < 0.0 ? 0.0 : clearance(region, pc, c);
         if (best < 0.0) /* no cell centre inside: a sliver far below the resolution */
             c = region->v[0];

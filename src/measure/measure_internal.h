@@ -18,6 +18,8 @@ typedef struct qc__gap_grid {
     float *f; /* squared cell distances: integers, exact in a float up to 2^24 */
 } qc__gap_grid;
 
+/* The centre of cell at (row-major: at = row * nx + column). */
+QC__HIDDEN qc_vec2 qc__gap_grid_centre(const qc__gap_grid *g, size_t at);
 /* Sizes g over box at resolution (raised until at most 2^22 cells); f NULL. */
 QC__HIDDEN void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution);
 /* The raster every use starts from: g sized over the region's box at

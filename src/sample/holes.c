@@ -226,14 +226,9 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nh && rc == QC_OK; k++) {
-        qc_vec2 p = QC__V2(g.x0 + ((double)(hs[k].at % g.nx) + 0.5) * g.h,
-                           g.y0 + ((double)(hs[k].at / g.nx) + 0.5) * g.h);
+        qc_vec2 p = qc__gap_grid_centre(&g, hs[k].at);
 
-        if (qc__near_grid_near(&ng, out, p, gap) || !qc__rindex_admits(&ix, p, margin))
-            continue;
-        rc = qc_points_push(ctx, out, p);
-        if (rc == QC_OK)
-            rc = qc__near_grid_add(ctx, &ng, out, out->n - 1);
+        rc = qc__near_grid_push_clear(ctx, &ng, out, &ix, p, gap, margin);
     }
 out:
     if (have_ix)

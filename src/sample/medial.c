@@ -159,7 +159,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     qc__near_grid ng;
     unsigned char *mask = NULL;
     ridge *rg = NULL;
-    size_t cells, k, nr = 0, i, j;
+    size_t cells, k, nr = 0, i;
     qc_bbox box = qc_region_bbox(region);
     int rc, have_ix = 0;
 
@@ -200,16 +200,8 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nr && rc == QC_OK; k++) {
-        qc_vec2 p;
-        i = rg[k].at % g.nx;
-        j = rg[k].at / g.nx;
-        p.x = g.x0 + ((double)i + 0.5) * g.h;
-        p.y = g.y0 + ((double)j + 0.5) * g.h;
-        if (qc__near_grid_near(&ng, out, p, SEED_GAP * d) || !qc__rindex_admits(&ix, p, margin))
-            continue;
-        rc = qc_points_push(ctx, out, p);
-        if (rc == QC_OK)
-            rc = qc__near_grid_add(ctx, &ng, out, out->n - 1);
+        rc = qc__near_grid_push_clear(ctx, &ng, out, &ix, qc__gap_grid_centre(&g, rg[k].at),
+                                      SEED_GAP * d, margin);
     }
 out:
     if (have_ix)

@@ -120,3 +120,12 @@ int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0, const qc_p
     qc__near_grid_free(ctx, &g);
     return rc;
 }
+
+int qc__near_grid_push_clear(qc_ctx *ctx, qc__near_grid *g, qc_points *out,
+                             const qc__rindex *ix, qc_vec2 p, double r, double margin)
+{
+    if (qc__near_grid_near(g, out, p, r) || !qc__rindex_admits(ix, p, margin))
+        return QC_OK;
+    QC__TRY(qc_points_push(ctx, out, p));
+    return qc__near_grid_add(ctx, g, out, out->n - 1);
+}

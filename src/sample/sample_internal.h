@@ -36,6 +36,12 @@ QC__HIDDEN int qc__near_grid_add(qc_ctx *ctx, qc__near_grid *g, const qc_points 
 /* Whether a filed point of pts lies nearer than r (<= cell) to p. */
 QC__HIDDEN int qc__near_grid_near(const qc__near_grid *g, const qc_points *pts, qc_vec2 p,
                                   double r);
+/* Appends p to out and files it, unless a filed point lies nearer than r
+ * or ix does not admit p at margin: the step the hole and medial seeds
+ * end with. */
+QC__HIDDEN int qc__near_grid_push_clear(qc_ctx *ctx, qc__near_grid *g, qc_points *out,
+                                        const qc__rindex *ix, qc_vec2 p, double r,
+                                        double margin);
 /* Appends the points of cand that lie at least r from every point of
  * out[ref0, out->n) (the ones appended are not compared with each other). */
 QC__HIDDEN int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0,
