@@ -27,7 +27,11 @@ void cli_timer_mark(cli_timer *t, const char *stage)
     t->stage = stage;
 }
 
+/* "done" leaves the last stage running until the caller marks its next:
+ * closing it there left the return untimed, so the stages' sum fell short
+ * of the total whenever the process was preempted in between. */
 void cli_timer_trace(void *ud, const char *stage)
 {
-    cli_timer_mark(ud, strcmp(stage, "done") == 0 ? NULL : stage);
+    if (strcmp(stage, "done") != 0)
+        cli_timer_mark(ud, stage);
 }
