@@ -54,8 +54,8 @@ static void make_tile(double W, double H, double d, uint64_t seed, ttile *t)
     for (y = Y0; y <= Y0 + H; y += d * 0.866, row++) {
         double x;
         for (x = X0 + (row & 1 ? d / 2 : 0); x <= X0 + W; x += d) {
-            qc_vec2 p = v2(x + (qc_rng_unit(&rng) - 0.5) * 0.4 * d,
-                           y + (qc_rng_unit(&rng) - 0.5) * 0.4 * d);
+            double py = y + (qc_rng_unit(&rng) - 0.5) * 0.4 * d; /* drawn first, as gcc did */
+            qc_vec2 p = v2(x + (qc_rng_unit(&rng) - 0.5) * 0.4 * d, py);
             if (qc_region_contains(&t->r, p) && qc_region_boundary_distance(&t->r, p) >= 0.3 * d)
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, &t->pts, p));
         }

@@ -39,7 +39,7 @@ static qc_vec2 *random_points(size_t n, uint64_t seed)
 
     qc_rng_seed(&r, seed);
     for (i = 0; i < n; i++)
-        p[i] = v2(qc_rng_unit(&r) * 100, qc_rng_unit(&r) * 100);
+        p[i] = rng_v2(&r, 0, 100, 0, 100);
     return p;
 }
 

@@ -185,7 +185,7 @@ static void self_crossings_should_count_proper_crossings(void)
     TEST_ASSERT_EQUAL_UINT(0, n);
     qc_rng_seed(&rng, 9);
     for (i = 0; i < 300; i++)
-        rnd[i] = v2(qc_rng_unit(&rng) * 100, qc_rng_unit(&rng) * 30);
+        rnd[i] = rng_v2(&rng, 0, 100, 0, 30);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, rnd, 300, 1, &n));
     TEST_ASSERT_EQUAL_UINT(brute_crossings(rnd, 300, 1), n);
     TEST_ASSERT_GREATER_THAN(1000, n);

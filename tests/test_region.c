@@ -223,7 +223,7 @@ static void test_index_agrees_with_brute_force(void)
     TEST_ASSERT_EQUAL_INT(QC_OK, qc__rindex_build(&ctx, &r, &ix));
     qc_rng_seed(&rng, 7);
     for (i = 0; i < 20000; i++) {
-        qc_vec2 p = v2(qc_rng_unit(&rng) * 140 - 10, qc_rng_unit(&rng) * 140 - 10);
+        qc_vec2 p = rng_v2(&rng, -10, 140, -10, 140);
         double d = qc_region_boundary_distance(&r, p);
         TEST_ASSERT_EQUAL_INT(qc_region_contains(&r, p), qc__rindex_contains(&ix, p));
         TEST_ASSERT_EQUAL_INT(d < 3.0, qc__rindex_near(&ix, p, 3.0));
@@ -255,7 +255,7 @@ static void test_index_box_inside_is_never_wrong(void)
     qc_rng_seed(&rng, 11);
     for (i = 0; i < 3000; i++) {
         double w = qc_rng_unit(&rng) * 12, h = qc_rng_unit(&rng) * 12;
-        b.min = v2(qc_rng_unit(&rng) * 140 - 10, qc_rng_unit(&rng) * 140 - 10);
+        b.min = rng_v2(&rng, -10, 140, -10, 140);
         b.max = v2(b.min.x + w, b.min.y + h);
         if (!qc__rindex_box_inside(&ix, b))
             continue;

@@ -228,7 +228,7 @@ static void clip_should_keep_exactly_the_inside_length(void)
     qc_rng_seed(&rng, 3);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(-10, -10)));
     for (k = 0; k < 60; k++) {
-        qc_vec2 a = qc_path_last(&path), b = v2(qc_rng_unit(&rng) * 130 - 15, qc_rng_unit(&rng) * 130 - 15);
+        qc_vec2 a = qc_path_last(&path), b = rng_v2(&rng, -15, 130, -15, 130);
         /* brute force: the inside share of the segment by dense sampling */
         for (s = 0; s < 4000; s++) {
             double t = (s + 0.5) / 4000;

@@ -48,7 +48,7 @@ static qc_vec2 *random_points(size_t n, uint64_t seed, double side)
 
     qc_rng_seed(&r, seed);
     for (i = 0; i < n; i++)
-        p[i] = v2(qc_rng_unit(&r) * side, qc_rng_unit(&r) * side);
+        p[i] = rng_v2(&r, 0, side, 0, side);
     return p;
 }
 
@@ -62,7 +62,7 @@ static qc_vec2 *clusters(size_t n, int k, uint64_t seed)
     qc_rng_seed(&r, seed);
     for (i = 0; i < n; i++) {
         int c = (int)(i % (size_t)k);
-        p[i] = v2(1000.0 * c + qc_rng_unit(&r) * 1e-3, 700.0 * (c % 2) + qc_rng_unit(&r) * 1e-3);
+        p[i] = rng_v2(&r, 1000.0 * c, 1e-3, 700.0 * (c % 2), 1e-3);
     }
     return p;
 }

@@ -92,7 +92,7 @@ static void test_emst_walk_uses_every_edge_twice(void)
 
     qc_rng_seed(&rng, 3);
     for (i = 0; i < N; i++)
-        p[i] = v2(qc_rng_unit(&rng) * 100, qc_rng_unit(&rng) * 100);
+        p[i] = rng_v2(&rng, 0, 100, 0, 100);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_mst(&ctx, p, N, QC_MST_MODE_DELAUNAY, &t));
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_tree_walk(&ctx, p, N, t.e, t.n, 17, &w));
     TEST_ASSERT_EQUAL_size_t(2 * (N - 1) + 1, w.n);

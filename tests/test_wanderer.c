@@ -49,9 +49,11 @@ static void square_tour(int cols, int rows, double d, uint64_t seed, ttour *t)
     t->p = malloc(t->n * sizeof *t->p);
     t->order = malloc(t->n * sizeof *t->order);
     for (r = 0; r < rows; r++)
-        for (c = 0; c < cols; c++)
-            t->p[r * cols + c] = v2((c + 0.5 + (qc_rng_unit(&rng) - 0.5) * 0.3) * d,
-                                    (r + 0.5 + (qc_rng_unit(&rng) - 0.5) * 0.3) * d);
+        for (c = 0; c < cols; c++) { /* y drawn first, as gcc drew the arguments */
+            double y = (r + 0.5 + (qc_rng_unit(&rng) - 0.5) * 0.3) * d;
+
+            t->p[r * cols + c] = v2((c + 0.5 + (qc_rng_unit(&rng) - 0.5) * 0.3) * d, y);
+        }
     for (r = 0; r < rows; r++)
         for (c = 1; c < cols; c++)
             t->order[k++] = (uint32_t)(r * cols + ((r & 1) ? cols - c : c));
