@@ -12,7 +12,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "deco_internal.h"
+#include "family_wanderer.h"
 
 enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 };
 
@@ -56,6 +56,8 @@ typedef struct wrun {
     double l;            /* the joins' tangent factor */
     qc_stats *st;
     prim *pr;
+    qc__wchain last;     /* the join sewn last, tested first (most failures cross it) */
+    uint32_t last_id;
     qc_motif_set def;    /* built-in variants when no motif has legs */
 } wrun;
 
@@ -184,6 +186,11 @@ static int skip_fn(void *ud, unsigned kind, uint32_t id)
     return skip_seg(ud, kind, id, ((const skipctx *)ud)->seg);
 }
 
+static int skip_last(void *ud, size_t seg)
+{
+    return skip_seg(ud, K_JOIN, ((const skipctx *)ud)->w->last_id, seg);
+}
+
 static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_vec2 *c2)
 {
     double len = qc_hypot(b->entry.x - a->exit.x, b->entry.y - a->exit.y) * l;
@@ -204,6 +211,13 @@ static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o
     }
 }
 
+/* Whether the join of skip context sk (polyline f) crosses the join sewn
+ * last: a hit the grid query would find too, without its walk. */
+static int last_hits(const wrun *w, const qc_vec2 *f, skipctx *sk)
+{
+    return w->last.n > 0 && qc__wchain_touch(&w->last, f, NFLAT + 1, skip_last, sk);
+}
+
 /* Whether the join i (polyline f) crosses anything it must not. */
 static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
 {
@@ -213,6 +227,8 @@ static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
     sk.i = (uint32_t)i;
     sk.n = (uint32_t)n;
     sk.seg = 0;
+    if (last_hits(w, f, &sk))
+        return 1;
     return qc__cgrid_hit_polyline(&w->grid, f, NFLAT + 1,
                                   1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN, skip_seg, &sk);
 }
@@ -418,6 +434,31 @@ static int fit_prim(wrun *w, size_t i)
     return add_hull(w, p, (uint32_t)i);
 }
 
+/* Whether some rung of the tangent ladder for join i: a -> b keeps clear
+ * of the join sewn last: when none does, try_join fails, so a variant is
+ * turned down before its hull's grid query (the same choice, sooner). */
+static int may_join(const wrun *w, const prim *a, const prim *b, size_t i)
+{
+    static const double shrink[] = {1, 0.5, 0.25, 0};
+    qc_vec2 c1, c2, f[NFLAT + 1];
+    skipctx sk;
+    size_t tr;
+
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)w->n;
+    sk.seg = 0;
+    for (tr = 0; tr < 4; tr++) {
+        join_ctrl(a, b, w->l * shrink[tr], &c1, &c2);
+        flat_join(a->exit, c1, c2, b->entry, f);
+        if (!last_hits(w, f, &sk))
+            return 1;
+        if (w->l == 0)
+            break;
+    }
+    return 0;
+}
+
 /* The join i -> j through one of j's other variants whose hull keeps
  * clear: 1 (pr[j] replaced, c1, c2, f set), 0 if none does, or an error. */
 static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 *c2,
@@ -433,6 +474,8 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
         const qc_motif *m = &w->set->m[q.m];
         skipctx sk;
 
+        if (!may_join(w, &w->pr[i], &q, i))
+            continue;
         for (k = 0; k < m->nhull; k++)
             w->hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
         sk.w = w;
@@ -473,6 +516,8 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
         flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
     }
     QC__TRY(qc__cgrid_add_chain(w->ctx, &w->grid, f, NFLAT + 1, K_JOIN, (uint32_t)i));
+    qc__wchain_set(&w->last, f, NFLAT + 1);
+    w->last_id = (uint32_t)i;
     return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
 }
 
