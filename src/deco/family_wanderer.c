@@ -200,22 +200,41 @@ static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_ve
     c2->y = b->entry.y + b->in_dir.y * len;
 }
 
+/* Point k of NFLAT + 1 along the cubic p0 c1 c2 p3. */
+static qc_vec2 flat_point(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, int k)
+{
+    double t = (double)k / NFLAT, u = 1 - t;
+    double w0 = u * u * u, w1 = 3 * u * u * t, w2 = 3 * u * t * t, w3 = t * t * t;
+    qc_vec2 o;
+    o.x = w0 * p0.x + w1 * c1.x + w2 * c2.x + w3 * p3.x;
+    o.y = w0 * p0.y + w1 * c1.y + w2 * c2.y + w3 * p3.y;
+    return o;
+}
+
 static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
 {
     int k;
-    for (k = 0; k <= NFLAT; k++) {
-        double t = (double)k / NFLAT, u = 1 - t;
-        double w0 = u * u * u, w1 = 3 * u * u * t, w2 = 3 * u * t * t, w3 = t * t * t;
-        o[k].x = w0 * p0.x + w1 * c1.x + w2 * c2.x + w3 * p3.x;
-        o[k].y = w0 * p0.y + w1 * c1.y + w2 * c2.y + w3 * p3.y;
-    }
+    for (k = 0; k <= NFLAT; k++)
+        o[k] = flat_point(p0, c1, c2, p3, k);
 }
 
-/* Whether the join of skip context sk (polyline f) crosses the join sewn
- * last: a hit the grid query would find too, without its walk. */
-static int last_hits(const wrun *w, const qc_vec2 *f, skipctx *sk)
+/* The join's polyline f (controls c1, c2 from a's exit to b's entry),
+ * point by point, stopping at its first segment that crosses the join
+ * sewn last (skip context sk): 1 then (a hit the grid query would find
+ * too, without its walk or the rest of f), else 0 with f complete. */
+static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec2 c1,
+                             qc_vec2 c2, qc_vec2 *f, skipctx *sk)
 {
-    return w->last.n > 0 && qc__wchain_touch(&w->last, f, NFLAT + 1, skip_last, sk);
+    int k;
+
+    f[0] = flat_point(a->exit, c1, c2, b->entry, 0);
+    for (k = 1; k <= NFLAT; k++) {
+        f[k] = flat_point(a->exit, c1, c2, b->entry, k);
+        if (w->last.n > 0 && !skip_last(sk, (size_t)k - 1) &&
+            qc__wchain_seg_touch(&w->last, f + k - 1))
+            return 1;
+    }
+    return 0;
 }
 
 /* Whether the join i (polyline f) crosses anything it must not. */
@@ -227,8 +246,6 @@ static int join_hits(wrun *w, const qc_vec2 *f, size_t i, size_t n)
     sk.i = (uint32_t)i;
     sk.n = (uint32_t)n;
     sk.seg = 0;
-    if (last_hits(w, f, &sk))
-        return 1;
     return qc__cgrid_hit_polyline(&w->grid, f, NFLAT + 1,
                                   1u << K_BOUND | 1u << K_PRIM | 1u << K_JOIN, skip_seg, &sk);
 }
@@ -269,12 +286,17 @@ static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, s
                     qc_vec2 *c1, qc_vec2 *c2, qc_vec2 *f)
 {
     static const double shrink[] = {1, 0.5, 0.25, 0};
+    skipctx sk;
     size_t tr;
 
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)n;
+    sk.seg = 0;
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, l * shrink[tr], c1, c2);
-        flat_join(a->exit, *c1, *c2, b->entry, f);
-        if (!join_hits(w, f, i, n))
+        /* the join sewn last first: most joins that fail cross it */
+        if (!flat_crosses_last(w, a, b, *c1, *c2, f, &sk) && !join_hits(w, f, i, n))
             return 1;
         if (l == 0)
             break;
@@ -450,8 +472,7 @@ static int may_join(const wrun *w, const prim *a, const prim *b, size_t i)
     sk.seg = 0;
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, w->l * shrink[tr], &c1, &c2);
-        flat_join(a->exit, c1, c2, b->entry, f);
-        if (!last_hits(w, f, &sk))
+        if (!flat_crosses_last(w, a, b, c1, c2, f, &sk))
             return 1;
         if (w->l == 0)
             break;

@@ -28,35 +28,51 @@ void qc__wchain_set(qc__wchain *c, const qc_vec2 *pts, size_t n)
     if (n < 2 || n > QC__WCHAIN_MAX + 1)
         return;
     c->p[0] = pts[0];
-    c->box.min = c->box.max = pts[0];
     for (k = 0; k + 1 < n; k++) {
+        qc_bbox *g = &c->grp[k / QC__WCHAIN_GROUP];
         c->p[k + 1] = pts[k + 1];
         seg_box(pts + k, &c->seg[k]);
-        if (c->seg[k].min.x < c->box.min.x)
-            c->box.min.x = c->seg[k].min.x;
-        if (c->seg[k].min.y < c->box.min.y)
-            c->box.min.y = c->seg[k].min.y;
-        if (c->seg[k].max.x > c->box.max.x)
-            c->box.max.x = c->seg[k].max.x;
-        if (c->seg[k].max.y > c->box.max.y)
-            c->box.max.y = c->seg[k].max.y;
+        if (k % QC__WCHAIN_GROUP == 0)
+            *g = c->seg[k];
+        if (c->seg[k].min.x < g->min.x)
+            g->min.x = c->seg[k].min.x;
+        if (c->seg[k].min.y < g->min.y)
+            g->min.y = c->seg[k].min.y;
+        if (c->seg[k].max.x > g->max.x)
+            g->max.x = c->seg[k].max.x;
+        if (c->seg[k].max.y > g->max.y)
+            g->max.y = c->seg[k].max.y;
     }
     c->n = n;
+}
+
+int qc__wchain_seg_touch(const qc__wchain *c, const qc_vec2 *s)
+{
+    size_t grp, m;
+    qc_bbox sb;
+
+    if (c->n < 2)
+        return 0;
+    seg_box(s, &sb);
+    /* from the chain's end, where the crossings are; a group's box first */
+    for (grp = (c->n - 2) / QC__WCHAIN_GROUP + 1; grp-- > 0;) {
+        size_t lo = grp * QC__WCHAIN_GROUP, hi = lo + QC__WCHAIN_GROUP;
+        if (apart(&sb, &c->grp[grp]))
+            continue;
+        for (m = hi < c->n - 1 ? hi : c->n - 1; m-- > lo;)
+            if (!apart(&sb, &c->seg[m]) && qc__convex_touch(s, 2, c->p + m, 2, 1e-9))
+                return 1;
+    }
+    return 0;
 }
 
 int qc__wchain_touch(const qc__wchain *c, const qc_vec2 *q, size_t nq,
                      int (*skip)(void *ud, size_t k), void *ud)
 {
-    size_t k, m;
+    size_t k;
 
-    for (k = 0; c->n >= 2 && k + 1 < nq; k++) {
-        qc_bbox sb;
-        seg_box(q + k, &sb);
-        if (apart(&sb, &c->box) || skip(ud, k))
-            continue;
-        for (m = 0; m + 1 < c->n; m++)
-            if (!apart(&sb, &c->seg[m]) && qc__convex_touch(q + k, 2, c->p + m, 2, 1e-9))
-                return 1;
-    }
+    for (k = 0; k + 1 < nq; k++)
+        if (!skip(ud, k) && qc__wchain_seg_touch(c, q + k))
+            return 1;
     return 0;
 }
