@@ -389,9 +389,12 @@ static void choose_variants(wrun *w)
         for (k = 0; k < 2 * w->nvar; k++) {
             prim q = make_prim(w, w->var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
             qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
-            qc_vec2 dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
-            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60) +
-                        fabs(fabs(angle_between(q.out_dir, dout)) - 60);
+            qc_vec2 dout;
+            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60);
+            if (!(sc < best - 1e-9)) /* the out leg only adds: it cannot win */
+                continue;
+            dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
+            sc += fabs(fabs(angle_between(q.out_dir, dout)) - 60);
             if (sc < best - 1e-9) {
                 best = sc;
                 pr[i] = q;
@@ -456,6 +459,14 @@ static int fit_prim(wrun *w, size_t i)
     return add_hull(w, p, (uint32_t)i);
 }
 
+/* Whether a join meets a and b alike: the same entry and leg (all a join
+ * to them depends on). */
+static int same_entry(const prim *a, const prim *b)
+{
+    return a->entry.x == b->entry.x && a->entry.y == b->entry.y && a->in_dir.x == b->in_dir.x &&
+           a->in_dir.y == b->in_dir.y;
+}
+
 /* Whether some rung of the tangent ladder for join i: a -> b keeps clear
  * of the join sewn last: when none does, try_join fails, so a variant is
  * turned down before its hull's grid query (the same choice, sooner). */
@@ -495,7 +506,8 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
         const qc_motif *m = &w->set->m[q.m];
         skipctx sk;
 
-        if (!may_join(w, &w->pr[i], &q, i))
+        /* met like the one try_join just failed with, or failing on the join sewn last */
+        if (same_entry(&q, &w->pr[j]) || !may_join(w, &w->pr[i], &q, i))
             continue;
         for (k = 0; k < m->nhull; k++)
             w->hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
