@@ -10,6 +10,7 @@
  * whose hull reaches the boundary is shrunk (3/4, then 1/2).
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "family_wanderer.h"
@@ -554,11 +555,30 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
     return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
 }
 
+/* Room in out for the whole path at once, each primitive counted as the
+ * largest variant plus its join: at 10^6 points a doubling array would
+ * hold its old and new copies at once. */
+static int reserve_path(wrun *w, qc_path *out)
+{
+    size_t v, cmds = 0, pts = 0;
+
+    for (v = 0; v < w->nvar; v++) {
+        const qc_path *p = &w->set->m[w->var[v]].path;
+        cmds = p->ncmd > cmds ? p->ncmd : cmds;
+        pts = p->npt > pts ? p->npt : pts;
+    }
+    if (w->n > (SIZE_MAX - 1) / (pts + 3))
+        return qc__fail(w->ctx, QC_ENOMEM, "wanderer path of %zu primitives", w->n);
+    QC__TRY(QC__RESERVE_EXACT(w->ctx, out->cmd, out->cmd_cap, out->ncmd + 1 + w->n * (cmds + 1)));
+    return QC__RESERVE_EXACT(w->ctx, out->pt, out->pt_cap, out->npt + 1 + w->n * (pts + 3));
+}
+
 /* The path: primitive, join, primitive, ..., back to the first. */
 static int sew(wrun *w, qc_path *out)
 {
     size_t i;
 
+    QC__TRY(reserve_path(w, out));
     QC__TRY(qc_path_move_to(w->ctx, out, w->pr[0].entry));
     for (i = 0; i < w->n; i++)
         QC__TRY(sew_step(w, i, out));
