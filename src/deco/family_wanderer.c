@@ -15,7 +15,7 @@
 
 #include "family_wanderer.h"
 
-enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 };
+enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 }; /* NFLAT: see flat_crosses_last */
 
 typedef struct prim {
     qc__xf xf;
@@ -220,21 +220,27 @@ static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o
 }
 
 /* The join's polyline f (controls c1, c2 from a's exit to b's entry),
- * point by point, stopping at its first segment that crosses the join
- * sewn last (skip context sk): 1 then (a hit the grid query would find
- * too, without its walk or the rest of f), else 0 with f complete. */
+ * tested against the join sewn last (skip context sk) segment by segment as
+ * its points are made, those where joins cross it most often first (a
+ * quarter of the way along: near the primitive both meet): 1 at the first
+ * crossing (a hit the grid query would find too, without its walk or the
+ * rest of f), else 0 with f complete. */
 static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec2 c1,
                              qc_vec2 c2, qc_vec2 *f, skipctx *sk)
 {
-    int k;
+    static const unsigned char first[NFLAT] = {5, 4, 6, 3, 2, 1, 0, 7,
+                                               8, 9, 10, 11, 12, 13, 14, 15};
+    int made = 0, o;
 
-    f[0] = flat_point(a->exit, c1, c2, b->entry, 0);
-    for (k = 1; k <= NFLAT; k++) {
-        f[k] = flat_point(a->exit, c1, c2, b->entry, k);
-        if (w->last.n > 0 && !skip_last(sk, (size_t)k - 1) &&
-            qc__wchain_seg_touch(&w->last, f + k - 1))
+    for (o = 0; o < NFLAT; o++) {
+        size_t k = first[o];
+        for (; made <= (int)k + 1; made++)
+            f[made] = flat_point(a->exit, c1, c2, b->entry, made);
+        if (w->last.n > 0 && !skip_last(sk, k) && qc__wchain_seg_touch(&w->last, f + k))
             return 1;
     }
+    for (; made <= NFLAT; made++)
+        f[made] = flat_point(a->exit, c1, c2, b->entry, made);
     return 0;
 }
 
