@@ -33,6 +33,14 @@ typedef struct hrec {
     uint32_t m, owner;
 } hrec;
 
+/* What orient needs of a motif, worked out once per motif rather than
+ * per placement (the same arithmetic, so the same bits): its legs'
+ * bisector mb and the reflection about it, H = 2 mb mb^T - I. */
+typedef struct mgeo {
+    qc_vec2 mb;
+    double h00, h01, h11;
+} mgeo;
+
 typedef struct cand {
     double score;
     uint32_t m;
@@ -44,6 +52,7 @@ typedef struct wrun {
     const qc_motif_set *set;
     uint32_t *var;
     size_t nvar;
+    mgeo *geo;           /* by motif index */
     double s;
     qc__cgrid grid;
     hrec *rec;           /* the hulls in the grid, by record */
@@ -87,20 +96,32 @@ static qc_vec2 lin(const qc__xf *f, qc_vec2 d, double k)
     return r;
 }
 
-/* The map of motif m centred at c, bisector along bis, scaled k, mirrored or not. */
-static qc__xf orient(const qc_motif *m, qc_vec2 c, qc_vec2 bis, double k, int mirror)
+static mgeo motif_geo(const qc_motif *m)
 {
-    qc_vec2 mb = unit(m->entry_dir.x + m->exit_dir.x, m->entry_dir.y + m->exit_dir.y);
+    mgeo g;
+
+    g.mb = unit(m->entry_dir.x + m->exit_dir.x, m->entry_dir.y + m->exit_dir.y);
+    if (g.mb.x == 0 && g.mb.y == 0)
+        g.mb.y = -1;
+    g.h00 = 2 * g.mb.x * g.mb.x - 1;
+    g.h01 = 2 * g.mb.x * g.mb.y;
+    g.h11 = 2 * g.mb.y * g.mb.y - 1;
+    return g;
+}
+
+/* The map of a motif (geometry g) centred at c, bisector along bis, scaled
+ * k, mirrored or not. */
+static qc__xf orient(const mgeo *g, qc_vec2 c, qc_vec2 bis, double k, int mirror)
+{
+    qc_vec2 mb = g->mb;
     double co, si, a, b, cc, d;
     qc__xf f;
 
-    if (mb.x == 0 && mb.y == 0)
-        mb.y = -1;
     co = mb.x * bis.x + mb.y * bis.y;
     si = mb.x * bis.y - mb.y * bis.x;
     a = co; b = -si; cc = si; d = co;
-    if (mirror) { /* reflect about the motif's bisector first: H = 2 mb mb^T - I */
-        double h00 = 2 * mb.x * mb.x - 1, h01 = 2 * mb.x * mb.y, h11 = 2 * mb.y * mb.y - 1;
+    if (mirror) { /* reflect about the motif's bisector first */
+        double h00 = g->h00, h01 = g->h01, h11 = g->h11;
         double na = a * h00 + b * h01, nb = a * h01 + b * h11;
         double nc = cc * h00 + d * h01, nd = cc * h01 + d * h11;
         a = na; b = nb; cc = nc; d = nd;
@@ -117,7 +138,7 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     prim p;
 
     memset(&p, 0, sizeof p);
-    p.xf = orient(mo, c, bis, w->s / 2, mirror);
+    p.xf = orient(&w->geo[m], c, bis, w->s / 2, mirror);
     p.m = m;
     p.in_dir = lin(&p.xf, mo->entry_dir, w->s / 2);
     p.out_dir = lin(&p.xf, mo->exit_dir, w->s / 2);
@@ -360,10 +381,12 @@ static int alloc_run(wrun *w)
     size_t i, maxhull = 0;
 
     w->var = qc__alloc_array(w->ctx, w->set->n, sizeof *w->var);
+    w->geo = qc__alloc_array(w->ctx, w->set->n, sizeof *w->geo);
     w->pr = qc__alloc_array(w->ctx, w->n, sizeof *w->pr);
-    if (w->var == NULL || w->pr == NULL)
+    if (w->var == NULL || w->geo == NULL || w->pr == NULL)
         return QC_ENOMEM;
     for (i = 0; i < w->set->n; i++) {
+        w->geo[i] = motif_geo(&w->set->m[i]);
         if (w->set->m[i].legs == 2)
             w->var[w->nvar++] = (uint32_t)i;
         if (w->set->m[i].nhull > maxhull)
@@ -600,8 +623,10 @@ static void wrun_free(wrun *w)
     qc__free(ctx, w->rec, w->rec_cap * sizeof *w->rec);
     qc__free(ctx, w->hbuf, 2 * w->nhbuf * sizeof *w->hbuf);
     qc__free(ctx, w->pr, w->n * sizeof *w->pr);
-    if (w->set != NULL)
+    if (w->set != NULL) {
         qc__free(ctx, w->var, w->set->n * sizeof *w->var);
+        qc__free(ctx, w->geo, w->set->n * sizeof *w->geo);
+    }
     qc_motif_set_free(ctx, &w->def);
 }
 
