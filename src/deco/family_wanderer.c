@@ -68,6 +68,7 @@ typedef struct wrun {
     prim *pr;
     qc__wchain last;     /* the join sewn last, tested first (most failures cross it) */
     uint32_t last_id;
+    double wt[NFLAT + 1][4]; /* the joins' flattening weights */
     qc_motif_set def;    /* built-in variants when no motif has legs */
 } wrun;
 
@@ -222,22 +223,33 @@ static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_ve
     c2->y = b->entry.y + b->in_dir.y * len;
 }
 
-/* Point k of NFLAT + 1 along the cubic p0 c1 c2 p3. */
-static qc_vec2 flat_point(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, int k)
+/* The Bernstein weights of the NFLAT + 1 points along a join, once. */
+static void flat_weights(double (*wt)[4])
 {
-    double t = (double)k / NFLAT, u = 1 - t;
-    double w0 = u * u * u, w1 = 3 * u * u * t, w2 = 3 * u * t * t, w3 = t * t * t;
+    int k;
+    for (k = 0; k <= NFLAT; k++) {
+        double t = (double)k / NFLAT, u = 1 - t;
+        wt[k][0] = u * u * u;
+        wt[k][1] = 3 * u * u * t;
+        wt[k][2] = 3 * u * t * t;
+        wt[k][3] = t * t * t;
+    }
+}
+
+/* Point k of NFLAT + 1 along the cubic p0 c1 c2 p3 (weights wt[k]). */
+static qc_vec2 flat_point(const double *wt, qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3)
+{
     qc_vec2 o;
-    o.x = w0 * p0.x + w1 * c1.x + w2 * c2.x + w3 * p3.x;
-    o.y = w0 * p0.y + w1 * c1.y + w2 * c2.y + w3 * p3.y;
+    o.x = wt[0] * p0.x + wt[1] * c1.x + wt[2] * c2.x + wt[3] * p3.x;
+    o.y = wt[0] * p0.y + wt[1] * c1.y + wt[2] * c2.y + wt[3] * p3.y;
     return o;
 }
 
-static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
+static void flat_join(const wrun *w, qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
 {
     int k;
     for (k = 0; k <= NFLAT; k++)
-        o[k] = flat_point(p0, c1, c2, p3, k);
+        o[k] = flat_point(w->wt[k], p0, c1, c2, p3);
 }
 
 /* The join's polyline f (controls c1, c2 from a's exit to b's entry),
@@ -256,12 +268,12 @@ static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec
     for (o = 0; o < NFLAT; o++) {
         size_t k = first[o];
         for (; made <= (int)k + 1; made++)
-            f[made] = flat_point(a->exit, c1, c2, b->entry, made);
+            f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
         if (w->last.n > 0 && !skip_last(sk, k) && qc__wchain_seg_touch(&w->last, f + k))
             return 1;
     }
     for (; made <= NFLAT; made++)
-        f[made] = flat_point(a->exit, c1, c2, b->entry, made);
+        f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
     return 0;
 }
 
@@ -576,7 +588,7 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
     if (!ok) { /* nothing helped: keep the stated tangents */
         w->st->joins_unfixed++;
         join_ctrl(&pr[i], &pr[j], w->l, &c1, &c2);
-        flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
+        flat_join(w, pr[i].exit, c1, c2, pr[j].entry, f);
     }
     QC__TRY(qc__cgrid_add_chain(w->ctx, &w->grid, f, NFLAT + 1, K_JOIN, (uint32_t)i));
     qc__wchain_set(&w->last, f, NFLAT + 1);
@@ -651,6 +663,7 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
     w.s = params->size;
     w.l = params->tangent >= 0 ? params->tangent : 0;
     w.st = stats != NULL ? stats : memset(&dummy, 0, sizeof dummy);
+    flat_weights(w.wt);
     rc = pick_set(&w, motifs);
     if (rc == QC_OK)
         rc = alloc_run(&w);
