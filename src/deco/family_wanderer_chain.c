@@ -4,6 +4,8 @@
  * leaves), and a direct test finds that without walking the grid's cells.
  * Only a shortcut to "hit": a clear answer still goes to the grid.
  */
+#include <math.h>
+
 #include "family_wanderer.h"
 
 static void seg_box(const qc_vec2 *p, qc_bbox *b)
@@ -18,6 +20,40 @@ static int apart(const qc_bbox *a, const qc_bbox *b)
 {
     return a->max.x + 1e-9 < b->min.x || b->max.x + 1e-9 < a->min.x ||
            a->max.y + 1e-9 < b->min.y || b->max.y + 1e-9 < a->min.y;
+}
+
+/* Whether a's own normal separates segments a and b by more than eps:
+ * shared_collide.c's separated_by for two segments, the same arithmetic
+ * in the same order (so the same answers), without its generality. */
+static int normal_separates(const qc_vec2 *a, const qc_vec2 *b, double eps)
+{
+    double ax = a[1].y - a[0].y, ay = a[0].x - a[1].x;
+    double alo = a[0].x * ax + a[0].y * ay, ahi = alo, blo, bhi, d, len, e;
+
+    d = a[1].x * ax + a[1].y * ay;
+    if (d < alo)
+        alo = d;
+    if (d > ahi)
+        ahi = d;
+    blo = bhi = b[0].x * ax + b[0].y * ay;
+    d = b[1].x * ax + b[1].y * ay;
+    if (d < blo)
+        blo = d;
+    if (d > bhi)
+        bhi = d;
+    if (!(ahi < blo || bhi < alo))
+        return 0;
+    len = sqrt(ax * ax + ay * ay);
+    if (len < 1e-15)
+        return 0;
+    e = eps * len;
+    return ahi + e < blo || bhi + e < alo;
+}
+
+/* qc__convex_touch of two segments whose boxes meet within 1e-9. */
+static int segs_touch(const qc_vec2 *a, const qc_vec2 *b)
+{
+    return !normal_separates(a, b, 1e-9) && !normal_separates(b, a, 1e-9);
 }
 
 void qc__wchain_set(qc__wchain *c, const qc_vec2 *pts, size_t n)
@@ -60,7 +96,7 @@ int qc__wchain_seg_touch(const qc__wchain *c, const qc_vec2 *s)
         if (apart(&sb, &c->grp[grp]))
             continue;
         for (m = hi < c->n - 1 ? hi : c->n - 1; m-- > lo;)
-            if (!apart(&sb, &c->seg[m]) && qc__convex_touch(s, 2, c->p + m, 2, 1e-9))
+            if (!apart(&sb, &c->seg[m]) && segs_touch(s, c->p + m))
                 return 1;
     }
     return 0;
