@@ -352,11 +352,13 @@ static uint64_t path_hash(const qc_path *p)
     return h;
 }
 
-/* The joins' shortcuts (the join sewn last tested first, variants turned
- * down before their hull's query) choose exactly what the grid alone
- * chose: the bytes and counts recorded before them (commit c265654), with
- * joins that clear, that need another rung or variant, and that fail all. */
-static void wanderer_should_keep_its_bytes_with_the_join_shortcuts(void)
+/* The speedups (the join sewn last tested first, variants turned down
+ * before their hull's query, the first look's placements reused by the
+ * second) choose exactly what the plain search chose: the bytes and counts
+ * recorded before them (commit c265654), with joins that clear, that need
+ * another rung or variant, and that fail all, and the tours of two and
+ * three points, whose neighbours wrap round. */
+static void wanderer_should_keep_its_bytes_through_the_speedups(void)
 {
     static const struct {
         const char *motifs;
@@ -392,6 +394,19 @@ static void wanderer_should_keep_its_bytes_with_the_join_shortcuts(void)
         qc_motif_set_free(&ctx, &set);
     }
     free_tour(&t);
+    for (k = 2; k <= 3; k++) { /* the shortest tours: each neighbour is the other */
+        static const uint64_t small[] = {0x88e25f9d772a47bcu, 0xa25f01156a2a48fau};
+        qc_skeleton sk;
+        qc_params par = params(0.5);
+        qc_path out = {0};
+
+        circle_tour(30, (int)k, &t);
+        sk = as_skel(&t);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_wanderer(&ctx, &t.r, &par, &sk, NULL, &out, NULL));
+        TEST_ASSERT_TRUE(small[k - 2] == path_hash(&out));
+        qc_path_free(&ctx, &out);
+        free_tour(&t);
+    }
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
@@ -465,7 +480,7 @@ int main(void)
     RUN_TEST(wanderer_should_shrink_primitives_that_reach_the_boundary);
     RUN_TEST(wanderer_should_refuse_empty_tours_and_handle_one_point);
     RUN_TEST(wanderer_should_free_everything_when_allocation_fails);
-    RUN_TEST(wanderer_should_keep_its_bytes_with_the_join_shortcuts);
+    RUN_TEST(wanderer_should_keep_its_bytes_through_the_speedups);
     RUN_TEST(wanderer_chain_should_agree_with_the_collision_grid);
     return UNITY_END();
 }

@@ -66,6 +66,7 @@ typedef struct wrun {
     double l;            /* the joins' tangent factor */
     qc_stats *st;
     prim *pr;
+    prim *keep;          /* 3 x 2 nvar variants placed by choose_variants' first look */
     qc__wchain last;     /* the join sewn last, tested first (most failures cross it) */
     uint32_t last_id;
     double wt[NFLAT + 1][4]; /* the joins' flattening weights */
@@ -149,8 +150,11 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     return p;
 }
 
-/* Every (variant, mirror) for tour point i, best first; returns the count. */
-static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd)
+/* Every (variant, mirror) for tour point i, best first; returns the count.
+ * keep (or NULL): room for 2 nvar primitives, variant v mirrored or not
+ * placed into keep[2 v + mirror]. */
+static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd,
+                   prim *keep)
 {
     size_t n = sk->norder, v, k, nc = 0;
     qc_vec2 c = sk->p[sk->order[i]];
@@ -174,6 +178,8 @@ static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_
                       fabs(qc_hypot(p.out_dir.x - dn.x, p.out_dir.y - dn.y) - 1);
             t.m = w->var[v];
             t.mirror = mir;
+            if (keep != NULL)
+                keep[2 * v + (size_t)mir] = p;
             for (k = nc; k > 0 && cd[k - 1].score > t.score + 1e-9; k--)
                 cd[k] = cd[k - 1];
             cd[k] = t;
@@ -395,7 +401,8 @@ static int alloc_run(wrun *w)
     w->var = qc__alloc_array(w->ctx, w->set->n, sizeof *w->var);
     w->geo = qc__alloc_array(w->ctx, w->set->n, sizeof *w->geo);
     w->pr = qc__alloc_array(w->ctx, w->n, sizeof *w->pr);
-    if (w->var == NULL || w->geo == NULL || w->pr == NULL)
+    w->keep = qc__alloc_array(w->ctx, 6 * w->set->n, sizeof *w->keep);
+    if (w->var == NULL || w->geo == NULL || w->pr == NULL || w->keep == NULL)
         return QC_ENOMEM;
     for (i = 0; i < w->set->n; i++) {
         w->geo[i] = motif_geo(&w->set->m[i]);
@@ -411,37 +418,67 @@ static int alloc_run(wrun *w)
     return QC_OK;
 }
 
-/* Each primitive its best variant, then judged again against the real P0P3. */
-static void choose_variants(wrun *w)
+/* Primitive i its best variant by rank; keep as for rank. */
+static void first_choice(wrun *w, size_t i, prim *keep)
+{
+    const qc_skeleton *skel = w->skel;
+    cand cd[MAXV];
+    qc_vec2 bis;
+
+    rank(w, skel, i, &bis, cd, keep);
+    w->pr[i] = make_prim(w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+}
+
+/* Primitive i's variant judged again against its neighbours' real legs;
+ * placed: its variants as rank placed them (or NULL to place them here). */
+static void second_choice(wrun *w, size_t i, const prim *placed)
 {
     const qc_skeleton *skel = w->skel;
     prim *pr = w->pr;
-    cand cd[MAXV];
-    size_t n = w->n, i, k;
+    size_t n = w->n, k;
+    const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
+    qc_vec2 bis = pr[i].bis;
+    double best = 1e300;
 
-    for (i = 0; i < n; i++) {
-        qc_vec2 bis;
-        rank(w, skel, i, &bis, cd);
-        pr[i] = make_prim(w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
-    }
-    for (i = 0; n > 1 && i < n; i++) {
-        const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
-        qc_vec2 bis = pr[i].bis;
-        double best = 1e300;
-        for (k = 0; k < 2 * w->nvar; k++) {
-            prim q = make_prim(w, w->var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
-            qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
-            qc_vec2 dout;
-            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60);
-            if (!(sc < best - 1e-9)) /* the out leg only adds: it cannot win */
-                continue;
-            dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
-            sc += fabs(fabs(angle_between(q.out_dir, dout)) - 60);
-            if (sc < best - 1e-9) {
-                best = sc;
-                pr[i] = q;
-            }
+    for (k = 0; k < 2 * w->nvar; k++) {
+        prim q = placed != NULL ? placed[k]
+                                : make_prim(w, w->var[k / 2], (int)(k & 1),
+                                            skel->p[skel->order[i]], bis);
+        qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
+        qc_vec2 dout;
+        double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60);
+        if (!(sc < best - 1e-9)) /* the out leg only adds: it cannot win */
+            continue;
+        dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
+        sc += fabs(fabs(angle_between(q.out_dir, dout)) - 60);
+        if (sc < best - 1e-9) {
+            best = sc;
+            pr[i] = q;
         }
+    }
+}
+
+/* Each primitive its best variant, then judged again against the real
+ * P0P3: the second look at i sees i - 1's second choice and i + 1's first.
+ * Both run in one sweep, the first a step ahead, so that the second reuses
+ * the variants the first placed (w->keep: i's, i + 1's and the last's)
+ * rather than placing them again. */
+static void choose_variants(wrun *w)
+{
+    size_t n = w->n, i, nk = 2 * w->nvar;
+    prim *keep = 2 * w->nvar <= MAXV ? w->keep : NULL; /* rank places all of them */
+
+    if (n == 1) {
+        first_choice(w, 0, NULL);
+        return;
+    }
+    first_choice(w, n - 1, keep != NULL ? keep + 2 * nk : NULL);
+    first_choice(w, 0, keep);
+    for (i = 0; i < n; i++) {
+        const prim *mine = keep == NULL ? NULL : i + 1 == n ? keep + 2 * nk : keep + (i & 1) * nk;
+        if (i + 2 < n)
+            first_choice(w, i + 1, keep != NULL ? keep + ((i + 1) & 1) * nk : NULL);
+        second_choice(w, i, mine);
     }
 }
 
@@ -541,7 +578,7 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
     const qc_skeleton *skel = w->skel;
     cand cd[MAXV];
     qc_vec2 bis;
-    size_t nc = rank(w, skel, j, &bis, cd), alt, k;
+    size_t nc = rank(w, skel, j, &bis, cd, NULL), alt, k;
 
     for (alt = 1; alt < nc; alt++) {
         prim q = make_prim(w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
@@ -638,6 +675,7 @@ static void wrun_free(wrun *w)
     if (w->set != NULL) {
         qc__free(ctx, w->var, w->set->n * sizeof *w->var);
         qc__free(ctx, w->geo, w->set->n * sizeof *w->geo);
+        qc__free(ctx, w->keep, 6 * w->set->n * sizeof *w->keep);
     }
     qc_motif_set_free(ctx, &w->def);
 }
