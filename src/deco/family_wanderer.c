@@ -258,14 +258,35 @@ static void flat_join(const wrun *w, qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2
         o[k] = flat_point(w->wt[k], p0, c1, c2, p3);
 }
 
+/* The segments of join i to test against the join sewn last, once per
+ * join rather than per rung: bit k unless skip_seg exempts segment k; none
+ * when no join is kept yet. */
+static unsigned last_mask(const wrun *w, size_t i)
+{
+    skipctx sk;
+    unsigned mask = 0;
+    size_t k;
+
+    if (w->last.n == 0)
+        return 0;
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)w->n;
+    sk.seg = 0;
+    for (k = 0; k < NFLAT; k++)
+        if (!skip_last(&sk, k))
+            mask |= 1u << k;
+    return mask;
+}
+
 /* The join's polyline f (controls c1, c2 from a's exit to b's entry),
- * tested against the join sewn last (skip context sk) segment by segment as
+ * tested against the join sewn last (segments in mask) segment by segment as
  * its points are made, those where joins cross it most often first (a
  * quarter of the way along: near the primitive both meet): 1 at the first
  * crossing (a hit the grid query would find too, without its walk or the
  * rest of f), else 0 with f complete. */
 static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec2 c1,
-                             qc_vec2 c2, qc_vec2 *f, skipctx *sk)
+                             qc_vec2 c2, qc_vec2 *f, unsigned mask)
 {
     static const unsigned char first[NFLAT] = {5, 4, 6, 3, 2, 1, 0, 7,
                                                8, 9, 10, 11, 12, 13, 14, 15};
@@ -275,7 +296,7 @@ static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec
         size_t k = first[o];
         for (; made <= (int)k + 1; made++)
             f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
-        if (w->last.n > 0 && !skip_last(sk, k) && qc__wchain_seg_touch(&w->last, f + k))
+        if ((mask >> k & 1) && qc__wchain_seg_touch(&w->last, f + k))
             return 1;
     }
     for (; made <= NFLAT; made++)
@@ -332,17 +353,13 @@ static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, s
                     qc_vec2 *c1, qc_vec2 *c2, qc_vec2 *f)
 {
     static const double shrink[] = {1, 0.5, 0.25, 0};
-    skipctx sk;
+    unsigned mask = last_mask(w, i);
     size_t tr;
 
-    sk.w = w;
-    sk.i = (uint32_t)i;
-    sk.n = (uint32_t)n;
-    sk.seg = 0;
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, l * shrink[tr], c1, c2);
         /* the join sewn last first: most joins that fail cross it */
-        if (!flat_crosses_last(w, a, b, *c1, *c2, f, &sk) && !join_hits(w, f, i, n))
+        if (!flat_crosses_last(w, a, b, *c1, *c2, f, mask) && !join_hits(w, f, i, n))
             return 1;
         if (l == 0)
             break;
@@ -553,16 +570,12 @@ static int may_join(const wrun *w, const prim *a, const prim *b, size_t i)
 {
     static const double shrink[] = {1, 0.5, 0.25, 0};
     qc_vec2 c1, c2, f[NFLAT + 1];
-    skipctx sk;
+    unsigned mask = last_mask(w, i);
     size_t tr;
 
-    sk.w = w;
-    sk.i = (uint32_t)i;
-    sk.n = (uint32_t)w->n;
-    sk.seg = 0;
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, w->l * shrink[tr], &c1, &c2);
-        if (!flat_crosses_last(w, a, b, c1, c2, f, &sk))
+        if (!flat_crosses_last(w, a, b, c1, c2, f, mask))
             return 1;
         if (w->l == 0)
             break;
