@@ -8,6 +8,9 @@
  * shorter tangents (l/2, l/4, 0), then with the next primitive's other
  * variants; what still crosses is kept as stated and counted. A primitive
  * whose hull reaches the boundary is shrunk (3/4, then 1/2).
+ * Most joins that fail cross the join sewn just before (both meet the same
+ * primitive): each rung is tested against that join first, point by point
+ * (family_wanderer_chain.c), before the grid; the same choices, sooner.
  */
 #include <math.h>
 #include <stdint.h>
