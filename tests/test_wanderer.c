@@ -8,6 +8,7 @@
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
+#include "../src/deco/family_wanderer.h"
 
 static testalloc ta;
 static qc_ctx ctx;
@@ -336,6 +337,141 @@ static void wanderer_should_free_everything_when_allocation_fails(void)
     free_tour(&t);
 }
 
+/* FNV-1a over a path's commands and points: its bytes in one number. */
+static uint64_t path_hash(const qc_path *p)
+{
+    const unsigned char *b[2];
+    size_t len[2], k, i;
+    uint64_t h = 14695981039346656037u;
+
+    b[0] = (const unsigned char *)p->cmd;
+    len[0] = p->ncmd * sizeof *p->cmd;
+    b[1] = (const unsigned char *)p->pt;
+    len[1] = p->npt * sizeof *p->pt;
+    for (k = 0; k < 2; k++)
+        for (i = 0; i < len[k]; i++)
+            h = (h ^ b[k][i]) * 1099511628211u;
+    return h;
+}
+
+/* The speedups (the join sewn last tested first, variants turned down
+ * before their hull's query, the first look's placements reused by the
+ * second) choose exactly what the plain search chose: the bytes and counts
+ * recorded before them (commit c265654), with joins that clear, that need
+ * another rung or variant, and that fail all, and the tours of two and
+ * three points, whose neighbours wrap round. */
+static void wanderer_should_keep_its_bytes_through_the_speedups(void)
+{
+    static const struct {
+        const char *motifs;
+        double l;
+        size_t unfixed;
+        uint64_t hash;
+    } want[] = {
+        {NULL, 0.5, 16, 0x573110792a53bdfbu},
+        {NULL, 0, 18, 0x73215b1491e5a91fu},
+        {"heart", 0.5, 2, 0xa8e0605d7e5e504fu},
+    };
+    ttour t;
+    size_t k;
+
+    square_tour(16, 12, 10, 7, &t);
+    for (k = 0; k < sizeof want / sizeof want[0]; k++) {
+        qc_skeleton sk = as_skel(&t);
+        qc_params par = params(want[k].l);
+        qc_motif_set set = {0};
+        qc_path out = {0};
+        qc_stats st;
+
+        memset(&st, 0, sizeof st);
+        par.size = 8;
+        if (want[k].motifs != NULL)
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_builtin(&ctx, want[k].motifs, &set));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_wanderer(&ctx, &t.r, &par, &sk,
+                                                      want[k].motifs != NULL ? &set : NULL,
+                                                      &out, &st));
+        TEST_ASSERT_EQUAL_UINT(want[k].unfixed, st.joins_unfixed);
+        TEST_ASSERT_TRUE(want[k].hash == path_hash(&out));
+        qc_path_free(&ctx, &out);
+        qc_motif_set_free(&ctx, &set);
+    }
+    free_tour(&t);
+    for (k = 2; k <= 3; k++) { /* the shortest tours: each neighbour is the other */
+        static const uint64_t small[] = {0x88e25f9d772a47bcu, 0xa25f01156a2a48fau};
+        qc_skeleton sk;
+        qc_params par = params(0.5);
+        qc_path out = {0};
+
+        circle_tour(30, (int)k, &t);
+        sk = as_skel(&t);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_deco_wanderer(&ctx, &t.r, &par, &sk, NULL, &out, NULL));
+        TEST_ASSERT_TRUE(small[k - 2] == path_hash(&out));
+        qc_path_free(&ctx, &out);
+        free_tour(&t);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
+/* Exempts segments 2 and 3 of a query (those that meet at its point 3). */
+static int skip_third(void *ud, size_t k)
+{
+    (void)ud;
+    return k == 2 || k == 3;
+}
+
+static int skip_third_seg(void *ud, unsigned kind, uint32_t id, size_t k)
+{
+    (void)kind;
+    (void)id;
+    return skip_third(ud, k);
+}
+
+/* The kept chain reports a hit only where the collision grid holding that
+ * chain finds one too (the shortcut may stop a query, never change it), and
+ * on these random wiggles finds every one. */
+static void wanderer_chain_should_agree_with_the_collision_grid(void)
+{
+    enum { NP = 17 };
+    qc_rng rng;
+    qc_vec2 c[NP], q[NP];
+    qc__wchain kept;
+    size_t trial, k, hits = 0, clear = 0;
+
+    qc_rng_seed(&rng, 11);
+    for (trial = 0; trial < 400; trial++) {
+        qc__cgrid g;
+        qc_bbox box;
+        int fast, grid;
+
+        qc_vec2 at = v2(20 * qc_rng_unit(&rng) - 4, 14 * qc_rng_unit(&rng) - 7);
+
+        for (k = 0; k < NP; k++) { /* a wave, and a short wiggle somewhere near it */
+            c[k] = v2(k * 1.0, 3 * qc_sin(k * 0.7 + trial) + qc_rng_unit(&rng));
+            q[k] = v2(at.x + k * 0.25, at.y + 1.5 * qc_rng_unit(&rng));
+        }
+        if (trial % 5 == 0) /* touching at the exempt segments' joint */
+            q[3] = c[5];
+        box.min = v2(-10, -10);
+        box.max = v2(30, 10);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__cgrid_init(&ctx, &g, box, 2, 4096));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__cgrid_add_chain(&ctx, &g, c, NP, 2, 9));
+        qc__wchain_set(&kept, c, NP);
+        TEST_ASSERT_EQUAL_UINT(NP, kept.n);
+        fast = qc__wchain_touch(&kept, q, NP, skip_third, NULL);
+        grid = qc__cgrid_hit_polyline(&g, q, NP, 1u << 2, skip_third_seg, NULL);
+        TEST_ASSERT_EQUAL_INT(grid, fast);
+        hits += fast != 0;
+        clear += fast == 0;
+        qc__cgrid_free(&ctx, &g);
+    }
+    TEST_ASSERT_GREATER_THAN_UINT(20, hits); /* both answers were exercised */
+    TEST_ASSERT_GREATER_THAN_UINT(20, clear);
+    qc__wchain_set(&kept, c, 1); /* too short to keep: never a hit */
+    TEST_ASSERT_EQUAL_UINT(0, kept.n);
+    TEST_ASSERT_FALSE(qc__wchain_touch(&kept, q, NP, skip_third, NULL));
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -346,5 +482,7 @@ int main(void)
     RUN_TEST(wanderer_should_shrink_primitives_that_reach_the_boundary);
     RUN_TEST(wanderer_should_refuse_empty_tours_and_handle_one_point);
     RUN_TEST(wanderer_should_free_everything_when_allocation_fails);
+    RUN_TEST(wanderer_should_keep_its_bytes_through_the_speedups);
+    RUN_TEST(wanderer_chain_should_agree_with_the_collision_grid);
     return UNITY_END();
 }

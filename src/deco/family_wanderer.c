@@ -8,13 +8,17 @@
  * shorter tangents (l/2, l/4, 0), then with the next primitive's other
  * variants; what still crosses is kept as stated and counted. A primitive
  * whose hull reaches the boundary is shrunk (3/4, then 1/2).
+ * Most joins that fail cross the join sewn just before (both meet the same
+ * primitive): each rung is tested against that join first, point by point
+ * (family_wanderer_chain.c), before the grid; the same choices, sooner.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
-#include "deco_internal.h"
+#include "family_wanderer.h"
 
-enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 };
+enum { K_BOUND = 0, K_PRIM = 1, K_JOIN = 2, NFLAT = 16, MAXV = 64 }; /* NFLAT: see flat_crosses_last */
 
 typedef struct prim {
     qc__xf xf;
@@ -32,6 +36,14 @@ typedef struct hrec {
     uint32_t m, owner;
 } hrec;
 
+/* What orient needs of a motif, worked out once per motif rather than
+ * per placement (the same arithmetic, so the same bits): its legs'
+ * bisector mb and the reflection about it, H = 2 mb mb^T - I. */
+typedef struct mgeo {
+    qc_vec2 mb;
+    double h00, h01, h11;
+} mgeo;
+
 typedef struct cand {
     double score;
     uint32_t m;
@@ -43,6 +55,7 @@ typedef struct wrun {
     const qc_motif_set *set;
     uint32_t *var;
     size_t nvar;
+    mgeo *geo;           /* by motif index */
     double s;
     qc__cgrid grid;
     hrec *rec;           /* the hulls in the grid, by record */
@@ -56,6 +69,10 @@ typedef struct wrun {
     double l;            /* the joins' tangent factor */
     qc_stats *st;
     prim *pr;
+    prim *keep;          /* 3 x 2 nvar variants placed by choose_variants' first look */
+    qc__wchain last;     /* the join sewn last, tested first (most failures cross it) */
+    uint32_t last_id;
+    double wt[NFLAT + 1][4]; /* the joins' flattening weights */
     qc_motif_set def;    /* built-in variants when no motif has legs */
 } wrun;
 
@@ -84,20 +101,32 @@ static qc_vec2 lin(const qc__xf *f, qc_vec2 d, double k)
     return r;
 }
 
-/* The map of motif m centred at c, bisector along bis, scaled k, mirrored or not. */
-static qc__xf orient(const qc_motif *m, qc_vec2 c, qc_vec2 bis, double k, int mirror)
+static mgeo motif_geo(const qc_motif *m)
 {
-    qc_vec2 mb = unit(m->entry_dir.x + m->exit_dir.x, m->entry_dir.y + m->exit_dir.y);
+    mgeo g;
+
+    g.mb = unit(m->entry_dir.x + m->exit_dir.x, m->entry_dir.y + m->exit_dir.y);
+    if (g.mb.x == 0 && g.mb.y == 0)
+        g.mb.y = -1;
+    g.h00 = 2 * g.mb.x * g.mb.x - 1;
+    g.h01 = 2 * g.mb.x * g.mb.y;
+    g.h11 = 2 * g.mb.y * g.mb.y - 1;
+    return g;
+}
+
+/* The map of a motif (geometry g) centred at c, bisector along bis, scaled
+ * k, mirrored or not. */
+static qc__xf orient(const mgeo *g, qc_vec2 c, qc_vec2 bis, double k, int mirror)
+{
+    qc_vec2 mb = g->mb;
     double co, si, a, b, cc, d;
     qc__xf f;
 
-    if (mb.x == 0 && mb.y == 0)
-        mb.y = -1;
     co = mb.x * bis.x + mb.y * bis.y;
     si = mb.x * bis.y - mb.y * bis.x;
     a = co; b = -si; cc = si; d = co;
-    if (mirror) { /* reflect about the motif's bisector first: H = 2 mb mb^T - I */
-        double h00 = 2 * mb.x * mb.x - 1, h01 = 2 * mb.x * mb.y, h11 = 2 * mb.y * mb.y - 1;
+    if (mirror) { /* reflect about the motif's bisector first */
+        double h00 = g->h00, h01 = g->h01, h11 = g->h11;
         double na = a * h00 + b * h01, nb = a * h01 + b * h11;
         double nc = cc * h00 + d * h01, nd = cc * h01 + d * h11;
         a = na; b = nb; cc = nc; d = nd;
@@ -114,7 +143,7 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     prim p;
 
     memset(&p, 0, sizeof p);
-    p.xf = orient(mo, c, bis, w->s / 2, mirror);
+    p.xf = orient(&w->geo[m], c, bis, w->s / 2, mirror);
     p.m = m;
     p.in_dir = lin(&p.xf, mo->entry_dir, w->s / 2);
     p.out_dir = lin(&p.xf, mo->exit_dir, w->s / 2);
@@ -124,8 +153,11 @@ static prim make_prim(const wrun *w, uint32_t m, int mirror, qc_vec2 c, qc_vec2 
     return p;
 }
 
-/* Every (variant, mirror) for tour point i, best first; returns the count. */
-static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd)
+/* Every (variant, mirror) for tour point i, best first; returns the count.
+ * keep (or NULL): room for 2 nvar primitives, variant v mirrored or not
+ * placed into keep[2 v + mirror]. */
+static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_out, cand *cd,
+                   prim *keep)
 {
     size_t n = sk->norder, v, k, nc = 0;
     qc_vec2 c = sk->p[sk->order[i]];
@@ -149,6 +181,8 @@ static size_t rank(const wrun *w, const qc_skeleton *sk, size_t i, qc_vec2 *bis_
                       fabs(qc_hypot(p.out_dir.x - dn.x, p.out_dir.y - dn.y) - 1);
             t.m = w->var[v];
             t.mirror = mir;
+            if (keep != NULL)
+                keep[2 * v + (size_t)mir] = p;
             for (k = nc; k > 0 && cd[k - 1].score > t.score + 1e-9; k--)
                 cd[k] = cd[k - 1];
             cd[k] = t;
@@ -184,6 +218,11 @@ static int skip_fn(void *ud, unsigned kind, uint32_t id)
     return skip_seg(ud, kind, id, ((const skipctx *)ud)->seg);
 }
 
+static int skip_last(void *ud, size_t seg)
+{
+    return skip_seg(ud, K_JOIN, ((const skipctx *)ud)->w->last_id, seg);
+}
+
 static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_vec2 *c2)
 {
     double len = qc_hypot(b->entry.x - a->exit.x, b->entry.y - a->exit.y) * l;
@@ -193,15 +232,79 @@ static void join_ctrl(const prim *a, const prim *b, double l, qc_vec2 *c1, qc_ve
     c2->y = b->entry.y + b->in_dir.y * len;
 }
 
-static void flat_join(qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
+/* The Bernstein weights of the NFLAT + 1 points along a join, once. */
+static void flat_weights(double (*wt)[4])
 {
     int k;
     for (k = 0; k <= NFLAT; k++) {
         double t = (double)k / NFLAT, u = 1 - t;
-        double w0 = u * u * u, w1 = 3 * u * u * t, w2 = 3 * u * t * t, w3 = t * t * t;
-        o[k].x = w0 * p0.x + w1 * c1.x + w2 * c2.x + w3 * p3.x;
-        o[k].y = w0 * p0.y + w1 * c1.y + w2 * c2.y + w3 * p3.y;
+        wt[k][0] = u * u * u;
+        wt[k][1] = 3 * u * u * t;
+        wt[k][2] = 3 * u * t * t;
+        wt[k][3] = t * t * t;
     }
+}
+
+/* Point k of NFLAT + 1 along the cubic p0 c1 c2 p3 (weights wt[k]). */
+static qc_vec2 flat_point(const double *wt, qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3)
+{
+    qc_vec2 o;
+    o.x = wt[0] * p0.x + wt[1] * c1.x + wt[2] * c2.x + wt[3] * p3.x;
+    o.y = wt[0] * p0.y + wt[1] * c1.y + wt[2] * c2.y + wt[3] * p3.y;
+    return o;
+}
+
+static void flat_join(const wrun *w, qc_vec2 p0, qc_vec2 c1, qc_vec2 c2, qc_vec2 p3, qc_vec2 *o)
+{
+    int k;
+    for (k = 0; k <= NFLAT; k++)
+        o[k] = flat_point(w->wt[k], p0, c1, c2, p3);
+}
+
+/* The segments of join i to test against the join sewn last, once per
+ * join rather than per rung: bit k unless skip_seg exempts segment k; none
+ * when no join is kept yet. */
+static unsigned last_mask(const wrun *w, size_t i)
+{
+    skipctx sk;
+    unsigned mask = 0;
+    size_t k;
+
+    if (w->last.n == 0)
+        return 0;
+    sk.w = w;
+    sk.i = (uint32_t)i;
+    sk.n = (uint32_t)w->n;
+    sk.seg = 0;
+    for (k = 0; k < NFLAT; k++)
+        if (!skip_last(&sk, k))
+            mask |= 1u << k;
+    return mask;
+}
+
+/* The join's polyline f (controls c1, c2 from a's exit to b's entry),
+ * tested against the join sewn last (segments in mask) segment by segment as
+ * its points are made, those where joins cross it most often first (a
+ * quarter of the way along: near the primitive both meet): 1 at the first
+ * crossing (a hit the grid query would find too, without its walk or the
+ * rest of f), else 0 with f complete. */
+static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec2 c1,
+                             qc_vec2 c2, qc_vec2 *f, unsigned mask)
+{
+    static const unsigned char first[NFLAT] = {5, 4, 6, 3, 2, 1, 0, 7,
+                                               8, 9, 10, 11, 12, 13, 14, 15};
+    int made = 0, o;
+
+    for (o = 0; o < NFLAT; o++) {
+        size_t k = first[o];
+        for (; made <= (int)k + 1; made++)
+            f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
+        if ((mask >> k & 1) && qc__wchain_seg_touch(&w->last, f + k))
+            return 1;
+    }
+    for (; made <= NFLAT; made++)
+        f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
+    return 0;
 }
 
 /* Whether the join i (polyline f) crosses anything it must not. */
@@ -253,12 +356,13 @@ static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, s
                     qc_vec2 *c1, qc_vec2 *c2, qc_vec2 *f)
 {
     static const double shrink[] = {1, 0.5, 0.25, 0};
+    unsigned mask = last_mask(w, i);
     size_t tr;
 
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, l * shrink[tr], c1, c2);
-        flat_join(a->exit, *c1, *c2, b->entry, f);
-        if (!join_hits(w, f, i, n))
+        /* the join sewn last first: most joins that fail cross it */
+        if (!flat_crosses_last(w, a, b, *c1, *c2, f, mask) && !join_hits(w, f, i, n))
             return 1;
         if (l == 0)
             break;
@@ -315,10 +419,13 @@ static int alloc_run(wrun *w)
     size_t i, maxhull = 0;
 
     w->var = qc__alloc_array(w->ctx, w->set->n, sizeof *w->var);
+    w->geo = qc__alloc_array(w->ctx, w->set->n, sizeof *w->geo);
     w->pr = qc__alloc_array(w->ctx, w->n, sizeof *w->pr);
-    if (w->var == NULL || w->pr == NULL)
+    w->keep = qc__alloc_array(w->ctx, 6 * w->set->n, sizeof *w->keep);
+    if (w->var == NULL || w->geo == NULL || w->pr == NULL || w->keep == NULL)
         return QC_ENOMEM;
     for (i = 0; i < w->set->n; i++) {
+        w->geo[i] = motif_geo(&w->set->m[i]);
         if (w->set->m[i].legs == 2)
             w->var[w->nvar++] = (uint32_t)i;
         if (w->set->m[i].nhull > maxhull)
@@ -331,34 +438,67 @@ static int alloc_run(wrun *w)
     return QC_OK;
 }
 
-/* Each primitive its best variant, then judged again against the real P0P3. */
-static void choose_variants(wrun *w)
+/* Primitive i its best variant by rank; keep as for rank. */
+static void first_choice(wrun *w, size_t i, prim *keep)
+{
+    const qc_skeleton *skel = w->skel;
+    cand cd[MAXV];
+    qc_vec2 bis;
+
+    rank(w, skel, i, &bis, cd, keep);
+    w->pr[i] = make_prim(w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
+}
+
+/* Primitive i's variant judged again against its neighbours' real legs;
+ * placed: its variants as rank placed them (or NULL to place them here). */
+static void second_choice(wrun *w, size_t i, const prim *placed)
 {
     const qc_skeleton *skel = w->skel;
     prim *pr = w->pr;
-    cand cd[MAXV];
-    size_t n = w->n, i, k;
+    size_t n = w->n, k;
+    const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
+    qc_vec2 bis = pr[i].bis;
+    double best = 1e300;
 
-    for (i = 0; i < n; i++) {
-        qc_vec2 bis;
-        rank(w, skel, i, &bis, cd);
-        pr[i] = make_prim(w, cd[0].m, cd[0].mirror, skel->p[skel->order[i]], bis);
-    }
-    for (i = 0; n > 1 && i < n; i++) {
-        const prim *pv = &pr[(i + n - 1) % n], *nx = &pr[(i + 1) % n];
-        qc_vec2 bis = pr[i].bis;
-        double best = 1e300;
-        for (k = 0; k < 2 * w->nvar; k++) {
-            prim q = make_prim(w, w->var[k / 2], (int)(k & 1), skel->p[skel->order[i]], bis);
-            qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
-            qc_vec2 dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
-            double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60) +
-                        fabs(fabs(angle_between(q.out_dir, dout)) - 60);
-            if (sc < best - 1e-9) {
-                best = sc;
-                pr[i] = q;
-            }
+    for (k = 0; k < 2 * w->nvar; k++) {
+        prim q = placed != NULL ? placed[k]
+                                : make_prim(w, w->var[k / 2], (int)(k & 1),
+                                            skel->p[skel->order[i]], bis);
+        qc_vec2 din = unit(pv->exit.x - q.entry.x, pv->exit.y - q.entry.y);
+        qc_vec2 dout;
+        double sc = fabs(fabs(angle_between(q.in_dir, din)) - 60);
+        if (!(sc < best - 1e-9)) /* the out leg only adds: it cannot win */
+            continue;
+        dout = unit(nx->entry.x - q.exit.x, nx->entry.y - q.exit.y);
+        sc += fabs(fabs(angle_between(q.out_dir, dout)) - 60);
+        if (sc < best - 1e-9) {
+            best = sc;
+            pr[i] = q;
         }
+    }
+}
+
+/* Each primitive its best variant, then judged again against the real
+ * P0P3: the second look at i sees i - 1's second choice and i + 1's first.
+ * Both run in one sweep, the first a step ahead, so that the second reuses
+ * the variants the first placed (w->keep: i's, i + 1's and the last's)
+ * rather than placing them again. */
+static void choose_variants(wrun *w)
+{
+    size_t n = w->n, i, nk = 2 * w->nvar;
+    prim *keep = 2 * w->nvar <= MAXV ? w->keep : NULL; /* rank places all of them */
+
+    if (n == 1) {
+        first_choice(w, 0, NULL);
+        return;
+    }
+    first_choice(w, n - 1, keep != NULL ? keep + 2 * nk : NULL);
+    first_choice(w, 0, keep);
+    for (i = 0; i < n; i++) {
+        const prim *mine = keep == NULL ? NULL : i + 1 == n ? keep + 2 * nk : keep + (i & 1) * nk;
+        if (i + 2 < n)
+            first_choice(w, i + 1, keep != NULL ? keep + ((i + 1) & 1) * nk : NULL);
+        second_choice(w, i, mine);
     }
 }
 
@@ -418,6 +558,34 @@ static int fit_prim(wrun *w, size_t i)
     return add_hull(w, p, (uint32_t)i);
 }
 
+/* Whether a join meets a and b alike: the same entry and leg (all a join
+ * to them depends on). */
+static int same_entry(const prim *a, const prim *b)
+{
+    return a->entry.x == b->entry.x && a->entry.y == b->entry.y && a->in_dir.x == b->in_dir.x &&
+           a->in_dir.y == b->in_dir.y;
+}
+
+/* Whether some rung of the tangent ladder for join i: a -> b keeps clear
+ * of the join sewn last: when none does, try_join fails, so a variant is
+ * turned down before its hull's grid query (the same choice, sooner). */
+static int may_join(const wrun *w, const prim *a, const prim *b, size_t i)
+{
+    static const double shrink[] = {1, 0.5, 0.25, 0};
+    qc_vec2 c1, c2, f[NFLAT + 1];
+    unsigned mask = last_mask(w, i);
+    size_t tr;
+
+    for (tr = 0; tr < 4; tr++) {
+        join_ctrl(a, b, w->l * shrink[tr], &c1, &c2);
+        if (!flat_crosses_last(w, a, b, c1, c2, f, mask))
+            return 1;
+        if (w->l == 0)
+            break;
+    }
+    return 0;
+}
+
 /* The join i -> j through one of j's other variants whose hull keeps
  * clear: 1 (pr[j] replaced, c1, c2, f set), 0 if none does, or an error. */
 static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 *c2,
@@ -426,13 +594,16 @@ static int join_other_variant(wrun *w, size_t i, size_t j, qc_vec2 *c1, qc_vec2 
     const qc_skeleton *skel = w->skel;
     cand cd[MAXV];
     qc_vec2 bis;
-    size_t nc = rank(w, skel, j, &bis, cd), alt, k;
+    size_t nc = rank(w, skel, j, &bis, cd, NULL), alt, k;
 
     for (alt = 1; alt < nc; alt++) {
         prim q = make_prim(w, cd[alt].m, cd[alt].mirror, skel->p[skel->order[j]], bis);
         const qc_motif *m = &w->set->m[q.m];
         skipctx sk;
 
+        /* met like the one try_join just failed with, or failing on the join sewn last */
+        if (same_entry(&q, &w->pr[j]) || !may_join(w, &w->pr[i], &q, i))
+            continue;
         for (k = 0; k < m->nhull; k++)
             w->hbuf[k] = qc__xf_apply(&q.xf, m->hull[k]);
         sk.w = w;
@@ -470,10 +641,30 @@ static int sew_step(wrun *w, size_t i, qc_path *out)
     if (!ok) { /* nothing helped: keep the stated tangents */
         w->st->joins_unfixed++;
         join_ctrl(&pr[i], &pr[j], w->l, &c1, &c2);
-        flat_join(pr[i].exit, c1, c2, pr[j].entry, f);
+        flat_join(w, pr[i].exit, c1, c2, pr[j].entry, f);
     }
     QC__TRY(qc__cgrid_add_chain(w->ctx, &w->grid, f, NFLAT + 1, K_JOIN, (uint32_t)i));
+    qc__wchain_set(&w->last, f, NFLAT + 1);
+    w->last_id = (uint32_t)i;
     return qc_path_cubic_to(w->ctx, out, c1, c2, pr[j].entry);
+}
+
+/* Room in out for the whole path at once, each primitive counted as the
+ * largest variant plus its join: at 10^6 points a doubling array would
+ * hold its old and new copies at once. */
+static int reserve_path(wrun *w, qc_path *out)
+{
+    size_t v, cmds = 0, pts = 0;
+
+    for (v = 0; v < w->nvar; v++) {
+        const qc_path *p = &w->set->m[w->var[v]].path;
+        cmds = p->ncmd > cmds ? p->ncmd : cmds;
+        pts = p->npt > pts ? p->npt : pts;
+    }
+    if (w->n > (SIZE_MAX - 1) / (pts + 3))
+        return qc__fail(w->ctx, QC_ENOMEM, "wanderer path of %zu primitives", w->n);
+    QC__TRY(QC__RESERVE_EXACT(w->ctx, out->cmd, out->cmd_cap, out->ncmd + 1 + w->n * (cmds + 1)));
+    return QC__RESERVE_EXACT(w->ctx, out->pt, out->pt_cap, out->npt + 1 + w->n * (pts + 3));
 }
 
 /* The path: primitive, join, primitive, ..., back to the first. */
@@ -481,6 +672,7 @@ static int sew(wrun *w, qc_path *out)
 {
     size_t i;
 
+    QC__TRY(reserve_path(w, out));
     QC__TRY(qc_path_move_to(w->ctx, out, w->pr[0].entry));
     for (i = 0; i < w->n; i++)
         QC__TRY(sew_step(w, i, out));
@@ -496,8 +688,11 @@ static void wrun_free(wrun *w)
     qc__free(ctx, w->rec, w->rec_cap * sizeof *w->rec);
     qc__free(ctx, w->hbuf, 2 * w->nhbuf * sizeof *w->hbuf);
     qc__free(ctx, w->pr, w->n * sizeof *w->pr);
-    if (w->set != NULL)
+    if (w->set != NULL) {
         qc__free(ctx, w->var, w->set->n * sizeof *w->var);
+        qc__free(ctx, w->geo, w->set->n * sizeof *w->geo);
+        qc__free(ctx, w->keep, 6 * w->set->n * sizeof *w->keep);
+    }
     qc_motif_set_free(ctx, &w->def);
 }
 
@@ -522,6 +717,7 @@ int qc_deco_wanderer(qc_ctx *ctx, const qc_region *region, const qc_params *para
     w.s = params->size;
     w.l = params->tangent >= 0 ? params->tangent : 0;
     w.st = stats != NULL ? stats : memset(&dummy, 0, sizeof dummy);
+    flat_weights(w.wt);
     rc = pick_set(&w, motifs);
     if (rc == QC_OK)
         rc = alloc_run(&w);
