@@ -49,7 +49,12 @@ void qc_cubic_split(const qc_vec2 *q, double t, qc_vec2 *l, qc_vec2 *r);
 /* Bounding box of the path's flattened points (control points excluded);
  * all zero for an empty path. tol as for qc_curve_length. */
 qc_bbox qc_curve_bbox(const qc_path *path, double tol);
-/* Both in one walk (as the two calls above give them). */
+/* The length and box of path without flattening it (the stats of every
+ * result): each cubic's arc length by Gauss-Legendre on pieces flat enough
+ * for it (halved otherwise), its box from its extrema. Both are exact to
+ * rounding where flattening to tol falls short of them: the length at or
+ * above qc_curve_length's (chords are shorter than their arcs), the box
+ * containing qc_curve_bbox's and at most tol beyond it. */
 void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *box);
 
 #ifdef __cplusplus
