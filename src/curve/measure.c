@@ -76,6 +76,8 @@ static double cubic_length(const qc_vec2 c[4], double exact_gap)
     int sp = 1, k;
     double len = 0;
 
+    if (smooth_speed(c)) /* most cubics: no stack */
+        return gauss_length(c);
     for (k = 0; k < 4; k++)
         stack[0][k] = c[k];
     depth[0] = 0;
