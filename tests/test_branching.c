@@ -165,6 +165,30 @@ static qc_params base_params(uint64_t seed)
     return p;
 }
 
+/* Every motif is sewn from its attachment: the vine is split there, so
+ * each attachment is the end of a vine piece in the path. The spots are
+ * taken in the vine's order (tips and spots along it merged): one taken
+ * out of order would not split the vine, one past a cubic's end would be
+ * lost, and its attachment would be missing here. */
+static void assert_sewn_at_attachments(const qc_path *out, const qc__placement *pl)
+{
+    size_t a, c, k;
+
+    for (a = 0; a < pl->attach.n; a++) {
+        qc_vec2 at = pl->attach.v[a];
+        int found = 0;
+
+        for (c = 0, k = 0; c < out->ncmd && !found; c++) {
+            size_t nk = out->cmd[c] == QC_PATH_CUBIC ? 3 : 1;
+            qc_vec2 e = out->pt[k + nk - 1];
+
+            found = fabs(e.x - at.x) < 1e-6 && fabs(e.y - at.y) < 1e-6;
+            k += nk;
+        }
+        TEST_ASSERT_TRUE_MESSAGE(found, "an attachment the path does not reach");
+    }
+}
+
 static void check_pattern(int region_kind, uint64_t seed, const char *motif_names)
 {
     qc_region r;
@@ -215,6 +239,7 @@ static void check_pattern(int region_kind, uint64_t seed, const char *motif_name
             }
         }
     }
+    assert_sewn_at_attachments(&out, &pl);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &out, 0.01, &flat, NULL));
     for (i = 0; i < flat.n; i++)
         TEST_ASSERT_TRUE(qc_region_contains(&r, flat.v[i]) ||

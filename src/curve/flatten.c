@@ -192,11 +192,3 @@ qc_bbox qc_curve_bbox(const qc_path *path, double tol)
 {
     return measure_path(path, tol).box;
 }
-
-void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *box)
-{
-    measure m = measure_path(path, tol);
-
-    *length = m.len;
-    *box = m.box;
-}

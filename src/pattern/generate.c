@@ -12,8 +12,9 @@
 #include "../curve/keep_inside.h"
 #include "../sample/sample_internal.h"
 
-/* Curves flattened this close for the length and box in qc_stats: well under
- * a stitch (0.127 mm is the plan's default), a fifth of the cost of 0.01. */
+/* The length and box in qc_stats come from qc_curve_measure, which does not
+ * flatten (the arc length to 1e-5, the exact box): this only bounds its
+ * halving round a cusp, well under a stitch (0.127 mm is the plan's). */
 #define STATS_TOL_MM QC__STATS_TOL_MM
 /* The farthest-fabric raster: d / 10 (its cells grow with the points, so
  * memory stays linear); exact along the boundary and at the winner. */
