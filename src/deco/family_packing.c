@@ -200,11 +200,12 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
     return QC_OK;
 }
 
-/* The motif points all copies would hold, refused over the budget before
- * any copy is drawn. */
-static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set)
+/* The motif points all copies would hold, refused over the budget for
+ * npoints skeleton points (deco.h) before any copy is drawn. */
+static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                         size_t npoints)
 {
-    double total = 0;
+    double total = 0, budget = QC_PACKED_POINTS_BUDGET(npoints);
     size_t i, most = 0;
 
     for (i = 0; i < pb->n; i++) {
@@ -212,11 +213,13 @@ static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set 
         total += (double)k;
         most = k > most ? k : most;
     }
-    if (total > (double)QC_MAX_PACKED_POINTS)
+    if (total > budget)
         return qc__fail(ctx, QC_ELIMIT,
                         "packing: %lu motif copies (up to %lu points each) make %.0f points, "
-                        "over the limit of %u; use a simpler motif or raise the spacing",
-                        (unsigned long)pb->n, (unsigned long)most, total, QC_MAX_PACKED_POINTS);
+                        "over the limit of %.0f for %lu points; use a simpler motif or raise "
+                        "the spacing",
+                        (unsigned long)pb->n, (unsigned long)most, total, budget,
+                        (unsigned long)npoints);
     return QC_OK;
 }
 
@@ -406,7 +409,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)
-        rc = copies_budget(ctx, &pb, motifs);
+        rc = copies_budget(ctx, &pb, motifs, skel->n);
     if (rc == QC_OK)
         rc = attachments(ctx, &pb, motifs, &atts, &first);
     if (rc == QC_OK && pb.k < 1) {
