@@ -253,14 +253,36 @@ static void start_frame(frame *g, uint32_t i, uint32_t next, const qc_motif *m, 
     g->back = back;
 }
 
+/* Room for everything render draws, reserved once: a 10^6-point packing's
+ * path is hundreds of MB, and doubling would leave up to half of it unused
+ * (the peak bytes per point) and copy it on every growth. Per motif its own
+ * commands, the start and the closing stitch; per child the split command,
+ * the stitch out and the one back. */
+static int reserve_render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                          const uint32_t *first, qc_path *out)
+{
+    size_t i, ncmd = out->ncmd, npt = out->npt;
+
+    for (i = 0; i < pb->n; i++) {
+        const qc_path *m = &set->m[pb->motif[i]].path;
+        size_t kids = first[i + 1] - first[i];
+        ncmd += m->ncmd + 2 + 3 * kids;
+        npt += m->npt + 2 + 5 * kids;
+    }
+    QC__TRY(QC__RESERVE_EXACT(ctx, out->cmd, out->cmd_cap, ncmd));
+    return QC__RESERVE_EXACT(ctx, out->pt, out->pt_cap, npt);
+}
+
 static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                   const att *atts, const uint32_t *first, qc_path *out)
 {
     frame *st = NULL;
     size_t sp = 0, cap = 0;
     qc_vec2 e0;
-    int rc;
+    int rc = reserve_render(ctx, pb, set, first, out);
 
+    if (rc != QC_OK)
+        return rc;
     e0 = qc__xf_apply(&pb->xf[0], set->m[pb->motif[0]].entry);
     rc = QC__RESERVE(ctx, st, cap, 64);
     if (rc == QC_OK) {
