@@ -23,6 +23,7 @@
  * frame), computed once: each attachment only compares distances. */
 typedef struct samples {
     qc_vec2 *pt;
+    qc_bbox *box;  /* per cubic (at its first sample's index / (SAMPLES + 1)) */
     size_t *first; /* per motif, its first sample */
     size_t npt;    /* the samples (npt + 1 allocated) */
 } samples;
@@ -30,6 +31,7 @@ typedef struct samples {
 static void samples_free(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
 {
     qc__free(ctx, sm->pt, (sm->npt + 1) * sizeof *sm->pt);
+    qc__free(ctx, sm->box, (sm->npt / (SAMPLES + 1) + 1) * sizeof *sm->box);
     qc__free(ctx, sm->first, (set->n + 1) * sizeof *sm->first);
     memset(sm, 0, sizeof *sm);
 }
@@ -51,7 +53,8 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
     sm->first[set->n] = n;
     sm->npt = n;
     sm->pt = qc__alloc_array(ctx, n + 1, sizeof *sm->pt); /* + 1: never empty */
-    if (sm->pt == NULL) {
+    sm->box = qc__alloc_array(ctx, n / (SAMPLES + 1) + 1, sizeof *sm->box);
+    if (sm->pt == NULL || sm->box == NULL) {
         samples_free(ctx, set, sm);
         return QC_ENOMEM;
     }
@@ -73,8 +76,17 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
                 c[1] = q[0];
                 c[2] = q[1];
                 c[3] = q[2];
-                for (s = 0; s <= SAMPLES; s++)
-                    *out++ = qc_cubic_point(c, (double)s / SAMPLES);
+                qc_bbox *b = &sm->box[(size_t)(out - sm->pt) / (SAMPLES + 1)];
+                for (s = 0; s <= SAMPLES; s++) {
+                    *out = qc_cubic_point(c, (double)s / SAMPLES);
+                    if (s == 0)
+                        b->min = b->max = *out;
+                    b->min.x = fmin(b->min.x, out->x);
+                    b->min.y = fmin(b->min.y, out->y);
+                    b->max.x = fmax(b->max.x, out->x);
+                    b->max.y = fmax(b->max.y, out->y);
+                    out++;
+                }
                 cur = q[2];
             } else {
                 cur = q[0];
@@ -84,12 +96,22 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
     return QC_OK;
 }
 
-/* Where on motif m (unit frame; its cubics sampled at smp) is nearest x:
- * command *cmd at parameter *t. The squared distance sorts out the farther
- * samples; sqrt only where it may decide (as strict as before, so ties
- * still keep the first). */
-static void nearest_on(const qc_motif *m, const qc_vec2 *smp, qc_vec2 x, uint32_t *cmd,
-                       double *t)
+/* Squared distance from x to box b: no sample in b is nearer (rounding is
+ * monotone, so this holds for the computed squares too). */
+static double box_dist2(const qc_bbox *b, qc_vec2 x)
+{
+    double dx = x.x < b->min.x ? b->min.x - x.x : x.x > b->max.x ? x.x - b->max.x : 0;
+    double dy = x.y < b->min.y ? b->min.y - x.y : x.y > b->max.y ? x.y - b->max.y : 0;
+    return dx * dx + dy * dy;
+}
+
+/* Where on motif m (unit frame; its cubics sampled at smp, their boxes at
+ * box) is nearest x: command *cmd at parameter *t. The squared distance
+ * sorts out the farther samples, the box a cubic with none nearer; sqrt
+ * only where it may decide (as strict as before, so ties still keep the
+ * first). */
+static void nearest_on(const qc_motif *m, const qc_vec2 *smp, const qc_bbox *box, qc_vec2 x,
+                       uint32_t *cmd, double *t)
 {
     const qc_path *p = &m->path;
     size_t j, k = qc_path_cmd_points(p->cmd[0]);
@@ -103,6 +125,11 @@ static void nearest_on(const qc_motif *m, const qc_vec2 *smp, qc_vec2 x, uint32_
         k += qc_path_cmd_points(p->cmd[j]);
         if (p->cmd[j] == QC_PATH_CUBIC) {
             int s;
+            if (!(box_dist2(box++, x) < best2)) { /* no sample has d2 < best2 */
+                smp += SAMPLES + 1;
+                cur = q[2];
+                continue;
+            }
             for (s = 0; s <= SAMPLES; s++, smp++) {
                 double dx = smp->x - x.x, dy = smp->y - x.y, d2 = dx * dx + dy * dy, dd;
                 if (!(d2 < best2))
@@ -380,7 +407,8 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
         e = qc__xf_apply(&pb->xf[i], set->m[pb->motif[i]].entry);
         atts[m].parent = p;
         atts[m].kid = (uint32_t)i;
-        nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]], unmap(&pb->xf[p], e),
+        nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]],
+                   sm.box + sm.first[pb->motif[p]] / (SAMPLES + 1), unmap(&pb->xf[p], e),
                    &atts[m].cmd, &atts[m].t);
         m++;
     }
