@@ -188,6 +188,12 @@ static void check_pattern(const qc_region *r, const tskel *t, const qc_params *p
     TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbling_run(&ctx, r, par, &sk, &out, &st, &pb));
     TEST_ASSERT_EQUAL_UINT(pb.n, st.pebbles);
     TEST_ASSERT_GREATER_THAN_UINT(t->p.n / 2, pb.n);
+    /* drawn into one reservation of 8 commands and 20 points a pebble (a
+     * true bound), the path is held cut to size: no slack to the end */
+    if (strict)
+        TEST_ASSERT_TRUE(out.ncmd <= 8 * pb.n + 2 && out.npt <= 20 * pb.n + 2);
+    TEST_ASSERT_EQUAL_size_t(out.npt, out.pt_cap);
+    TEST_ASSERT_EQUAL_size_t(out.ncmd, out.cmd_cap);
     for (i = 0; i < pb.n; i++) {
         size_t touching = 0;
         double bd = qc_region_boundary_distance(r, pb.c[i]);

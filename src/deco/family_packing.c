@@ -456,6 +456,9 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
         rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
+    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
+    qc__free(ctx, kids, n * sizeof *kids);
+    kfirst = kids = NULL;
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)
@@ -467,9 +470,12 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
         if (rc == QC_OK)
             rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
                                TRIM_TOL * d, out, &pb.trim_jumps);
+        qc_path_free(ctx, &raw);
     } else if (rc == QC_OK) {
         rc = render(ctx, &pb, motifs, atts, first, out);
     }
+    if (rc == QC_OK)
+        qc__pebble_path_fit(ctx, out);
     if (rc == QC_OK && stats != NULL) {
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
         stats->motifs_placed += pb.n;
@@ -477,8 +483,6 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
 out:
     qc__free(ctx, atts, n * sizeof *atts);
     qc__free(ctx, first, (n + 1) * sizeof *first);
-    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst);
-    qc__free(ctx, kids, n * sizeof *kids);
     qc_path_free(ctx, &raw);
     qc__pbound_free(ctx, &b);
     qc_motif_set_free(ctx, &def);
