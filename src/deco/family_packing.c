@@ -282,19 +282,20 @@ static void start_frame(frame *g, uint32_t i, uint32_t next, const qc_motif *m, 
 
 /* Room for everything render draws, reserved once: a 10^6-point packing's
  * path is hundreds of MB, and doubling would leave up to half of it unused
- * (the peak bytes per point) and copy it on every growth. Per motif its own
- * commands, the start and the closing stitch; per child the split command,
- * the stitch out and the one back. */
+ * (the peak bytes per point) and copy it on every growth. The first stitch;
+ * per motif its commands but the move, the stitch closing an open motif and
+ * the one back to the parent; per child the piece of the command it splits
+ * (a cubic) and the stitch out to it. */
 static int reserve_render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                           const uint32_t *first, qc_path *out)
 {
-    size_t i, ncmd = out->ncmd, npt = out->npt;
+    size_t i, ncmd = out->ncmd + 1, npt = out->npt + 1;
 
     for (i = 0; i < pb->n; i++) {
         const qc_path *m = &set->m[pb->motif[i]].path;
         size_t kids = first[i + 1] - first[i];
-        ncmd += m->ncmd + 2 + 3 * kids;
-        npt += m->npt + 2 + 5 * kids;
+        ncmd += m->ncmd + 1 + 2 * kids;
+        npt += m->npt + 1 + 4 * kids;
     }
     QC__TRY(QC__RESERVE_EXACT(ctx, out->cmd, out->cmd_cap, ncmd));
     return QC__RESERVE_EXACT(ctx, out->pt, out->pt_cap, npt);
