@@ -390,7 +390,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
 static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                        att **atts_out, uint32_t **first_out)
 {
-    size_t n = pb->n, i, m = 0;
+    size_t n = pb->n, i, g;
     att *atts = qc__alloc_array(ctx, n, sizeof *atts);
     uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
     samples sm;
@@ -400,27 +400,40 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
     if (atts == NULL || first == NULL)
         return QC_ENOMEM;
     QC__TRY(samples_init(ctx, set, &sm));
+    /* grouped by parent as they are made (a counting sort: no qsort of 10^6
+     * entries, nor its hidden buffer); first[p] runs to the group's end */
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < n; i++)
+        if (pb->parent[i] != QC__PEB_NONE)
+            first[pb->parent[i] + 1]++;
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         qc_vec2 e;
+        att *a;
         if (p == QC__PEB_NONE)
             continue;
+        a = &atts[first[p]++];
         e = qc__xf_apply(&pb->xf[i], set->m[pb->motif[i]].entry);
-        atts[m].parent = p;
-        atts[m].kid = (uint32_t)i;
+        a->parent = p;
+        a->kid = (uint32_t)i;
         nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]],
                    sm.box + sm.first[pb->motif[p]] / (SAMPLES + 1), unmap(&pb->xf[p], e),
-                   &atts[m].cmd, &atts[m].t);
-        m++;
+                   &a->cmd, &a->t);
     }
     samples_free(ctx, set, &sm);
-    if (m > 1)
-        qsort(atts, m, sizeof *atts, cmp_att);
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < m; i++)
-        first[atts[i].parent + 1]++;
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
+    for (i = n; i > 0; i--)
+        first[i] = first[i - 1];
+    first[0] = 0;
+    for (g = 0; g < n; g++) /* each group (a few children) in the order cmp_att gives */
+        for (i = first[g] + 1; i < first[g + 1]; i++) {
+            att x = atts[i];
+            size_t k = i;
+            for (; k > first[g] && cmp_att(&atts[k - 1], &x) > 0; k--)
+                atts[k] = atts[k - 1];
+            atts[k] = x;
+        }
     return QC_OK;
 }
 
