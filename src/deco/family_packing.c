@@ -183,13 +183,20 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
 {
     size_t n = pb->n, i, nchoice = 0;
     uint32_t *choice = qc__alloc_array(ctx, set->n, sizeof *choice);
+    double *have = qc__alloc_array(ctx, set->n, sizeof *have); /* entry angles */
     qc_rng rng;
 
     pb->motif = qc__alloc_array(ctx, n, sizeof *pb->motif);
     pb->xf = qc__alloc_array(ctx, n, sizeof *pb->xf);
-    if (choice == NULL || pb->motif == NULL || pb->xf == NULL) {
+    if (choice == NULL || have == NULL || pb->motif == NULL || pb->xf == NULL) {
         qc__free(ctx, choice, set->n * sizeof *choice);
+        qc__free(ctx, have, set->n * sizeof *have);
         return QC_ENOMEM;
+    }
+    for (i = 0; i < set->n; i++) {
+        const qc_motif *m = &set->m[i];
+        have[i] = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
+                                                     : -QC_PI / 2;
     }
     for (i = 0; i < set->n; i++) /* closed motifs first; open ones only if that is all */
         if (set->m[i].legs == 0 && set->m[i].path.ncmd >= 2)
@@ -200,22 +207,19 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
                 choice[nchoice++] = (uint32_t)i;
     if (nchoice == 0) {
         qc__free(ctx, choice, set->n * sizeof *choice);
+        qc__free(ctx, have, set->n * sizeof *have);
         return qc__fail(ctx, QC_EINVAL, "packing: the motif set has no drawable motif");
     }
     qc_rng_seed(&rng, seed ^ 0x7061636b696e67ull);
     for (i = 0; i < n; i++) {
-        const qc_motif *m;
         uint32_t p = pb->parent[i];
-        double want, have, s, co, si;
+        double want, s, co, si;
         pb->motif[i] = choice[nchoice > 1 ? qc_rng_below(&rng, nchoice) : 0];
-        m = &set->m[pb->motif[i]];
         want = p == QC__PEB_NONE ? a0
                                  : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
-        have = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
-                                                  : -QC_PI / 2;
         s = FIT * pb->r[i] - inset;
-        co = qc_cos(want - have);
-        si = qc_sin(want - have);
+        co = qc_cos(want - have[pb->motif[i]]);
+        si = qc_sin(want - have[pb->motif[i]]);
         pb->xf[i].a = s * co;
         pb->xf[i].b = -s * si;
         pb->xf[i].c = s * si;
@@ -224,6 +228,7 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
         pb->xf[i].ty = pb->c[i].y;
     }
     qc__free(ctx, choice, set->n * sizeof *choice);
+    qc__free(ctx, have, set->n * sizeof *have);
     return QC_OK;
 }
 
