@@ -341,6 +341,58 @@ static void test_generate_should_use_memory_linear_in_the_points(void)
     TEST_ASSERT_TRUE(measured >= 5);
 }
 
+/* Packing's copies budget grows with the block (issue 21): a heart packing
+ * of the 10^6-point blocks (10 m at d = 10 mm and 3 m at 3 mm, on the
+ * default snub lattice) fits it, where the fixed 4e6 cap refused it, and a
+ * 60,000-point motif is still refused there. The pebbles per point come
+ * from a real packing of a small block, the count from the sampler's
+ * estimate: no 10^6 run in the suite. */
+static void test_packing_budget_should_admit_a_million_point_block(void)
+{
+    static const struct {
+        const char *shape;
+        double d;
+    } block[] = {{"square:10000", 10}, {"square:3000", 3}};
+    qc_region r = {0};
+    qc_params p;
+    qc_result res;
+    qc_motif_set heart = {0};
+    double per_point, copy;
+    size_t k;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_builtin(&ctx, "heart", &heart));
+    copy = (double)heart.m[0].path.npt;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "square:500", 1.0, &r));
+    memset(&p, 0, sizeof p);
+    qc_params_set(&ctx, &p, "family", QC_FAMILY_PACKING);
+    qc_params_set(&ctx, &p, "spacing", 10);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, &heart, &res));
+    per_point = (double)res.stats.pebbles / (double)res.points.n;
+    TEST_ASSERT_TRUE(per_point > 1.0 && per_point < 1.6);
+    qc_result_free(&ctx, &res);
+    qc_region_free(&ctx, &r);
+    for (k = 0; k < sizeof block / sizeof *block; k++) {
+        qc_sample_params sp = {QC_SAMPLE_SNUB, 0, 0, 0, 0, 0};
+        double n, need;
+        memset(&r, 0, sizeof r);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, block[k].shape, 1.0, &r));
+        sp.spacing = block[k].d;
+        sp.margin = 0.3 * block[k].d;
+        n = qc_sample_estimate(&r, &sp);
+        TEST_ASSERT_TRUE(n > 9e5 && n < (double)QC_MAX_POINTS);
+        need = 1.1 * n * per_point * copy; /* 10% over: the big block's own ratio */
+        TEST_ASSERT_TRUE(need > (double)QC_MAX_PACKED_POINTS); /* the old cap's refusal */
+        TEST_ASSERT_TRUE(need <= QC_PACKED_POINTS_BUDGET(n));
+        TEST_ASSERT_TRUE(n * per_point * 60001.0 > QC_PACKED_POINTS_BUDGET(n));
+        /* and memory stays within the goal: a motif point costs well under
+         * 1 KB / QC_PACKED_POINTS_PER_POINT bytes downstream */
+        TEST_ASSERT_TRUE(QC_PACKED_POINTS_BUDGET(n) / n * 17.0 * 2 < 1024.0);
+        qc_region_free(&ctx, &r);
+    }
+    qc_motif_set_free(&ctx, &heart);
+    assert_clean();
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -355,5 +407,6 @@ int main(void)
     RUN_TEST(test_stitch_plan_should_refuse_too_many_splits_before_growing);
     RUN_TEST(test_shapes_should_cap_size_and_segments);
     RUN_TEST(test_generate_should_use_memory_linear_in_the_points);
+    RUN_TEST(test_packing_budget_should_admit_a_million_point_block);
     return UNITY_END();
 }

@@ -145,6 +145,21 @@ static void check_packing(int hole, int edge, const char *names)
             TEST_ASSERT_TRUE(ax * bx + ay * by > 0);
         }
     }
+    if (use != NULL && edge == QC_EDGE_STRICT) { /* drawn straight into out */
+        /* reserved once, before drawing, for at most the up-front bound (a
+         * 10^6-point packing's path is hundreds of MB, so a doubling would
+         * cost up to half of it again), then cut to size */
+        size_t want_pt = 1, want_cmd = 1; /* the first stitch */
+        for (i = 0; i < pb.n; i++) { /* a motif, its closing and return stitches;
+                                      * its split parent command and stitch out */
+            const qc_path *mp = &use->m[pb.motif[i]].path;
+            want_pt += mp->npt + 1 + (pb.parent[i] != QC__PEB_NONE ? 4 : 0);
+            want_cmd += mp->ncmd + 1 + (pb.parent[i] != QC__PEB_NONE ? 2 : 0);
+        }
+        TEST_ASSERT_TRUE(out.npt <= want_pt && out.ncmd <= want_cmd);
+        TEST_ASSERT_EQUAL_size_t(out.npt, out.pt_cap);
+        TEST_ASSERT_EQUAL_size_t(out.ncmd, out.cmd_cap);
+    }
     TEST_ASSERT_EQUAL_UINT(1, qc_path_pieces(&out));
     TEST_ASSERT_EQUAL_INT(QC_PATH_MOVE, out.cmd[0]);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &out, 0.01, &flat, NULL));

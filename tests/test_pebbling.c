@@ -4,6 +4,7 @@
  * one piece round each pebble once, inside the region, without crossing
  * itself; overgrow trims and joins along the boundary; errors; OOM. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -187,6 +188,12 @@ static void check_pattern(const qc_region *r, const tskel *t, const qc_params *p
     TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbling_run(&ctx, r, par, &sk, &out, &st, &pb));
     TEST_ASSERT_EQUAL_UINT(pb.n, st.pebbles);
     TEST_ASSERT_GREATER_THAN_UINT(t->p.n / 2, pb.n);
+    /* drawn into one reservation of 8 commands and 20 points a pebble (a
+     * true bound), the path is held cut to size: no slack to the end */
+    if (strict)
+        TEST_ASSERT_TRUE(out.ncmd <= 8 * pb.n + 2 && out.npt <= 20 * pb.n + 2);
+    TEST_ASSERT_EQUAL_size_t(out.npt, out.pt_cap);
+    TEST_ASSERT_EQUAL_size_t(out.ncmd, out.cmd_cap);
     for (i = 0; i < pb.n; i++) {
         size_t touching = 0;
         double bd = qc_region_boundary_distance(r, pb.c[i]);
@@ -598,6 +605,75 @@ static void pebbling_should_free_everything_when_allocation_fails(void)
     qc_region_free(&ctx, &r);
 }
 
+/* FNV-1a over a path's commands and point bits. */
+static uint64_t path_digest(const qc_path *p)
+{
+    uint64_t h = 1469598103934665603ull;
+    size_t i, k;
+
+    for (i = 0; i < p->ncmd; i++)
+        h = (h ^ p->cmd[i]) * 1099511628211ull;
+    for (i = 0; i < p->npt; i++) {
+        const unsigned char *b = (const unsigned char *)&p->pt[i];
+        for (k = 0; k < sizeof p->pt[i]; k++)
+            h = (h ^ b[k]) * 1099511628211ull;
+    }
+    return h;
+}
+
+/* The speedups of issue 21 (a pair search asking the pebbles gathered once,
+ * packing's nearest motif point skipping far cubics, its path reserved
+ * once, keep-inside's deferred sample count) change no byte: pebbling and
+ * packing on a star and a circle, strict and overgrown, on the lattices
+ * and Poisson points, hash to what the code before them drew. */
+static void pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedups(void)
+{
+    static const struct {
+        int family, points, edge;
+        const char *shape;
+        uint64_t digest;
+    } run[] = {
+        {QC_FAMILY_PEBBLING, QC_POINTS_SNUB, QC_EDGE_STRICT, "star:250",
+         0x7ba7078e434b7ba4ull},
+        {QC_FAMILY_PEBBLING, QC_POINTS_HEX, QC_EDGE_OVERGROW, "circle:200",
+         0xbb8275b2b57b70b3ull},
+        {QC_FAMILY_PEBBLING, QC_POINTS_POISSON, QC_EDGE_STRICT, "heart:220",
+         0x275b5505c857510dull},
+        {QC_FAMILY_PACKING, QC_POINTS_SNUB, QC_EDGE_STRICT, "star:250",
+         0x716523c716f550a9ull},
+        {QC_FAMILY_PACKING, QC_POINTS_SQUARE, QC_EDGE_OVERGROW, "circle:200",
+         0xd999e212c62f871cull},
+        {QC_FAMILY_PACKING, QC_POINTS_POISSON, QC_EDGE_STRICT, "heart:220",
+         0xbdfc9ee3df7703b6ull},
+    };
+    size_t k;
+
+    for (k = 0; k < sizeof run / sizeof *run; k++) {
+        qc_region r = {0};
+        qc_params p;
+        qc_result res;
+        uint64_t h;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, run[k].shape, 1.0, &r));
+        memset(&p, 0, sizeof p);
+        qc_params_set(&ctx, &p, "family", run[k].family);
+        qc_params_set(&ctx, &p, "points", run[k].points);
+        qc_params_set(&ctx, &p, "edge", run[k].edge);
+        qc_params_set(&ctx, &p, "spacing", 8);
+        qc_params_set(&ctx, &p, "seed", 7);
+        p.skip_gap_stat = 1;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_generate(&ctx, &r, &p, NULL, NULL, &res));
+        h = path_digest(&res.path);
+        if (getenv("QC_DIGEST_PRINT"))
+            printf("%lu: 0x%016llxull (%lu points)\n", (unsigned long)k, (unsigned long long)h,
+                   (unsigned long)res.path.npt);
+        TEST_ASSERT_TRUE(res.path.npt > 1000);
+        TEST_ASSERT_TRUE_MESSAGE(h == run[k].digest, run[k].shape);
+        qc_result_free(&ctx, &res);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -613,5 +689,6 @@ int main(void)
     RUN_TEST(pebbling_should_follow_a_tour);
     RUN_TEST(pebbling_should_refuse_empty_tiny_and_bad_input);
     RUN_TEST(pebbling_should_free_everything_when_allocation_fails);
+    RUN_TEST(pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedups);
     return UNITY_END();
 }

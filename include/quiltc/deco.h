@@ -29,13 +29,22 @@ int qc_deco_pebbling(qc_ctx *ctx, const qc_region *region, const qc_params *para
                      const qc_skeleton *skel, const qc_motif_set *motifs,
                      qc_path *out, qc_stats *stats);
 /* Packing draws a copy of a motif per pebble: the copies may hold at most
- * QC_MAX_PACKED_POINTS motif points, counted once the motifs are chosen,
- * before any is drawn (QC_ELIMIT: a 60,000-vertex motif would take
- * gigabytes). */
+ * QC_PACKED_POINTS_BUDGET(n) motif points for n skeleton points, counted once
+ * the motifs are chosen, before any is drawn (QC_ELIMIT: a 60,000-vertex
+ * motif would take gigabytes). The budget grows with the block, sized from
+ * the memory goal of 1 KB per point (issue 21): QC_PACKED_POINTS_PER_POINT
+ * motif points per skeleton point (a built-in motif of up to 18 points at
+ * the lattices' 1.35-1.45 pebbles per point fits), and never less than
+ * QC_MAX_PACKED_POINTS, so a small block may carry a detailed motif. */
 int qc_deco_packing(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                     const qc_skeleton *skel, const qc_motif_set *motifs,
                     qc_path *out, qc_stats *stats);
 #define QC_MAX_PACKED_POINTS 4000000u
+#define QC_PACKED_POINTS_PER_POINT 28u
+#define QC_PACKED_POINTS_BUDGET(n)                                         \
+    ((double)(n) * QC_PACKED_POINTS_PER_POINT > (double)QC_MAX_PACKED_POINTS \
+         ? (double)(n) * QC_PACKED_POINTS_PER_POINT                          \
+         : (double)QC_MAX_PACKED_POINTS)
 /* Fixed-width fill and stippling (§7.1). */
 int qc_deco_fill(qc_ctx *ctx, const qc_region *region, const qc_params *params,
                  const qc_skeleton *skel, const qc_motif_set *motifs,

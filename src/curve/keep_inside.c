@@ -112,16 +112,21 @@ static int known_inside(kin *k, const qc_vec2 *q, size_t n)
     return in_safe(k, q, n) || hull_inside(k, q, n) || clear_inside(k, q, n);
 }
 
+/* The sample count is worked out only where the shortcuts cannot decide
+ * (most commands never need it: its hypots were the checks' largest cost). */
 static int seg_ok(kin *k, qc_vec2 a, qc_vec2 b)
 {
-    double len = qc_hypot(b.x - a.x, b.y - a.y), m = ceil(len / STEP_MM);
-    size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
+    double len, m;
+    size_t i, n;
     qc_vec2 ends[2];
 
     ends[0] = a;
     ends[1] = b;
     if (known_inside(k, ends, 2))
         return 1;
+    len = qc_hypot(b.x - a.x, b.y - a.y);
+    m = ceil(len / STEP_MM);
+    n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
     for (i = 0; i <= n; i++) {
         double t = (double)i / (double)n;
         if (!ok_point(k, QC__V2(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t)))
@@ -132,14 +137,16 @@ static int seg_ok(kin *k, qc_vec2 a, qc_vec2 b)
 
 static int cubic_ok(kin *k, const qc_vec2 *q)
 {
-    double len = qc_hypot(q[1].x - q[0].x, q[1].y - q[0].y) +
-                 qc_hypot(q[2].x - q[1].x, q[2].y - q[1].y) +
-                 qc_hypot(q[3].x - q[2].x, q[3].y - q[2].y);
-    double m = ceil(len / STEP_MM);
-    size_t i, n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
+    double len, m;
+    size_t i, n;
 
     if (known_inside(k, q, 4))
         return 1;
+    len = qc_hypot(q[1].x - q[0].x, q[1].y - q[0].y) +
+          qc_hypot(q[2].x - q[1].x, q[2].y - q[1].y) +
+          qc_hypot(q[3].x - q[2].x, q[3].y - q[2].y);
+    m = ceil(len / STEP_MM);
+    n = m < 1.0 ? 1 : (m < 1e7 ? (size_t)m : 10000000u);
     for (i = 0; i <= n; i++)
         if (!ok_point(k, qc_cubic_point(q, (double)i / (double)n)))
             return 0;

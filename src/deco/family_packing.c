@@ -23,6 +23,7 @@
  * frame), computed once: each attachment only compares distances. */
 typedef struct samples {
     qc_vec2 *pt;
+    qc_bbox *box;  /* per cubic (at its first sample's index / (SAMPLES + 1)) */
     size_t *first; /* per motif, its first sample */
     size_t npt;    /* the samples (npt + 1 allocated) */
 } samples;
@@ -30,6 +31,7 @@ typedef struct samples {
 static void samples_free(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
 {
     qc__free(ctx, sm->pt, (sm->npt + 1) * sizeof *sm->pt);
+    qc__free(ctx, sm->box, (sm->npt / (SAMPLES + 1) + 1) * sizeof *sm->box);
     qc__free(ctx, sm->first, (set->n + 1) * sizeof *sm->first);
     memset(sm, 0, sizeof *sm);
 }
@@ -51,7 +53,8 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
     sm->first[set->n] = n;
     sm->npt = n;
     sm->pt = qc__alloc_array(ctx, n + 1, sizeof *sm->pt); /* + 1: never empty */
-    if (sm->pt == NULL) {
+    sm->box = qc__alloc_array(ctx, n / (SAMPLES + 1) + 1, sizeof *sm->box);
+    if (sm->pt == NULL || sm->box == NULL) {
         samples_free(ctx, set, sm);
         return QC_ENOMEM;
     }
@@ -73,8 +76,17 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
                 c[1] = q[0];
                 c[2] = q[1];
                 c[3] = q[2];
-                for (s = 0; s <= SAMPLES; s++)
-                    *out++ = qc_cubic_point(c, (double)s / SAMPLES);
+                qc_bbox *b = &sm->box[(size_t)(out - sm->pt) / (SAMPLES + 1)];
+                for (s = 0; s <= SAMPLES; s++) {
+                    *out = qc_cubic_point(c, (double)s / SAMPLES);
+                    if (s == 0)
+                        b->min = b->max = *out;
+                    b->min.x = fmin(b->min.x, out->x);
+                    b->min.y = fmin(b->min.y, out->y);
+                    b->max.x = fmax(b->max.x, out->x);
+                    b->max.y = fmax(b->max.y, out->y);
+                    out++;
+                }
                 cur = q[2];
             } else {
                 cur = q[0];
@@ -84,12 +96,22 @@ static int samples_init(qc_ctx *ctx, const qc_motif_set *set, samples *sm)
     return QC_OK;
 }
 
-/* Where on motif m (unit frame; its cubics sampled at smp) is nearest x:
- * command *cmd at parameter *t. The squared distance sorts out the farther
- * samples; sqrt only where it may decide (as strict as before, so ties
- * still keep the first). */
-static void nearest_on(const qc_motif *m, const qc_vec2 *smp, qc_vec2 x, uint32_t *cmd,
-                       double *t)
+/* Squared distance from x to box b: no sample in b is nearer (rounding is
+ * monotone, so this holds for the computed squares too). */
+static double box_dist2(const qc_bbox *b, qc_vec2 x)
+{
+    double dx = x.x < b->min.x ? b->min.x - x.x : x.x > b->max.x ? x.x - b->max.x : 0;
+    double dy = x.y < b->min.y ? b->min.y - x.y : x.y > b->max.y ? x.y - b->max.y : 0;
+    return dx * dx + dy * dy;
+}
+
+/* Where on motif m (unit frame; its cubics sampled at smp, their boxes at
+ * box) is nearest x: command *cmd at parameter *t. The squared distance
+ * sorts out the farther samples, the box a cubic with none nearer; sqrt
+ * only where it may decide (as strict as before, so ties still keep the
+ * first). */
+static void nearest_on(const qc_motif *m, const qc_vec2 *smp, const qc_bbox *box, qc_vec2 x,
+                       uint32_t *cmd, double *t)
 {
     const qc_path *p = &m->path;
     size_t j, k = qc_path_cmd_points(p->cmd[0]);
@@ -103,6 +125,11 @@ static void nearest_on(const qc_motif *m, const qc_vec2 *smp, qc_vec2 x, uint32_
         k += qc_path_cmd_points(p->cmd[j]);
         if (p->cmd[j] == QC_PATH_CUBIC) {
             int s;
+            if (!(box_dist2(box++, x) < best2)) { /* no sample has d2 < best2 */
+                smp += SAMPLES + 1;
+                cur = q[2];
+                continue;
+            }
             for (s = 0; s <= SAMPLES; s++, smp++) {
                 double dx = smp->x - x.x, dy = smp->y - x.y, d2 = dx * dx + dy * dy, dd;
                 if (!(d2 < best2))
@@ -156,13 +183,20 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
 {
     size_t n = pb->n, i, nchoice = 0;
     uint32_t *choice = qc__alloc_array(ctx, set->n, sizeof *choice);
+    double *have = qc__alloc_array(ctx, set->n, sizeof *have); /* entry angles */
     qc_rng rng;
 
     pb->motif = qc__alloc_array(ctx, n, sizeof *pb->motif);
     pb->xf = qc__alloc_array(ctx, n, sizeof *pb->xf);
-    if (choice == NULL || pb->motif == NULL || pb->xf == NULL) {
+    if (choice == NULL || have == NULL || pb->motif == NULL || pb->xf == NULL) {
         qc__free(ctx, choice, set->n * sizeof *choice);
+        qc__free(ctx, have, set->n * sizeof *have);
         return QC_ENOMEM;
+    }
+    for (i = 0; i < set->n; i++) {
+        const qc_motif *m = &set->m[i];
+        have[i] = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
+                                                     : -QC_PI / 2;
     }
     for (i = 0; i < set->n; i++) /* closed motifs first; open ones only if that is all */
         if (set->m[i].legs == 0 && set->m[i].path.ncmd >= 2)
@@ -173,22 +207,19 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
                 choice[nchoice++] = (uint32_t)i;
     if (nchoice == 0) {
         qc__free(ctx, choice, set->n * sizeof *choice);
+        qc__free(ctx, have, set->n * sizeof *have);
         return qc__fail(ctx, QC_EINVAL, "packing: the motif set has no drawable motif");
     }
     qc_rng_seed(&rng, seed ^ 0x7061636b696e67ull);
     for (i = 0; i < n; i++) {
-        const qc_motif *m;
         uint32_t p = pb->parent[i];
-        double want, have, s, co, si;
+        double want, s, co, si;
         pb->motif[i] = choice[nchoice > 1 ? qc_rng_below(&rng, nchoice) : 0];
-        m = &set->m[pb->motif[i]];
         want = p == QC__PEB_NONE ? a0
                                  : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
-        have = m->entry.x != 0 || m->entry.y != 0 ? qc_atan2(m->entry.y, m->entry.x)
-                                                  : -QC_PI / 2;
         s = FIT * pb->r[i] - inset;
-        co = qc_cos(want - have);
-        si = qc_sin(want - have);
+        co = qc_cos(want - have[pb->motif[i]]);
+        si = qc_sin(want - have[pb->motif[i]]);
         pb->xf[i].a = s * co;
         pb->xf[i].b = -s * si;
         pb->xf[i].c = s * si;
@@ -197,14 +228,16 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
         pb->xf[i].ty = pb->c[i].y;
     }
     qc__free(ctx, choice, set->n * sizeof *choice);
+    qc__free(ctx, have, set->n * sizeof *have);
     return QC_OK;
 }
 
-/* The motif points all copies would hold, refused over the budget before
- * any copy is drawn. */
-static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set)
+/* The motif points all copies would hold, refused over the budget for
+ * npoints skeleton points (deco.h) before any copy is drawn. */
+static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                         size_t npoints)
 {
-    double total = 0;
+    double total = 0, budget = QC_PACKED_POINTS_BUDGET(npoints);
     size_t i, most = 0;
 
     for (i = 0; i < pb->n; i++) {
@@ -212,11 +245,13 @@ static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set 
         total += (double)k;
         most = k > most ? k : most;
     }
-    if (total > (double)QC_MAX_PACKED_POINTS)
+    if (total > budget)
         return qc__fail(ctx, QC_ELIMIT,
                         "packing: %lu motif copies (up to %lu points each) make %.0f points, "
-                        "over the limit of %u; use a simpler motif or raise the spacing",
-                        (unsigned long)pb->n, (unsigned long)most, total, QC_MAX_PACKED_POINTS);
+                        "over the limit of %.0f for %lu points; use a simpler motif or raise "
+                        "the spacing",
+                        (unsigned long)pb->n, (unsigned long)most, total, budget,
+                        (unsigned long)npoints);
     return QC_OK;
 }
 
@@ -250,14 +285,37 @@ static void start_frame(frame *g, uint32_t i, uint32_t next, const qc_motif *m, 
     g->back = back;
 }
 
+/* Room for everything render draws, reserved once: a 10^6-point packing's
+ * path is hundreds of MB, and doubling would leave up to half of it unused
+ * (the peak bytes per point) and copy it on every growth. The first stitch;
+ * per motif its commands but the move, the stitch closing an open motif and
+ * the one back to the parent; per child the piece of the command it splits
+ * (a cubic) and the stitch out to it. */
+static int reserve_render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
+                          const uint32_t *first, qc_path *out)
+{
+    size_t i, ncmd = out->ncmd + 1, npt = out->npt + 1;
+
+    for (i = 0; i < pb->n; i++) {
+        const qc_path *m = &set->m[pb->motif[i]].path;
+        size_t kids = first[i + 1] - first[i];
+        ncmd += m->ncmd + 1 + 2 * kids;
+        npt += m->npt + 1 + 4 * kids;
+    }
+    QC__TRY(QC__RESERVE_EXACT(ctx, out->cmd, out->cmd_cap, ncmd));
+    return QC__RESERVE_EXACT(ctx, out->pt, out->pt_cap, npt);
+}
+
 static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                   const att *atts, const uint32_t *first, qc_path *out)
 {
     frame *st = NULL;
     size_t sp = 0, cap = 0;
     qc_vec2 e0;
-    int rc;
+    int rc = reserve_render(ctx, pb, set, first, out);
 
+    if (rc != QC_OK)
+        return rc;
     e0 = qc__xf_apply(&pb->xf[0], set->m[pb->motif[0]].entry);
     rc = QC__RESERVE(ctx, st, cap, 64);
     if (rc == QC_OK) {
@@ -337,7 +395,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
 static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                        att **atts_out, uint32_t **first_out)
 {
-    size_t n = pb->n, i, m = 0;
+    size_t n = pb->n, i, g;
     att *atts = qc__alloc_array(ctx, n, sizeof *atts);
     uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
     samples sm;
@@ -347,26 +405,40 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
     if (atts == NULL || first == NULL)
         return QC_ENOMEM;
     QC__TRY(samples_init(ctx, set, &sm));
+    /* grouped by parent as they are made (a counting sort: no qsort of 10^6
+     * entries, nor its hidden buffer); first[p] runs to the group's end */
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < n; i++)
+        if (pb->parent[i] != QC__PEB_NONE)
+            first[pb->parent[i] + 1]++;
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         qc_vec2 e;
+        att *a;
         if (p == QC__PEB_NONE)
             continue;
+        a = &atts[first[p]++];
         e = qc__xf_apply(&pb->xf[i], set->m[pb->motif[i]].entry);
-        atts[m].parent = p;
-        atts[m].kid = (uint32_t)i;
-        nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]], unmap(&pb->xf[p], e),
-                   &atts[m].cmd, &atts[m].t);
-        m++;
+        a->parent = p;
+        a->kid = (uint32_t)i;
+        nearest_on(&set->m[pb->motif[p]], sm.pt + sm.first[pb->motif[p]],
+                   sm.box + sm.first[pb->motif[p]] / (SAMPLES + 1), unmap(&pb->xf[p], e),
+                   &a->cmd, &a->t);
     }
     samples_free(ctx, set, &sm);
-    if (m > 1)
-        qsort(atts, m, sizeof *atts, cmp_att);
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < m; i++)
-        first[atts[i].parent + 1]++;
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
+    for (i = n; i > 0; i--)
+        first[i] = first[i - 1];
+    first[0] = 0;
+    for (g = 0; g < n; g++) /* each group (a few children) in the order cmp_att gives */
+        for (i = first[g] + 1; i < first[g + 1]; i++) {
+            att x = atts[i];
+            size_t k = i;
+            for (; k > first[g] && cmp_att(&atts[k - 1], &x) > 0; k--)
+                atts[k] = atts[k - 1];
+            atts[k] = x;
+        }
     return QC_OK;
 }
 
@@ -403,10 +475,13 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
         rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
+    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
+    qc__free(ctx, kids, n * sizeof *kids);
+    kfirst = kids = NULL;
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)
-        rc = copies_budget(ctx, &pb, motifs);
+        rc = copies_budget(ctx, &pb, motifs, skel->n);
     if (rc == QC_OK)
         rc = attachments(ctx, &pb, motifs, &atts, &first);
     if (rc == QC_OK && pb.k < 1) {
@@ -414,9 +489,12 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
         if (rc == QC_OK)
             rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
                                TRIM_TOL * d, out, &pb.trim_jumps);
+        qc_path_free(ctx, &raw);
     } else if (rc == QC_OK) {
         rc = render(ctx, &pb, motifs, atts, first, out);
     }
+    if (rc == QC_OK)
+        qc__pebble_path_fit(ctx, out);
     if (rc == QC_OK && stats != NULL) {
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
         stats->motifs_placed += pb.n;
@@ -424,8 +502,6 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
 out:
     qc__free(ctx, atts, n * sizeof *atts);
     qc__free(ctx, first, (n + 1) * sizeof *first);
-    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst);
-    qc__free(ctx, kids, n * sizeof *kids);
     qc_path_free(ctx, &raw);
     qc__pbound_free(ctx, &b);
     qc_motif_set_free(ctx, &def);

@@ -94,12 +94,13 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
     rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0);
     if (rc == QC_OK)
         rc = QC__RESERVE(ctx, st, cap, 64);
-    /* room for the whole path at once, not by doublings: per pebble at most
-     * 4 + (children + 1) cubics and 2 lines, so 8 commands and 20 points */
+    /* room for the whole path at once, not by doublings (nor rounded up to
+     * one: cut to size after drawing): per pebble at most 4 + (children + 1)
+     * cubics and 2 lines, so 8 commands and 20 points */
     if (rc == QC_OK)
-        rc = QC__RESERVE(ctx, out->cmd, out->cmd_cap, out->ncmd + 8 * pb->n + 2);
+        rc = QC__RESERVE_EXACT(ctx, out->cmd, out->cmd_cap, out->ncmd + 8 * pb->n + 2);
     if (rc == QC_OK)
-        rc = QC__RESERVE(ctx, out->pt, out->pt_cap, out->npt + 20 * pb->n + 2);
+        rc = QC__RESERVE_EXACT(ctx, out->pt, out->pt_cap, out->npt + 20 * pb->n + 2);
     if (rc == QC_OK) {
         st[0].i = 0;
         st[0].next = first[0];
@@ -179,9 +180,12 @@ int qc__pebbling_run(qc_ctx *ctx, const qc_region *region, const qc_params *para
         if (rc == QC_OK)
             rc = qc__path_trim(ctx, region, d, 4 * skel->n + 4096, pb.draw_in, &raw, pb.c[0],
                                TRIM_TOL * d, out, &pb.trim_jumps);
+        qc_path_free(ctx, &raw);
     } else if (rc == QC_OK) {
         rc = render(ctx, &pb, pb.draw_in, out);
     }
+    if (rc == QC_OK)
+        qc__pebble_path_fit(ctx, out);
     if (rc == QC_OK && stats != NULL)
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
     qc_path_free(ctx, &raw);

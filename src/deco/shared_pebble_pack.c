@@ -565,14 +565,61 @@ static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, 
     return 1;
 }
 
-static int pair_fits(pack *P, uint32_t i, uint32_t j, uint32_t k, double R, double s,
-                     qc_vec2 *at)
+#define PAIR_NEAR 192 /* pebbles a pair search keeps at hand */
+
+/* The pebbles (but i, j, k) a pair search may meet: pebble i's centre moves
+ * at most MOVE_MAX d and its radius stays within r_grow, so nothing whose
+ * edge is farther from i's centre matters (a d of slack for rounding). The
+ * search asks up to 40 bisection steps of these few instead of the grid;
+ * all 0 when more than fit (the grid is asked then). */
+typedef struct pair_near {
+    uint32_t id[PAIR_NEAR];
+    size_t n;
+    int all;
+} pair_near;
+
+static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *pn)
 {
     const qc__pebbles *pb = P->pb;
+    double reach = (MOVE_MAX + 1) * P->d + pb->r_grow;
+    uint32_t q, r[4], cx, cy;
+
+    pn->n = 0;
+    pn->all = 1;
+    cell_box(P, pb->c[i], reach + P->rmax, r);
+    FOR_EACH_PEBBLE(P, r, cx, cy, q) {
+        if (q == i || q == j || q == k || dist(pb->c[i], pb->c[q]) - pb->r[q] > reach)
+            continue;
+        if (pn->n == PAIR_NEAR) {
+            pn->all = 0;
+            return;
+        }
+        pn->id[pn->n++] = q;
+    }
+}
+
+/* Whether the circle tangent to j and k at radius R on side s fits (its
+ * centre into *at): clearance_to(at, R, R, i, j, k) >= R, the same answer
+ * in any order of the pebbles, so here from the gathered ones. */
+static int pair_fits(pack *P, const pair_near *pn, uint32_t i, uint32_t j, uint32_t k, double R,
+                     double s, qc_vec2 *at)
+{
+    const qc__pebbles *pb = P->pb;
+    size_t m;
 
     if (!pair_centre(pb, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
         return 0;
-    return clearance_to(P, *at, R, R, i, j, k, NULL) >= R;
+    if (!pn->all)
+        return clearance_to(P, *at, R, R, i, j, k, NULL) >= R;
+    for (m = 0; m < pn->n; m++) {
+        uint32_t q = pn->id[m];
+        double dx = at->x - pb->c[q].x, dy = at->y - pb->c[q].y, far = R + pb->r[q];
+        if (far > 0 && dx * dx + dy * dy >= far * far)
+            continue;
+        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R)
+            return 0;
+    }
+    return !(R > 0) || !(qc__pbound_dist(P->b, *at, pb->k * R) / pb->k < R);
 }
 
 /*
@@ -656,6 +703,9 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
     qc_vec2 xlo = pb->c[i], xhi;
     double lo = pb->r[i], hi, span = pb->r_grow - pb->r[i], step = span / 16;
     int it;
+    pair_near pn;
+
+    pair_gather(P, i, j, k, &pn);
 
     while (lo < pb->r_grow) {
         hi = fmin(lo + step, pb->r_grow);
@@ -665,7 +715,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
             step /= 2; /* small moves: no pebble is jumped over */
             continue;
         }
-        if (pair_fits(P, i, j, k, hi, s, &xhi)) {
+        if (pair_fits(P, &pn, i, j, k, hi, s, &xhi)) {
             lo = hi;
             xlo = xhi;
             continue;
@@ -673,7 +723,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
         for (it = 0; it < 40; it++) {
             double mid = 0.5 * (lo + hi);
             qc_vec2 xm;
-            if (pair_fits(P, i, j, k, mid, s, &xm)) {
+            if (pair_fits(P, &pn, i, j, k, mid, s, &xm)) {
                 lo = mid;
                 xlo = xm;
             } else {

@@ -34,7 +34,7 @@ static double angle_of(qc_vec2 from, qc_vec2 to)
 int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_out,
                          uint32_t **kids_out, double *start_angle)
 {
-    size_t n = pb->n, i, m = 0, g = 0;
+    size_t n = pb->n, i, m, g = 0, p0;
     uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
     uint32_t *kids = qc__alloc_array(ctx, n, sizeof *kids);
     kid_key *keys = qc__alloc_array(ctx, n, sizeof *keys);
@@ -48,11 +48,20 @@ int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_ou
         qc__free(ctx, keys, n * sizeof *keys);
         return QC_ENOMEM;
     }
+    /* grouped by parent as they are made (a counting sort: no qsort of 10^6
+     * entries, nor its hidden buffer); first[p] runs to the group's end */
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < n; i++)
+        if (pb->parent[i] != QC__PEB_NONE)
+            first[pb->parent[i] + 1]++;
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         double entry, k;
         if (p == QC__PEB_NONE)
             continue;
+        m = first[p]++;
         /* counter-clockwise from where p's own parent comes in (root: +x) */
         entry = pb->parent[p] == QC__PEB_NONE ? 0 : angle_of(pb->c[p], pb->c[pb->parent[p]]);
         k = angle_of(pb->c[p], pb->c[i]) - entry;
@@ -63,17 +72,20 @@ int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_ou
         keys[m].parent = p;
         keys[m].kid = (uint32_t)i;
         keys[m].key = k;
-        m++;
     }
-    if (m > 1)
-        qsort(keys, m, sizeof *keys, cmp_kid);
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < m; i++) {
+    for (i = n; i > 0; i--)
+        first[i] = first[i - 1];
+    first[0] = 0;
+    for (p0 = 0; p0 < n; p0++) /* each group (a few children) in cmp_kid's order */
+        for (i = first[p0] + 1; i < first[p0 + 1]; i++) {
+            kid_key x = keys[i];
+            size_t k = i;
+            for (; k > first[p0] && cmp_kid(&keys[k - 1], &x) > 0; k--)
+                keys[k] = keys[k - 1];
+            keys[k] = x;
+        }
+    for (i = 0; i < first[n]; i++)
         kids[i] = keys[i].kid;
-        first[keys[i].parent + 1]++;
-    }
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
     /* the root starts in the middle of the widest gap between its children,
      * and meets them counter-clockwise from there */
     for (i = first[0]; i < first[1]; i++) {
