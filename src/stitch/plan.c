@@ -9,6 +9,13 @@
 #define DEF_MIN_SEGMENT 0.508
 #define DEF_TIE_LENGTH 0.5
 #define MAX_TIE_STITCHES 100
+/* mm: a corner's stitch shorter than this is merged all the same: check
+ * calls stitches under 0.1 mm faults, and rounding both ends to the 0.001 in
+ * of .pat and .qli can shorten one by 0.036 mm */
+#define MIN_CORNER_STITCH 0.15
+/* mm a merge may move the path: 0.001 in, what the rounding of .pat and
+ * .qli moves it anyway (a pebble can hug a seam 0.05 mm away) */
+#define MERGE_STRAY 0.0254
 
 void qc_plan_free(qc_ctx *ctx, qc_plan *plan)
 {
@@ -110,26 +117,6 @@ static int resolve(qc_ctx *ctx, const qc_stitch_params *in, resolved *r)
 static double dist(qc_vec2 a, qc_vec2 b)
 {
     return qc_hypot(b.x - a.x, b.y - a.y);
-}
-
-/* Drops points closer than min_seg to the last kept one; the first and last
- * points always stay (the last replaces a too-close predecessor). Returns the
- * number of points kept in m. */
-static size_t merge(const qc_vec2 *v, size_t n, double min_seg, qc_vec2 *m)
-{
-    size_t i, k = 0;
-
-    m[k++] = v[0];
-    for (i = 1; i + 1 < n; i++)
-        if (dist(m[k - 1], v[i]) >= min_seg && dist(m[k - 1], v[i]) > 0)
-            m[k++] = v[i];
-    if (n > 1) {
-        if (k > 1 && dist(m[k - 1], v[n - 1]) < min_seg)
-            k--;
-        if (dist(m[k - 1], v[n - 1]) > 0)
-            m[k++] = v[n - 1];
-    }
-    return k;
 }
 
 static qc_vec2 along(qc_vec2 at, qc_vec2 towards, double l)
@@ -236,10 +223,17 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
     return total;
 }
 
+static size_t merge(qc__merge *mg, const qc_vec2 *v, size_t n, const resolved *r)
+{
+    return qc__merge_piece(mg, v, n, r->min_seg, fmin(r->min_seg, MIN_CORNER_STITCH),
+                           fmin(r->tol, MERGE_STRAY));
+}
+
 static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
                  const resolved *r, qc_plan *out)
 {
-    qc_vec2 *m = NULL;
+    qc__merge mg;
+    qc_vec2 *m;
     size_t longest = 0, k, start = 0, cnt;
     double total = 0;
     int rc = QC_OK;
@@ -249,21 +243,18 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
             longest = ends->i[k] - start;
         start = ends->i[k];
     }
-    if (longest > 0) {
-        m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *m);
-        if (m == NULL)
-            return QC_ENOMEM;
-    }
+    QC__TRY(qc__merge_init(ctx, &mg, longest));
+    m = mg.m;
     /* count first, so a split that would make too many points is refused
      * before the plan grows */
     for (k = 0, start = 0; k < ends->n; k++) {
-        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
         if (cnt >= 2)
             total += piece_points(m, cnt, r);
         start = ends->i[k];
     }
     if (total > QC_MAX_PLAN_POINTS) {
-        qc__free(ctx, m, longest * sizeof *m);
+        qc__merge_free(ctx, &mg);
         return qc__fail(ctx, QC_ELIMIT,
                         "the stitch plan would have %.3g points, more than the limit of %lu; "
                         "raise the maximum segment",
@@ -271,12 +262,12 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
     }
     start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
-        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
         if (cnt >= 2)
             rc = emit_piece(ctx, out, m, cnt, r);
         start = ends->i[k];
     }
-    qc__free(ctx, m, longest * sizeof *m);
+    qc__merge_free(ctx, &mg);
     return rc;
 }
 
