@@ -36,10 +36,20 @@ static double seg(const qc_plan *p, size_t i)
     return hypot(p->p[i].x - p->p[i - 1].x, p->p[i].y - p->p[i - 1].y);
 }
 
+static size_t visits(const qc_plan *plan, qc_vec2 p)
+{
+    size_t i, n = 0;
+
+    for (i = 0; i < plan->n; i++)
+        n += plan->p[i].x == p.x && plan->p[i].y == p.y;
+    return n;
+}
+
 /* A first segment just longer than the minimum: an odd tie-off stopping
  * tie_length along it used to leave a stitch of 0.036-0.076 mm to its end.
  * Every stitch after the start tie is now at least the minimum, ties or
- * splits, for first segments from the minimum to twice the tie length past it. */
+ * splits, for first segments from the minimum to twice the tie length past
+ * it; and the corner stays when the tie stops 0.15 mm or more before it. */
 static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
 {
     qc_stitch_params sp;
@@ -52,7 +62,7 @@ static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
             for (k = 0; k <= 20; k++) {
                 qc_path path = {0};
                 qc_plan plan;
-                double first = 0.508 + 0.05 * k;
+                double first = 0.508 + 0.05 * k, tie;
                 size_t i;
 
                 sp.tie_stitches = ties;
@@ -61,14 +71,21 @@ static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 0)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 5)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
-                for (i = 1; i <= (size_t)ties; i++) /* the tie keeps its length */
-                    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.5, seg(&plan, i));
+                /* the tie keeps its length, but for an odd one with the
+                 * corner 0.15 to 0.508 mm past it: it runs to the corner,
+                 * which stays (unless that tie stitch is longer than a split) */
+                tie = (ties & 1) && first - 0.5 >= 0.15 && first - 0.5 < 0.508 &&
+                      !(split && first > 0.6) ? first : 0.5;
+                for (i = 1; i <= (size_t)ties; i++)
+                    TEST_ASSERT_DOUBLE_WITHIN(1e-9, tie, seg(&plan, i));
                 for (i = 1; i < plan.n; i++) {
                     TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, seg(&plan, i));
-                    if (!(plan.flags[i] & QC_ST_TIE))
-                        TEST_ASSERT_TRUE(seg(&plan, i) >= 0.5 * 0.6 - 1e-9 &&
+                    if (!(plan.flags[i] & QC_ST_TIE)) /* a kept corner: 0.15 mm */
+                        TEST_ASSERT_TRUE(seg(&plan, i) >= 0.15 - 1e-9 &&
                                          (split || seg(&plan, i) >= 0.508 - 1e-9));
                 }
+                if (first - 0.5 >= 0.15) /* the corner is sewn */
+                    TEST_ASSERT_TRUE(visits(&plan, v2(first, 0)) >= 1);
                 /* the piece still reaches its corner and its end */
                 TEST_ASSERT_DOUBLE_WITHIN(1e-12, first, plan.p[plan.n - 1].x);
                 qc_plan_free(&ctx, &plan);
@@ -120,15 +137,6 @@ static void plan_of(const qc_vec2 *pts, size_t n, qc_plan *plan)
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, pts[i]));
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, NULL, plan));
     qc_path_free(&ctx, &path);
-}
-
-static size_t visits(const qc_plan *plan, qc_vec2 p)
-{
-    size_t i, n = 0;
-
-    for (i = 0; i < plan->n; i++)
-        n += plan->p[i].x == p.x && plan->p[i].y == p.y;
-    return n;
 }
 
 /* A pebble ends 0.4 mm from a seam, a link runs to the seam, the ditch runs

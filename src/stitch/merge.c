@@ -9,8 +9,10 @@
  * onto it. Where neither can, the path turns there and the short stitch
  * stays, unless it is shorter than `floor_len` (then whichever merge strays
  * less). A point the piece passes through again elsewhere (a retraced
- * corner, a seam crossed twice) is a junction: it is kept in place where it
- * can be, or the two passes that met there would cross.
+ * corner, a pebble's link to the seam sewn out and back) is a junction: it
+ * is kept in place where it can be, or the two passes that met there would
+ * cross; of two junctions too close to sew between, the one merged away
+ * the first time is merged away at every later pass too.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +21,7 @@
 #include "stitch_internal.h"
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
+#define NOT_JOINT ((size_t)-1)
 
 typedef struct keyed {
     qc_vec2 p;
@@ -32,9 +35,10 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
         return QC_OK;
     mg->m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *mg->m);
     mg->key = qc__alloc_array(ctx, longest, sizeof(keyed));
-    mg->joint = (unsigned char *)qc__alloc(ctx, longest);
+    mg->place = (size_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
+    mg->gone = (unsigned char *)qc__alloc(ctx, longest);
     mg->cap = longest;
-    if (mg->m == NULL || mg->key == NULL || mg->joint == NULL) {
+    if (mg->m == NULL || mg->key == NULL || mg->place == NULL || mg->gone == NULL) {
         qc__merge_free(ctx, mg);
         return qc__fail(ctx, QC_ENOMEM, "out of memory: merging a piece of %lu points",
                         (unsigned long)longest);
@@ -46,7 +50,8 @@ void qc__merge_free(qc_ctx *ctx, qc__merge *mg)
 {
     qc__free(ctx, mg->m, mg->cap * sizeof *mg->m);
     qc__free(ctx, mg->key, mg->cap * sizeof(keyed));
-    qc__free(ctx, mg->joint, mg->cap);
+    qc__free(ctx, mg->place, mg->cap * sizeof *mg->place);
+    qc__free(ctx, mg->gone, mg->cap);
     memset(mg, 0, sizeof *mg);
 }
 
@@ -61,17 +66,18 @@ static int by_place(const void *a, const void *b)
     return x->i < y->i ? -1 : x->i > y->i; /* distinct keys: any qsort agrees */
 }
 
-/* joint[i] = 1 where v[i] recurs in v[0..n) other than as a repeat of the
- * point just before (a run of equal points is one visit). */
-static void mark_junctions(const qc_vec2 *v, size_t n, keyed *key, unsigned char *joint)
+/* place[i]: for a junction (v[i] recurs in v[0..n) other than as a repeat
+ * of the point just before: a run of equal points is one visit) the least
+ * index of its place, else NOT_JOINT. */
+static void mark_junctions(const qc_vec2 *v, size_t n, keyed *key, size_t *place)
 {
     size_t i, lo, hi;
 
     for (i = 0; i < n; i++) {
         key[i].p = v[i];
         key[i].i = i;
+        place[i] = NOT_JOINT;
     }
-    memset(joint, 0, n);
     qsort(key, n, sizeof *key, by_place);
     for (lo = 0; lo < n; lo = hi) {
         size_t visits = 1;
@@ -80,7 +86,7 @@ static void mark_junctions(const qc_vec2 *v, size_t n, keyed *key, unsigned char
              hi++)
             visits += key[hi].i != key[hi - 1].i + 1;
         for (i = lo; visits > 1 && i < hi; i++)
-            joint[key[i].i] = 1;
+            place[key[i].i] = key[lo].i; /* sorted by index within a place */
     }
 }
 
@@ -104,16 +110,18 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
                        double floor_len, double keep)
 {
     qc_vec2 *m = mg->m;
-    const unsigned char *joint = mg->joint;
+    const size_t *place = mg->place;
+    unsigned char *gone = mg->gone;
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
 
     if (n == 0)
         return 0;
-    mark_junctions(v, n, (keyed *)mg->key, mg->joint);
+    mark_junctions(v, n, (keyed *)mg->key, mg->place);
+    memset(gone, 0, n);
     m[k++] = v[0];
     for (i = 1; i < n; i++) {
-        int last = i + 1 == n;
-        int here_ok = !last && !joint[i], prev_ok = k >= 2 && !joint[at];
+        int last = i + 1 == n, joints = place[i] != NOT_JOINT && place[at] != NOT_JOINT;
+        int here_ok = !last && place[i] == NOT_JOINT, prev_ok = k >= 2 && place[at] == NOT_JOINT;
         double d = dist(m[k - 1], v[i]), drop_here, drop_prev;
 
         if (d == 0 && !last)
@@ -142,9 +150,15 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
             m[k++] = v[i];
             continue;
         }
-        /* too short to sew: merge all the same, sparing a junction, else
-         * where it strays less */
-        if (!last && (here_ok != prev_ok ? here_ok : drop_here <= drop_prev))
+        /* too short to sew: merge all the same, sparing a junction; of two,
+         * as an earlier pass did; else where it strays less */
+        if (joints && !last) {
+            here_ok = gone[place[i]] || (!gone[place[at]] && (k < 2 || drop_here <= drop_prev));
+            gone[here_ok ? place[i] : place[at]] = 1;
+        } else if (here_ok == prev_ok) {
+            here_ok = !last && drop_here <= drop_prev;
+        }
+        if (here_ok)
             continue;
         if (k >= 2) {
             m[k - 1] = v[i];

@@ -11,7 +11,7 @@
 #define MAX_TIE_STITCHES 100
 /* mm: a corner's stitch shorter than this is merged all the same: check
  * calls stitches under 0.1 mm faults, and rounding both ends to the 0.001 in
- * of .pat and .qli can shorten one by 0.036 mm */
+ * of .pat and .qli can shorten one by 2 * 0.0005 * sqrt(2) in = 0.036 mm */
 #define MIN_CORNER_STITCH 0.15
 /* mm a merge may move the path: 0.001 in, what the rounding of .pat and
  * .qli moves it anyway (a pebble can hug a seam 0.05 mm away) */
@@ -73,6 +73,7 @@ int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
 
 typedef struct resolved {
     double tol, min_seg, max_seg, tie_len;
+    double floor_len, keep; /* the merge's: MIN_CORNER_STITCH and MERGE_STRAY at most */
     int ties;
 } resolved;
 
@@ -89,6 +90,8 @@ static int resolve(qc_ctx *ctx, const qc_stitch_params *in, resolved *r)
                  : in->min_segment < 0 ? 0 : in->min_segment;
     r->max_seg = in->max_segment;
     r->tie_len = in->tie_length == 0 ? DEF_TIE_LENGTH : in->tie_length;
+    r->floor_len = fmin(r->min_seg, MIN_CORNER_STITCH);
+    r->keep = fmin(r->tol, MERGE_STRAY);
     r->ties = in->tie_stitches;
     if (!(r->tol > 0 && r->tol <= 1000))
         return qc__fail(ctx, QC_ERANGE,
@@ -143,11 +146,27 @@ static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, doubl
     return QC_OK;
 }
 
+/* Whether the stitch from stop (where the start tie leaves the needle) may
+ * skip m[1..i] and run to m[i + 1]: m[i] is too close to stop to sew to,
+ * or the skip keeps the shape, as in the merge (a corner stays). */
+static int skippable(const qc_vec2 *m, size_t i, qc_vec2 stop, const resolved *r)
+{
+    size_t j;
+
+    if (dist(stop, m[i]) < r->floor_len)
+        return 1;
+    for (j = 1; j <= i; j++)
+        if (qc__seg_dist2(m[j], stop, m[i + 1]) > r->keep * r->keep)
+            return 0;
+    return 1;
+}
+
 /* The start tie's length (*l) and the first point sewn after it. An odd tie
  * leaves the needle l along the first segment; points closer than min_seg
- * to it are dropped as merge() drops them, so no stitch after the tie is
- * shorter than the minimum. If that would drop the piece's last point, the
- * tie runs to m[1] instead (and m[1] is where the needle stands). */
+ * to it are dropped as the merge drops them (a corner stays, nothing under
+ * floor_len does). If that would drop the piece's last point, or m[1] is a
+ * corner that close, the tie runs to m[1] instead (and m[1] is where the
+ * needle stands); a later corner that close stays as a short stitch. */
 static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l)
 {
     qc_vec2 stop;
@@ -157,9 +176,12 @@ static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l
     if (!(r->ties & 1))
         return 1;
     stop = along(m[0], m[1], *l);
-    while (i + 1 < n && dist(stop, m[i]) < r->min_seg)
+    while (i + 1 < n && dist(stop, m[i]) < r->min_seg && skippable(m, i, stop, r))
         i++;
-    if (dist(stop, m[i]) < r->min_seg) {
+    /* the piece's end, or its first corner, within reach: the tie runs to
+     * m[1] (unless that makes a tie stitch longer than max_seg) */
+    if (dist(stop, m[i]) < r->min_seg &&
+        (i + 1 == n || (i == 1 && !(r->max_seg > 0 && dist(m[0], m[1]) > r->max_seg)))) {
         *l = dist(m[0], m[1]);
         return 1;
     }
@@ -225,8 +247,7 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
 
 static size_t merge(qc__merge *mg, const qc_vec2 *v, size_t n, const resolved *r)
 {
-    return qc__merge_piece(mg, v, n, r->min_seg, fmin(r->min_seg, MIN_CORNER_STITCH),
-                           fmin(r->tol, MERGE_STRAY));
+    return qc__merge_piece(mg, v, n, r->min_seg, r->floor_len, r->keep);
 }
 
 static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,

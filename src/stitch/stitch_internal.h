@@ -18,7 +18,8 @@ QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
 typedef struct qc__merge {
     qc_vec2 *m;           /* the kept points */
     void *key;            /* the piece's points sorted by place */
-    unsigned char *joint; /* per point: the piece passes there again */
+    size_t *place;        /* per point: where the piece passes it again */
+    unsigned char *gone;  /* per place: a junction merged away */
     size_t cap;
 } qc__merge;
 
