@@ -32,8 +32,9 @@ static qc_vec2 centre_of(const qc_params *params, const qc__contour *c)
 
 /* Whether the start given lies outside the second ring (nearer the
  * boundary than the centre, as where a top enters a patch at a seam): the
- * line then leaves at the boundary too, so the spiral winds in and out
- * (family_spiral_out.c). */
+ * line then leaves at the boundary too, so the (Archimedean) spiral winds
+ * in and out (family_spiral_out.c). Fermat rings crowd at the boundary,
+ * too close for the band's steps: they keep the one-arm spiral. */
 static int starts_at_boundary(const qc_params *params, const qc__contour *c)
 {
     qc_vec2 p;
@@ -57,7 +58,7 @@ int qc_deco_spiral(qc_ctx *ctx, const qc_region *region, const qc_params *params
     QC__TRY(qc__contour_build(ctx, region, params->spacing, params->margin,
                               params->spiral == QC_SPIRAL_FERMAT, "spiral", &c));
     rc = 0;
-    if (starts_at_boundary(params, &c)) /* and must end there: in and out */
+    if (params->spiral != QC_SPIRAL_FERMAT && starts_at_boundary(params, &c))
         rc = qc__spiral_in_out(ctx, region, params, &c, centre_of(params, &c), out, stats);
     if (rc == 0)
         rc = qc__contour_sew(ctx, region, params, &c, centre_of(params, &c), 1, out, stats);

@@ -13,7 +13,8 @@
  * through the gap of the ring between: the first arm's from B(k) to
  * A(k + 2), the second's from A(k + 1) to B(k - 1), each parallel to the
  * other arm's, so no step crosses a ring or a step. At the centre one short
- * step at side B turns the line round. It needs rings nested one in the
+ * step at side B turns the line round, after a spur from there round the
+ * next ring in, if any (the band cannot cut the innermost rings). It needs rings nested one in the
  * next (one ring a level); a region that splits or has holes keeps the
  * one-arm spiral. Rings too small for the band (the centre) are left out.
  */
@@ -147,14 +148,32 @@ static int nested(const qc__rings *rs)
     return rs->end.n >= 2;
 }
 
-/* The double spiral from s[k] (each ring's band centre) over rings 0..last. */
-static int sew_both_arms(qc_ctx *ctx, const ring *rg, const double *s, size_t last, double g,
-                         qc_points *out)
+/* At B(last), the innermost ring's side B: the next ring in, if any (the
+ * band could not cut it), sewn round whole by a spur from B and back. */
+static int sew_centre(qc_ctx *ctx, const ring *rg, size_t nr, const double *s, size_t last,
+                      double g, qc_points *out)
+{
+    qc_vec2 b = point_at(&rg[last], s[last] + 0.5 * g);
+    double q;
+
+    QC__TRY(qc_points_push(ctx, out, b));
+    if (last + 1 >= nr)
+        return QC_OK;
+    q = nearest_on(&rg[last + 1], b);
+    QC__TRY(sew_arc(ctx, &rg[last + 1], q, rg[last + 1].len, 1, out));
+    return qc_points_push(ctx, out, b);
+}
+
+/* The double spiral from s[k] (each ring's band centre) over rings 0..last,
+ * and round ring last + 1 (if any) at the turn. */
+static int sew_both_arms(qc_ctx *ctx, const ring *rg, size_t nr, const double *s, size_t last,
+                         double g, qc_points *out)
 {
     size_t k;
 
     for (k = 0; k <= last; k += 2) /* in: A(k) the long way round to B(k) */
         QC__TRY(sew_arc(ctx, &rg[k], s[k] - 0.5 * g, rg[k].len - g, -1, out));
+    QC__TRY(sew_centre(ctx, rg, nr, s, last, g, out));
     for (k = (last & 1) ? last : last - 1;; k -= 2) { /* out: B(k) round to A(k) */
         QC__TRY(sew_arc(ctx, &rg[k], s[k] + 0.5 * g, rg[k].len - g, 1, out));
         if (k == 1)
@@ -231,7 +250,7 @@ int qc__spiral_in_out(qc_ctx *ctx, const qc_region *region, const qc_params *par
         rc = 0;
         goto out;
     }
-    rc = sew_both_arms(ctx, rg, s, last, g, &pts);
+    rc = sew_both_arms(ctx, rg, nr, s, last, g, &pts);
     if (rc == QC_OK)
         rc = qc_points_push(ctx, &pts, exit_point(c, start, pts.v[pts.n - 1]));
     if (rc == QC_OK)
