@@ -27,6 +27,24 @@ every_top() {
 }
 check every_top_is_one_line_inside_its_patches every_top
 
+# The written .pat crosses itself nowhere for the families that never cross
+# (check counts proper crossings of its stitches): the stitch plan keeps
+# the corner where a pebble's link meets a seam 0.5 mm away (it merged it
+# away, and one stitch cut across the pebble: 11 on log-cabin, 30 on the
+# sashing top), and a spiral winds back out to the seam (its link out from
+# the centre crossed 8 of its turns on the star).
+no_crossings() {
+    for f in pebbling spiral echo vine stipple; do
+        for t in "$STAR" "$ROOT"/tests/data/quilt/log-cabin.svg "$ROOT"/tests/data/quilt/sashing.svg; do
+            "$QC" quilt "$t" --family $f -q -o x.pat &&
+                "$QC" check x.pat --region "$t" --no-crossing >out.txt ||
+                { grep -E 'crossing|finding' out.txt | head -3; echo "$f $t"; return 1; }
+        done
+    done
+    rm -f x.pat # the refusals below check that no file is written
+}
+check written_pat_never_crosses_itself no_crossings
+
 # A patch too small for the spacing is sewn round in the ditch, said once.
 tiny_patches() {
     "$QC" quilt "$ROOT/tests/data/quilt/tiny-patches.svg" -o t.pat --stats 2>err.txt &&

@@ -234,6 +234,56 @@ static void spiral_should_not_retrace(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Started on the boundary (as a top enters a patch at a seam corner), the
+ * spiral winds in on every other turn and back out between them, ending
+ * exactly at the start: the line leaves by no link across its turns (one
+ * crossed 8 turns on the sawtooth star). Still one polyline inside the
+ * margin but for that last stitch out, crossing nowhere, at most 2 passes
+ * and 5% retraced, no gap wider than the one-arm spiral's. Shapes whose
+ * rings split (the U, the heart, holes) keep the one-arm spiral. */
+static void spiral_should_wind_in_and_out_from_a_boundary_start(void)
+{
+    static const int nested[] = {R_RECT, R_CIRCLE, R_STAR, R_HEXAGON};
+    const double d = 9.0;
+    size_t k, i;
+
+    for (k = 0; k < sizeof nested / sizeof nested[0]; k++) {
+        const char *name = region_names[nested[k]];
+        qc_params one_arm = params(d, 2.0, QC_SPIRAL_ARCHIMEDEAN), p;
+        qc_region r;
+        qc_path out, ref;
+        qc_vec2 start;
+        double share = 1.0, gap, ref_gap;
+        size_t passes = 99, n = 1;
+
+        make_region(nested[k], 150, &r);
+        start = r.v[0]; /* a vertex of the outline */
+        p = params_at(d, 2.0, QC_SPIRAL_ARCHIMEDEAN, start);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(QC_OK, run_spiral(&r, &p, &out, NULL), name);
+        assert_one_polyline(&out);
+        TEST_ASSERT_EQUAL_DOUBLE_MESSAGE(start.x, out.pt[out.npt - 1].x, name);
+        TEST_ASSERT_EQUAL_DOUBLE_MESSAGE(start.y, out.pt[out.npt - 1].y, name);
+        TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(0.05, 2.0, qc_region_boundary_distance(&r, out.pt[0]),
+                                          name);
+        for (i = 0; i + 1 < out.npt; i++)
+            TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE_MESSAGE(
+                2.0 - 0.05, qc_region_boundary_distance(&r, out.pt[i]), name);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, out.pt, out.npt, 0, &n));
+        TEST_ASSERT_EQUAL_UINT_MESSAGE(0, n, name);
+        TEST_ASSERT_EQUAL_INT(0, retrace_measure(out.pt, out.npt, NULL, 0, &share, &passes));
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE_MESSAGE(0.05, share, name);
+        TEST_ASSERT_LESS_OR_EQUAL_MESSAGE(2, passes, name);
+        TEST_ASSERT_EQUAL_INT(QC_OK, run_spiral(&r, &one_arm, &ref, NULL));
+        gap = qc_largest_gap(&ctx, &r, out.pt, out.npt, d / 6, NULL);
+        ref_gap = qc_largest_gap(&ctx, &r, ref.pt, ref.npt, d / 6, NULL);
+        TEST_ASSERT_LESS_OR_EQUAL_DOUBLE_MESSAGE(ref_gap + 0.05 * d, gap, name);
+        qc_path_free(&ctx, &ref);
+        qc_path_free(&ctx, &out);
+        qc_region_free(&ctx, &r);
+    }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Default centre: the point farthest from the boundary; the path starts on
  * the innermost ring, which lies within d of it. */
 static void spiral_should_start_near_the_farthest_point(void)
@@ -490,6 +540,7 @@ int main(void)
     RUN_TEST(spiral_should_start_anywhere);
     RUN_TEST(spiral_gap_should_stay_near_d);
     RUN_TEST(spiral_should_be_deterministic);
+    RUN_TEST(spiral_should_wind_in_and_out_from_a_boundary_start);
     RUN_TEST(spiral_should_run_through_generate);
     RUN_TEST(spiral_should_report_errors);
     RUN_TEST(spiral_should_survive_allocation_failures);

@@ -20,15 +20,36 @@ void tearDown(void)
 {
 }
 
+static double orient(qc_vec2 a, qc_vec2 b, qc_vec2 c)
+{
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+/* Whether segments ab and cd cross properly. */
+static int segments_cross(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    return orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
+}
+
 static double seg(const qc_plan *p, size_t i)
 {
     return hypot(p->p[i].x - p->p[i - 1].x, p->p[i].y - p->p[i - 1].y);
 }
 
+static size_t visits(const qc_plan *plan, qc_vec2 p)
+{
+    size_t i, n = 0;
+
+    for (i = 0; i < plan->n; i++)
+        n += plan->p[i].x == p.x && plan->p[i].y == p.y;
+    return n;
+}
+
 /* A first segment just longer than the minimum: an odd tie-off stopping
  * tie_length along it used to leave a stitch of 0.036-0.076 mm to its end.
  * Every stitch after the start tie is now at least the minimum, ties or
- * splits, for first segments from the minimum to twice the tie length past it. */
+ * splits, for first segments from the minimum to twice the tie length past
+ * it; and the corner stays when the tie stops 0.15 mm or more before it. */
 static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
 {
     qc_stitch_params sp;
@@ -41,7 +62,7 @@ static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
             for (k = 0; k <= 20; k++) {
                 qc_path path = {0};
                 qc_plan plan;
-                double first = 0.508 + 0.05 * k;
+                double first = 0.508 + 0.05 * k, tie;
                 size_t i;
 
                 sp.tie_stitches = ties;
@@ -50,14 +71,21 @@ static void plan_should_leave_no_short_stitch_after_a_tie_off(void)
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 0)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(first, 5)));
                 TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
-                for (i = 1; i <= (size_t)ties; i++) /* the tie keeps its length */
-                    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.5, seg(&plan, i));
+                /* the tie keeps its length, but for an odd one with the
+                 * corner 0.15 to 0.508 mm past it: it runs to the corner,
+                 * which stays (unless that tie stitch is longer than a split) */
+                tie = (ties & 1) && first - 0.5 >= 0.15 && first - 0.5 < 0.508 &&
+                      !(split && first > 0.6) ? first : 0.5;
+                for (i = 1; i <= (size_t)ties; i++)
+                    TEST_ASSERT_DOUBLE_WITHIN(1e-9, tie, seg(&plan, i));
                 for (i = 1; i < plan.n; i++) {
                     TEST_ASSERT_GREATER_THAN_DOUBLE(0.0, seg(&plan, i));
-                    if (!(plan.flags[i] & QC_ST_TIE))
-                        TEST_ASSERT_TRUE(seg(&plan, i) >= 0.5 * 0.6 - 1e-9 &&
+                    if (!(plan.flags[i] & QC_ST_TIE)) /* a kept corner: 0.15 mm */
+                        TEST_ASSERT_TRUE(seg(&plan, i) >= 0.15 - 1e-9 &&
                                          (split || seg(&plan, i) >= 0.508 - 1e-9));
                 }
+                if (first - 0.5 >= 0.15) /* the corner is sewn */
+                    TEST_ASSERT_TRUE(visits(&plan, v2(first, 0)) >= 1);
                 /* the piece still reaches its corner and its end */
                 TEST_ASSERT_DOUBLE_WITHIN(1e-12, first, plan.p[plan.n - 1].x);
                 qc_plan_free(&ctx, &plan);
@@ -95,6 +123,80 @@ static void plan_should_merge_short_and_split_long_segments(void)
     TEST_ASSERT_EQUAL_size_t(3 + 4, plan.n);
     qc_plan_free(&ctx, &plan);
     qc_path_free(&ctx, &path);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+/* The plan of the polyline pts[0..n) with default parameters. */
+static void plan_of(const qc_vec2 *pts, size_t n, qc_plan *plan)
+{
+    qc_path path = {0};
+    size_t i;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, pts[0]));
+    for (i = 1; i < n; i++)
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, pts[i]));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, NULL, plan));
+    qc_path_free(&ctx, &path);
+}
+
+/* A pebble ends 0.4 mm from a seam, a link runs to the seam, the ditch runs
+ * on along it. The plain merge dropped the seam point (0.4 mm < 0.508), and
+ * the stitch from the pebble's end to the far corner cut diagonally across
+ * a pass lying 0.05 mm off the seam (check counted crossings the path does
+ * not have). The corner stays now, as a short stitch. */
+static void plan_should_keep_a_corner_closer_than_the_minimum(void)
+{
+    const qc_vec2 pts[] = {{0, 5}, {10, 0.4}, {10, 0}, {40, 0}};
+    qc_vec2 pass_a = v2(12, 0.05), pass_b = v2(38, 0.05); /* a pebble hugging the seam */
+    qc_plan plan;
+    size_t i;
+
+    plan_of(pts, 4, &plan);
+    TEST_ASSERT_EQUAL_size_t(4, plan.n);
+    for (i = 0; i < 4; i++) {
+        TEST_ASSERT_EQUAL_DOUBLE(pts[i].x, plan.p[i].x);
+        TEST_ASSERT_EQUAL_DOUBLE(pts[i].y, plan.p[i].y);
+    }
+    for (i = 1; i < plan.n; i++) /* no stitch crosses the hugging pass */
+        TEST_ASSERT_FALSE(segments_cross(plan.p[i - 1], plan.p[i], pass_a, pass_b));
+    qc_plan_free(&ctx, &plan);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+/* Short steps along a straight run or a gentle curve still merge; a step
+ * too short to sew (0.05 mm, under check's 0.1 mm) merges even at a corner:
+ * no stitch under 0.1 mm, and the path moves less than that step. */
+static void plan_should_still_merge_straight_runs_and_tiny_corners(void)
+{
+    const qc_vec2 pts[] = {{0, 0}, {0.2, 0}, {0.4, 0}, {5, 0}, {5, 0.05}, {10, 0.05}};
+    qc_plan plan;
+    size_t i;
+
+    plan_of(pts, 6, &plan);
+    TEST_ASSERT_EQUAL_size_t(3, plan.n); /* (0,0), a corner by (5,0), (10,0.05) */
+    for (i = 1; i < plan.n; i++)
+        TEST_ASSERT_GREATER_OR_EQUAL_DOUBLE(0.1, seg(&plan, i));
+    TEST_ASSERT_DOUBLE_WITHIN(0.05 + 1e-12, 5.0, plan.p[1].x);
+    TEST_ASSERT_DOUBLE_WITHIN(0.05 + 1e-12, 0.0, plan.p[1].y);
+    qc_plan_free(&ctx, &plan);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
+/* An echo's corner sewn out and back: out a -> p, on 0.08 mm straight to
+ * q, then up (dropping q would stray 0.046 mm); back in to p from another
+ * side, and on to a. Moving the out pass's corner from p onto q (p lies on
+ * line a-q) left the back pass's turn at p a hair across a-q. A point the
+ * piece passes twice stays. */
+static void plan_should_keep_a_point_the_path_passes_twice(void)
+{
+    const qc_vec2 pts[] = {{0, 0}, {3, 3}, {3.06, 3.06}, {3.06, 3.28}, {3.06, 6}, {0, 6},
+                           {0.5, 5.5}, {3, 3}, {0, 0}};
+    qc_plan plan;
+
+    plan_of(pts, 9, &plan);
+    TEST_ASSERT_EQUAL_size_t(2, visits(&plan, v2(3, 3)));
+    TEST_ASSERT_EQUAL_size_t(2, visits(&plan, v2(0, 0)));
+    qc_plan_free(&ctx, &plan);
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
@@ -321,6 +423,9 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(plan_should_merge_short_and_split_long_segments);
+    RUN_TEST(plan_should_keep_a_corner_closer_than_the_minimum);
+    RUN_TEST(plan_should_still_merge_straight_runs_and_tiny_corners);
+    RUN_TEST(plan_should_keep_a_point_the_path_passes_twice);
     RUN_TEST(plan_should_add_jumps_and_tie_offs_per_piece);
     RUN_TEST(plan_should_leave_no_short_stitch_after_a_tie_off);
     RUN_TEST(plan_should_flatten_curves_within_tolerance);

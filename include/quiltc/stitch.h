@@ -26,7 +26,7 @@ typedef struct qc_plan {
 
 typedef struct qc_stitch_params {
     double tolerance;   /* chord tolerance, mm, (0, 1000]; 0 = 0.127 (0.005 in) */
-    double min_segment; /* merge shorter segments, mm; 0 = 0.508 (0.02 in); < 0 = keep all */
+    double min_segment; /* merge shorter segments (not corners), mm; 0 = 0.508; < 0 = keep all */
     double max_segment; /* split longer segments, mm, >= 0.01; 0 = no limit */
     int tie_stitches;   /* tie-off stitches at each piece's start and end, 0..100; 0 = none */
     double tie_length;  /* length of one tie-off stitch, mm, (0, 100]; 0 = 0.5 */
@@ -40,7 +40,10 @@ typedef struct qc_stitch_params {
  * each MOVE): curves flattened to tolerance; if clip and clip_region, only
  * what lies inside the region is kept (cut exactly at ring edges; a piece
  * that leaves and re-enters becomes two); points closer than min_segment to
- * the previous kept point dropped (each piece's first and last points stay);
+ * the previous kept point dropped where that moves the path by at most
+ * 0.001 in (else the earlier point moved onto it), but a corner stays as a
+ * shorter stitch down to 0.15 mm, and a point the piece passes twice stays
+ * (each piece's first and last points stay);
  * segments longer than max_segment split into equal parts; pieces reduced to
  * one point dropped. Each piece's first point has QC_ST_JUMP; after it and
  * after its last point come tie_stitches points flagged QC_ST_TIE going back

@@ -337,5 +337,14 @@ QC__HIDDEN int qc__contour_sew(qc_ctx *ctx, const qc_region *region, const qc_pa
                                const qc__contour *c, qc_vec2 start, int spiral, qc_path *out,
                                qc_stats *stats);
 QC__HIDDEN void qc__contour_free(qc_ctx *ctx, qc__contour *c);
+/* family_spiral_out.c: the rings sewn as a double spiral from the ring 0
+ * point nearest start, in on every other ring and back out between them,
+ * ending on the boundary at the start (or nearest ring 0's band); appended
+ * to *out (all or nothing),
+ * stats: largest gap. 1 when sewn, 0 when the rings do not nest one a
+ * level or are too few or small (nothing appended), or QC_ENOMEM. */
+QC__HIDDEN int qc__spiral_in_out(qc_ctx *ctx, const qc_region *region, const qc_params *params,
+                                 const qc__contour *c, qc_vec2 start, qc_path *out,
+                                 qc_stats *stats);
 
 #endif

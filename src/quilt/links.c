@@ -6,8 +6,9 @@
  * its link crosses nothing; otherwise the nearest of a bounded number of
  * other seam points of the patch (each edge's nearest point and points
  * spread evenly along the rings) whose link crosses no segment of the
- * flattened pattern, keeps clear of it and stays inside the patch; else
- * of those crossing nothing the one keeping clearest. None: the nearest.
+ * flattened pattern and stays inside the patch. None: the nearest. (No
+ * margin is kept from the pattern: the stitch plan keeps a link's corners,
+ * so a link grazing a pass stays on its side.)
  */
 #include <math.h>
 #include <string.h>
@@ -16,10 +17,6 @@
 
 #define LINK_TRIES 64 /* other seam points tried per link */
 #define LINK_FLAT_TOL 0.05 /* mm: the pattern's flattening for the test */
-/* mm a moved link keeps from the pattern (away from the end it leaves):
- * the stitch plan's chords (0.127 mm off the curve) and merged short
- * stitches (0.508 mm) must not bring a grazing pass across it. */
-#define LINK_CLEAR 0.6
 
 static double dist(qc_vec2 a, qc_vec2 b)
 {
@@ -86,47 +83,6 @@ static int cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
     return (o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0);
 }
 
-/* The squared distance between segments ab and cd. */
-static double seg_seg_dist2(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
-{
-    if (cross_proper(a, b, c, d))
-        return 0;
-    return fmin(fmin(qc__seg_dist2(a, c, d), qc__seg_dist2(b, c, d)),
-                fmin(qc__seg_dist2(c, a, b), qc__seg_dist2(d, a, b)));
-}
-
-/* How near link a -> p, but for its last `spare` mm (the pattern leaves
- * p there), comes to the pattern: its least distance to a segment, up to
- * cap (a link no longer than spare: cap). */
-static double clearance(const qc__links *lk, qc_vec2 a, qc_vec2 p, double spare, double cap)
-{
-    double len = dist(a, p), f, d2 = cap * cap;
-    size_t c[4], x, y, j;
-    qc_vec2 b, lo, hi;
-
-    if (!lk->have_grid || len <= spare)
-        return cap;
-    f = (len - spare) / len;
-    b.x = a.x + f * (p.x - a.x);
-    b.y = a.y + f * (p.y - a.y);
-    lo.x = fmin(a.x, b.x) - cap;
-    lo.y = fmin(a.y, b.y) - cap;
-    hi.x = fmax(a.x, b.x) + cap;
-    hi.y = fmax(a.y, b.y) + cap;
-    qc__seg_grid_cells(&lk->grid, lo, hi, c);
-    for (y = c[1]; y <= c[3]; y++)
-        for (x = c[0]; x <= c[2]; x++) {
-            size_t cell = y * lk->grid.gx + x;
-
-            for (j = lk->grid.start[cell]; j < lk->grid.start[cell + 1]; j++) {
-                uint32_t k = lk->grid.seg[j];
-
-                d2 = fmin(d2, seg_seg_dist2(a, b, lk->flat.v[k], lk->flat.v[next_pt(lk, k)]));
-            }
-        }
-    return sqrt(d2);
-}
-
 /* Whether link ab properly crosses a segment of the pattern (as the
  * self-crossing measure counts). */
 static int crosses_pattern(const qc__links *lk, qc_vec2 a, qc_vec2 b)
@@ -148,15 +104,6 @@ static int crosses_pattern(const qc__links *lk, qc_vec2 a, qc_vec2 b)
             }
         }
     return 0;
-}
-
-/* How clear of the pattern a moved link keeps, up to LINK_CLEAR (a link
- * too short to tell: 0). */
-static double link_clearance(const qc__links *lk, qc_vec2 a, qc_vec2 p)
-{
-    if (dist(a, p) <= 2 * LINK_CLEAR)
-        return 0;
-    return clearance(lk, a, p, 2 * LINK_CLEAR, LINK_CLEAR);
 }
 
 /* Whether link ab (a on patch i's boundary) stays inside the patch: it
@@ -260,24 +207,15 @@ static void candidates(const qc__seams *s, size_t patch, qc_vec2 p, cand *c, siz
 qc__seam_pt qc__links_seam_pt(const qc__links *lk, const qc__seams *s, const qc_region *region,
                               size_t patch, qc_vec2 p)
 {
-    qc__seam_pt best = qc__seams_nearest(s, patch, p), grazing = best;
+    qc__seam_pt best = qc__seams_nearest(s, patch, p);
     cand c[LINK_TRIES];
     size_t n, k;
-    double most = -1, cl;
 
     if (!crosses_pattern(lk, best.p, p))
         return best;
     candidates(s, patch, p, c, &n);
-    for (k = 0; k < n; k++) {
-        if (crosses_pattern(lk, c[k].sp.p, p) || !inside_patch(s, region, patch, c[k].sp.p, p))
-            continue;
-        cl = link_clearance(lk, c[k].sp.p, p);
-        if (cl >= LINK_CLEAR)
+    for (k = 0; k < n; k++)
+        if (!crosses_pattern(lk, c[k].sp.p, p) && inside_patch(s, region, patch, c[k].sp.p, p))
             return c[k].sp;
-        if (cl > most) { /* crosses nothing but grazes the pattern: the least so */
-            most = cl;
-            grazing = c[k].sp;
-        }
-    }
-    return grazing;
+    return best;
 }

@@ -9,6 +9,13 @@
 #define DEF_MIN_SEGMENT 0.508
 #define DEF_TIE_LENGTH 0.5
 #define MAX_TIE_STITCHES 100
+/* mm: a corner's stitch shorter than this is merged all the same: check
+ * calls stitches under 0.1 mm faults, and rounding both ends to the 0.001 in
+ * of .pat and .qli can shorten one by 2 * 0.0005 * sqrt(2) in = 0.036 mm */
+#define MIN_CORNER_STITCH 0.15
+/* mm a merge may move the path: 0.001 in, what the rounding of .pat and
+ * .qli moves it anyway (a pebble can hug a seam 0.05 mm away) */
+#define MERGE_STRAY 0.0254
 
 void qc_plan_free(qc_ctx *ctx, qc_plan *plan)
 {
@@ -66,6 +73,7 @@ int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
 
 typedef struct resolved {
     double tol, min_seg, max_seg, tie_len;
+    double floor_len, keep; /* the merge's: MIN_CORNER_STITCH and MERGE_STRAY at most */
     int ties;
 } resolved;
 
@@ -82,6 +90,8 @@ static int resolve(qc_ctx *ctx, const qc_stitch_params *in, resolved *r)
                  : in->min_segment < 0 ? 0 : in->min_segment;
     r->max_seg = in->max_segment;
     r->tie_len = in->tie_length == 0 ? DEF_TIE_LENGTH : in->tie_length;
+    r->floor_len = fmin(r->min_seg, MIN_CORNER_STITCH);
+    r->keep = fmin(r->tol, MERGE_STRAY);
     r->ties = in->tie_stitches;
     if (!(r->tol > 0 && r->tol <= 1000))
         return qc__fail(ctx, QC_ERANGE,
@@ -112,26 +122,6 @@ static double dist(qc_vec2 a, qc_vec2 b)
     return qc_hypot(b.x - a.x, b.y - a.y);
 }
 
-/* Drops points closer than min_seg to the last kept one; the first and last
- * points always stay (the last replaces a too-close predecessor). Returns the
- * number of points kept in m. */
-static size_t merge(const qc_vec2 *v, size_t n, double min_seg, qc_vec2 *m)
-{
-    size_t i, k = 0;
-
-    m[k++] = v[0];
-    for (i = 1; i + 1 < n; i++)
-        if (dist(m[k - 1], v[i]) >= min_seg && dist(m[k - 1], v[i]) > 0)
-            m[k++] = v[i];
-    if (n > 1) {
-        if (k > 1 && dist(m[k - 1], v[n - 1]) < min_seg)
-            k--;
-        if (dist(m[k - 1], v[n - 1]) > 0)
-            m[k++] = v[n - 1];
-    }
-    return k;
-}
-
 static qc_vec2 along(qc_vec2 at, qc_vec2 towards, double l)
 {
     double d = dist(at, towards);
@@ -156,11 +146,27 @@ static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, doubl
     return QC_OK;
 }
 
+/* Whether the stitch from stop (where the start tie leaves the needle) may
+ * skip m[1..i] and run to m[i + 1]: m[i] is too close to stop to sew to,
+ * or the skip keeps the shape, as in the merge (a corner stays). */
+static int skippable(const qc_vec2 *m, size_t i, qc_vec2 stop, const resolved *r)
+{
+    size_t j;
+
+    if (dist(stop, m[i]) < r->floor_len)
+        return 1;
+    for (j = 1; j <= i; j++)
+        if (qc__seg_dist2(m[j], stop, m[i + 1]) > r->keep * r->keep)
+            return 0;
+    return 1;
+}
+
 /* The start tie's length (*l) and the first point sewn after it. An odd tie
  * leaves the needle l along the first segment; points closer than min_seg
- * to it are dropped as merge() drops them, so no stitch after the tie is
- * shorter than the minimum. If that would drop the piece's last point, the
- * tie runs to m[1] instead (and m[1] is where the needle stands). */
+ * to it are dropped as the merge drops them (a corner stays, nothing under
+ * floor_len does). If that would drop the piece's last point, or m[1] is a
+ * corner that close, the tie runs to m[1] instead (and m[1] is where the
+ * needle stands); a later corner that close stays as a short stitch. */
 static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l)
 {
     qc_vec2 stop;
@@ -170,9 +176,12 @@ static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l
     if (!(r->ties & 1))
         return 1;
     stop = along(m[0], m[1], *l);
-    while (i + 1 < n && dist(stop, m[i]) < r->min_seg)
+    while (i + 1 < n && dist(stop, m[i]) < r->min_seg && skippable(m, i, stop, r))
         i++;
-    if (dist(stop, m[i]) < r->min_seg) {
+    /* the piece's end, or its first corner, within reach: the tie runs to
+     * m[1] (unless that makes a tie stitch longer than max_seg) */
+    if (dist(stop, m[i]) < r->min_seg &&
+        (i + 1 == n || (i == 1 && !(r->max_seg > 0 && dist(m[0], m[1]) > r->max_seg)))) {
         *l = dist(m[0], m[1]);
         return 1;
     }
@@ -236,10 +245,16 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
     return total;
 }
 
+static size_t merge(qc__merge *mg, const qc_vec2 *v, size_t n, const resolved *r)
+{
+    return qc__merge_piece(mg, v, n, r->min_seg, r->floor_len, r->keep);
+}
+
 static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
                  const resolved *r, qc_plan *out)
 {
-    qc_vec2 *m = NULL;
+    qc__merge mg;
+    qc_vec2 *m;
     size_t longest = 0, k, start = 0, cnt;
     double total = 0;
     int rc = QC_OK;
@@ -249,21 +264,18 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
             longest = ends->i[k] - start;
         start = ends->i[k];
     }
-    if (longest > 0) {
-        m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *m);
-        if (m == NULL)
-            return QC_ENOMEM;
-    }
+    QC__TRY(qc__merge_init(ctx, &mg, longest));
+    m = mg.m;
     /* count first, so a split that would make too many points is refused
      * before the plan grows */
     for (k = 0, start = 0; k < ends->n; k++) {
-        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
         if (cnt >= 2)
             total += piece_points(m, cnt, r);
         start = ends->i[k];
     }
     if (total > QC_MAX_PLAN_POINTS) {
-        qc__free(ctx, m, longest * sizeof *m);
+        qc__merge_free(ctx, &mg);
         return qc__fail(ctx, QC_ELIMIT,
                         "the stitch plan would have %.3g points, more than the limit of %lu; "
                         "raise the maximum segment",
@@ -271,12 +283,12 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
     }
     start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
-        cnt = merge(pts->v + start, ends->i[k] - start, r->min_seg, m);
+        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
         if (cnt >= 2)
             rc = emit_piece(ctx, out, m, cnt, r);
         start = ends->i[k];
     }
-    qc__free(ctx, m, longest * sizeof *m);
+    qc__merge_free(ctx, &mg);
     return rc;
 }
 

@@ -1,4 +1,4 @@
-/* Internals of stitch/: clipping flattened pieces to a region. */
+/* Internals of stitch/: clipping flattened pieces to a region, merging short steps. */
 #ifndef QC_STITCH_INTERNAL_H
 #define QC_STITCH_INTERNAL_H
 
@@ -13,5 +13,27 @@
 QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
                                const qc_order *in_end, const qc_region *region,
                                qc_points *out, qc_order *out_end);
+
+/* Scratch for qc__merge_piece, sized for the longest piece. */
+typedef struct qc__merge {
+    qc_vec2 *m;           /* the kept points */
+    void *key;            /* the piece's points sorted by place */
+    size_t *place;        /* per point: where the piece passes it again */
+    unsigned char *gone;  /* per place: a junction merged away */
+    size_t cap;
+} qc__merge;
+
+QC__HIDDEN int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest);
+QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
+
+/*
+ * Keeps in mg->m the points of v[0..n) (n <= the longest given to init)
+ * that a plan sews, returning how many: steps shorter than min_seg merged
+ * where the path strays at most keep mm by it, short stitches kept where it
+ * turns (unless under floor_len), points the piece passes twice kept in
+ * place; the first and last points always stay (merge.c).
+ */
+QC__HIDDEN size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg,
+                                  double floor_len, double keep);
 
 #endif
