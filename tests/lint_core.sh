@@ -6,10 +6,11 @@ lib=${1:-build/libquiltc.a}
 status=0
 # objdump names each symbol's section: writable data is .data*, .bss*, COMMON;
 # .data.rel.ro holds const tables of pointers (read-only after relocation).
-# (AddressSanitizer's one-byte __odr_asan.* markers for extern constants are
-# instrumentation, not state.)
+# (AddressSanitizer's one-byte __odr_asan.* markers for extern constants, and
+# clang's sanitizer descriptors __unnamed_N, are instrumentation, not state: C
+# code cannot name a global __unnamed_N.)
 globals=$(objdump -t "$lib" 2>/dev/null | grep -E ' O (\.data|\.bss|\*COM\*)' | grep -v -E ' O \.data\.rel\.ro' |
-    grep -v ' __odr_asan\.')
+    grep -v -E ' (__odr_asan\.|__unnamed_[0-9]+$)')
 if [ -n "$globals" ]; then
     echo "lint: mutable globals in the core:"
     echo "$globals"
