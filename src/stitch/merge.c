@@ -38,9 +38,12 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
     memset(mg, 0, sizeof *mg);
     if (longest == 0)
         return QC_OK;
+    if (longest > UINT32_MAX / 2 - 1) /* a slot holds (index + 1) * 2 + 1 */
+        return qc__fail(ctx, QC_ELIMIT, "a piece of %lu points is too long to merge",
+                        (unsigned long)longest);
     mg->slots = table_slots(longest);
     mg->m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *mg->m);
-    mg->table = (size_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
+    mg->table = (uint32_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
     mg->place = (size_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
     mg->gone = (unsigned char *)qc__alloc(ctx, longest);
     mg->cap = longest;
@@ -87,7 +90,7 @@ static size_t place_hash(qc_vec2 p, size_t mask)
  * was a third of a 10^5-point job); a slot holds (first index + 1) * 2,
  * plus 1 once the place has a second visit. The answer does not depend on
  * the table's order. */
-static void mark_junctions(const qc_vec2 *v, size_t n, size_t *table, size_t slots,
+static void mark_junctions(const qc_vec2 *v, size_t n, uint32_t *table, size_t slots,
                            size_t *place)
 {
     size_t i, mask = slots - 1;
@@ -104,9 +107,9 @@ static void mark_junctions(const qc_vec2 *v, size_t n, size_t *table, size_t slo
             h = (h + 1) & mask;
         }
         if (table[h] == 0)
-            table[h] = (i + 1) * 2;
+            table[h] = (uint32_t)(i + 1) * 2;
         else if (!(v[i - 1].x == v[i].x && v[i - 1].y == v[i].y))
-            table[h] |= 1; /* a new visit, not a repeat of the point before */
+            table[h] |= 1u; /* a new visit, not a repeat of the point before */
         place[i] = h;
     }
     for (i = 0; i < n; i++) {

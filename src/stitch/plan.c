@@ -27,10 +27,11 @@ void qc_plan_free(qc_ctx *ctx, qc_plan *plan)
 }
 
 /* Grows both arrays to a new capacity at once, so a failure leaves the plan
- * exactly as it was (both blocks keep the old capacity). */
+ * exactly as it was (both blocks keep the old capacity). An empty plan
+ * takes exactly what is asked: build() reserves its counted points. */
 static int plan_grow(qc_ctx *ctx, qc_plan *plan, size_t need)
 {
-    size_t cap = plan->cap ? plan->cap : 16;
+    size_t cap = plan->cap ? plan->cap : need > 16 ? need : 16;
     qc_vec2 *p;
     unsigned char *f;
 
@@ -281,6 +282,8 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
                         "raise the maximum segment",
                         total, (unsigned long)QC_MAX_PLAN_POINTS);
     }
+    if (out->cap == 0 && total >= 1) /* counted: no doubling, no copies */
+        rc = plan_grow(ctx, out, (size_t)total);
     start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
         cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);

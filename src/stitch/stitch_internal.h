@@ -17,7 +17,7 @@ QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
 /* Scratch for qc__merge_piece, sized for the longest piece. */
 typedef struct qc__merge {
     qc_vec2 *m;           /* the kept points */
-    size_t *table;        /* a hash table of the piece's places (merge.c) */
+    uint32_t *table;      /* a hash table of the piece's places (merge.c) */
     size_t slots;         /* its size, a power of two */
     size_t *place;        /* per point: where the piece passes it again */
     unsigned char *gone;  /* per place: a junction merged away */
