@@ -62,11 +62,13 @@ QC__HIDDEN int qc__meander_reach(qc_ctx *ctx, const qc_region *region, const qc_
                                  double d, int open, qc_points *c);
 
 /*
- * Draws the curve c (open: its ends stay) in round the empty discs it
- * leaves wider than 0.57 d across region: every vertex within 0.7 d
- * beyond such a disc moves radially towards its centre, by up to 0.1 d,
- * kept inside s; no vertex is added. A few passes, each undone should the
- * curve then cross itself. Errors: QC_ENOMEM.
+ * Draws the curve c (open: its ends stay) in round the widest empty discs
+ * it leaves in region (wider than 0.57 d): every vertex within 0.7 d
+ * beyond such a disc moves radially towards its centre, by up to 0.15 d,
+ * lines near the seams (s) only towards them; no vertex is added. A few
+ * passes, while the widest disc narrows; one that does not, or that makes
+ * the curve cross itself, is undone. Curves beyond 8000 vertices are left
+ * alone (a work budget). Deterministic. Errors: QC_ENOMEM.
  */
 QC__HIDDEN int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
                                  double d, int open, qc_points *c);

@@ -3,17 +3,18 @@
  * evenness). The growth settles where its short-range forces balance, and
  * where channels meet or bend (a T or an L of lines d apart) the fabric
  * lies 0.65-0.7 d from any stitch, not the d/2 of evenly spaced lines. So,
- * a few passes: a distance raster of the curve finds the largest empty
- * discs (its local maxima, then climbed to the exact distance), and round
- * each disc wider than the goal the curve is drawn in towards its centre:
- * every vertex within a band beyond the disc moves radially inward by the
- * excess, the share falling smoothly to nothing across the band. The move
- * is a radial map that keeps order along every ray (r - shift(r) grows
- * with r), so it folds nothing: the curve cannot come to cross itself,
- * and no length is added (the thread the holes lacked comes from the
- * channels round them, which were narrower). Moves are kept inside the
- * seams' clearance; should the whole curve cross itself after a pass all
- * the same, the pass is undone.
+ * a few passes: a distance raster of the curve finds the widest empty
+ * discs (its local maxima, climbed to the exact distance), and round each
+ * disc within a little of the widest the curve is drawn in towards its
+ * centre: every vertex in a band beyond the disc moves radially inward,
+ * by up to the excess, the share falling smoothly to nothing across the
+ * band, and less where the channel behind it would grow too wide. Lines
+ * near the seams move only towards them (they cover the seams). Radial
+ * moves of at most 0.15 d, ordered along each ray, fold nothing; no vertex
+ * is added (the thread comes from the narrower channels round a hole).
+ * A pass is judged by the next one's measure: one after which the widest
+ * disc is no narrower is undone and the phase ends, as it is should the
+ * curve cross itself (the hard invariant, checked on the whole curve).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -29,12 +30,14 @@
 #define BAND 0.7        /* the vertices moved lie this far beyond the disc, times d */
 #define ROOM 0.56       /* a vertex moves only while the space behind it stays
                          * within this (the ridge's distance, times d) */
-#define RIM 0.45        /* vertices this near the seams stay (they cover them), times d */
-#define PASSES 4
-#define WIN_STEP (1.0 / 6.0) /* the check round a closed disc: cells, times d */
-#define WIN_PAD 0.5     /* ... out to this beyond the moved band, times d */
-#define GAIN 0.01       /* a disc's moves are kept if the check's farthest falls this much, times d */
-#define MAX_MOVED 256   /* vertices one disc moves */
+#define RIM 0.8         /* vertices this near the seams move only towards them ... */
+#define SEAM 0.12       /* ... and no nearer than this, times d */
+#define PASSES 6
+#define MAX_VERTICES 8000 /* a work budget: larger curves (a 15 x 15 in block at
+                           * 0.4 in, whose middle settles during the growth) are
+                           * left as grown, each pass being global */
+#define TIER 0.04       /* a pass closes the discs within this of the widest, times d */
+#define GAIN 0.003      /* a pass is kept if the widest disc shrank by this, times d */
 
 typedef struct holes {
     const qc_points *c;
@@ -43,9 +46,6 @@ typedef struct holes {
     const qc__sdf *s;
     qc__seg_grid sg;
     uint32_t *stamp; /* per vertex: the last disc that moved it, + 1 */
-    size_t nmoved;   /* the vertices the last disc moved, and where they were */
-    uint32_t moved[MAX_MOVED];
-    qc_vec2 was[MAX_MOVED];
 } holes;
 
 static uint32_t next_seg(const void *ud, uint32_t k)
@@ -172,7 +172,6 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
     double reach = R + BAND * h->d, pad = 0.25 * h->d, band = BAND * h->d;
     size_t cells[4], x, y, e;
 
-    h->nmoved = 0;
     qc__seg_grid_cells(&h->sg, QC__V2(q.x - reach - pad, q.y - reach - pad),
                        QC__V2(q.x + reach + pad, q.y + reach + pad), cells);
     for (y = cells[1]; y <= cells[3]; y++)
@@ -180,7 +179,7 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
             for (e = h->sg.start[y * h->sg.gx + x]; e < h->sg.start[y * h->sg.gx + x + 1]; e++) {
                 size_t i = h->sg.seg[e];
                 qc_vec2 p = c->v[i], m;
-                double r = qc_hypot(p.x - q.x, p.y - q.y), s;
+                double r = qc_hypot(p.x - q.x, p.y - q.y), s, was, now;
 
                 if (h->stamp[i] == k + 1 || !(r < reach) || !(r > 0.0) ||
                     (h->open && (i == 0 || i + 1 == c->n)))
@@ -193,43 +192,31 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
                 if (s > r - 0.5 * R) /* (a vertex inside the disc: the raster erred) */
                     s = fmax(0.0, r - 0.5 * R);
                 m = QC__V2(p.x + s * (q.x - p.x) / r, p.y + s * (q.y - p.y) / r);
-                if (qc__sdf_at(h->s, p) < RIM * h->d || qc__sdf_at(h->s, m) < RIM * h->d ||
-                    h->nmoved == MAX_MOVED)
+                was = qc__sdf_at(h->s, p);
+                now = qc__sdf_at(h->s, m);
+                /* near the seams a vertex may only come nearer them (it covers
+                 * them), and no nearer than the seam clearance */
+                if ((was < RIM * h->d && now > was) || now < SEAM * h->d)
                     continue;
-                h->moved[h->nmoved] = (uint32_t)i;
-                h->was[h->nmoved++] = p;
                 c->v[i] = m;
             }
 }
 
-/* The farthest any point inside within rad of q lies from the curve,
- * on a lattice d/6 apart (capped at d). */
-static double window_far(const holes *h, qc_vec2 q, double rad)
-{
-    double step = WIN_STEP * h->d, worst = 0.0, x, y;
-
-    for (y = q.y - rad; y <= q.y + rad; y += step)
-        for (x = q.x - rad; x <= q.x + rad; x += step) {
-            double r;
-            if (qc__sdf_at(h->s, QC__V2(x, y)) <= 0.0)
-                continue;
-            (void)nearest(h, QC__V2(x, y), h->d, &r);
-            worst = fmax(worst, fmin(r, h->d));
-        }
-    return worst;
-}
-
-/* One pass: the discs wider than the goal closed in. *moved: how many. */
-static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, size_t *moved)
+/* One pass: *worst receives the widest disc's exact radius (the greatest
+ * of the raster's first peaks, climbed); with act, the discs wider than
+ * the goal and than *worst less TIER are closed in (*moved: how many). */
+static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, int act,
+                double *worst, size_t *moved)
 {
     qc__gap_grid g;
     unsigned char *mask = NULL;
     peak *pk = NULL;
     size_t np = 0, pcap = 0, cells, i, k, ns = h->open ? c->n - 1 : c->n;
-    double floor2;
+    double floor2, goal;
     int rc;
 
     *moved = 0;
+    *worst = 0.0;
     memset(&g, 0, sizeof g);
     memset(&h->sg, 0, sizeof h->sg);
     rc = qc__gap_grid_inside(ctx, region, RES * h->d, &g, &mask);
@@ -269,28 +256,26 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, si
     }
     if (rc == QC_OK && np > 0)
         rc = qc__seg_grid_build(ctx, &h->sg, c->v, ns, next_seg, c, h->d, 4.0);
-    for (k = 0; rc == QC_OK && k < np; k++) {
+    /* the raster errs by up to a cell: every peak within two of the greatest */
+    for (k = 0; rc == QC_OK && k < np &&
+                sqrt((double)pk[k].f) >= sqrt((double)pk[0].f) - 2.0; k++) {
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
-        double R, rad, before;
-        size_t j, t;
+        double R;
+        (void)climb(h, &q, g.h, &R);
+        if (R < HUGE_VAL)
+            *worst = fmax(*worst, R);
+    }
+    goal = fmax(GOAL * h->d, *worst - TIER * h->d);
+    for (k = 0; rc == QC_OK && act && k < np; k++) {
+        qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
+        double R;
 
         if (mask[pk[k].at] & 2)
             continue;
         (void)climb(h, &q, g.h, &R);
-        if (!(R > GOAL * h->d) || R == HUGE_VAL)
+        if (!(R > goal) || R == HUGE_VAL)
             continue;
-        rad = R + (BAND + WIN_PAD) * h->d;
-        before = window_far(h, q, rad);
-        for (t = 0; t < 2; t++) { /* the full shift, else half of it */
-            close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d) / (double)(t + 1),
-                     (uint32_t)(2 * k + t));
-            if (window_far(h, q, rad) < before - GAIN * h->d)
-                break;
-            for (j = 0; j < h->nmoved; j++) /* no better: undone */
-                c->v[h->moved[j]] = h->was[j];
-        }
-        if (t == 2)
-            continue;
+        close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d), (uint32_t)k);
         (*moved)++;
         /* the discs whose bands this one moved wait for the next pass */
         block(&g, mask, q, 2.0 * (R + BAND * h->d));
@@ -308,33 +293,47 @@ int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s, do
                       int open, qc_points *c)
 {
     holes h;
-    qc_points keep = {0};
-    size_t p, moved = 0, crossings = 0;
+    qc_points prev = {0}, cur = {0}, t;
+    size_t p, moved = 1, crossings = 0;
+    double was = HUGE_VAL, now = 0.0;
     int rc = QC_OK;
 
-    if (c->n < 3)
+    if (c->n < 3 || c->n > MAX_VERTICES)
         return QC_OK;
     memset(&h, 0, sizeof h);
     h.open = open;
     h.d = d;
     h.s = s;
     h.c = c;
-    for (p = 0; p < PASSES && rc == QC_OK; p++) {
-        rc = QC__RESERVE(ctx, keep.v, keep.cap, c->n);
-        if (rc == QC_OK) {
-            memcpy(keep.v, c->v, c->n * sizeof *c->v);
-            keep.n = c->n;
-            rc = pass(ctx, region, &h, c, &moved);
+    rc = QC__RESERVE(ctx, prev.v, prev.cap, c->n);
+    if (rc == QC_OK)
+        rc = QC__RESERVE(ctx, cur.v, cur.cap, c->n);
+    /* each pass measures the curve it starts from (now) before it moves
+     * it: one that finds the widest disc no narrower than the pass before
+     * did (was) undoes that pass, and the phase ends */
+    for (p = 0; p <= PASSES && rc == QC_OK; p++) {
+        memcpy(cur.v, c->v, c->n * sizeof *c->v);
+        rc = pass(ctx, region, &h, c, p < PASSES && moved > 0, &now, &moved);
+        if (rc < 0)
+            break;
+        if (p > 0 && !(now < was - GAIN * d)) {
+            memcpy(c->v, prev.v, c->n * sizeof *c->v);
+            break;
         }
-        if (rc == QC_OK && moved > 0)
+        if (moved > 0)
             rc = qc_path_self_crossings(ctx, c->v, c->n, !open, &crossings);
-        if (rc == QC_OK && crossings > 0) { /* not by construction: the pass undone */
-            memcpy(c->v, keep.v, c->n * sizeof *c->v);
+        if (rc == QC_OK && crossings > 0) { /* not by construction: undone */
+            memcpy(c->v, cur.v, c->n * sizeof *c->v);
             break;
         }
         if (moved == 0)
             break;
+        t = prev; /* the curve this pass started from is the one to go back to */
+        prev = cur;
+        cur = t;
+        was = now;
     }
-    qc_points_free(ctx, &keep);
+    qc_points_free(ctx, &prev);
+    qc_points_free(ctx, &cur);
     return rc;
 }
