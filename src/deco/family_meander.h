@@ -62,6 +62,18 @@ QC__HIDDEN int qc__meander_reach(qc_ctx *ctx, const qc_region *region, const qc_
                                  double d, int open, qc_points *c);
 
 /*
+ * Draws the curve c (open: its ends stay) in round the widest empty discs
+ * it leaves in region (wider than 0.57 d): every vertex within 0.7 d
+ * beyond such a disc moves radially towards its centre, by up to 0.15 d,
+ * lines near the seams (s) only towards them; no vertex is added. A few
+ * passes, while the widest disc narrows; one that does not, or that makes
+ * the curve cross itself, is undone. Curves beyond 8000 vertices are left
+ * alone (a work budget). Deterministic. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
+                                 double d, int open, qc_points *c);
+
+/*
  * Appends to out the Catmull-Rom spline through pts[0..n) (closed != 0
  * joins the last point to the first), every span that would make the
  * flattened path cross itself, or (sdf not NULL) stray outside sdf's
