@@ -49,3 +49,19 @@ int qc_order_push(qc_ctx *ctx, qc_order *order, uint32_t i)
     order->i[order->n++] = i;
     return QC_OK;
 }
+
+/* Cuts the array's block to what it holds (as qc__path_fit). */
+void qc__points_fit(qc_ctx *ctx, qc_points *a)
+{
+    qc_vec2 *v;
+
+    if (a->n == 0 || a->cap <= a->n)
+        return;
+    v = (qc_vec2 *)qc__realloc(ctx, a->v, a->cap * sizeof *v, a->n * sizeof *v);
+    if (v == NULL) {
+        qc_clear_error(ctx);
+        return;
+    }
+    a->v = v;
+    a->cap = a->n;
+}

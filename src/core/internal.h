@@ -47,6 +47,11 @@ QC__HIDDEN int qc__reserve_exact(qc_ctx *ctx, void **ptr, size_t *cap, size_t ne
 #define QC__RESERVE_EXACT(ctx, arr, capv, need) \
     qc__reserve_exact((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
 
+/* Cut a finished array or path to what it holds (a failed shrink keeps the
+ * block): results held to the end carry no doubling slack. */
+QC__HIDDEN void qc__points_fit(qc_ctx *ctx, qc_points *a);
+QC__HIDDEN void qc__path_fit(qc_ctx *ctx, qc_path *path);
+
 /* Scans a decimal number ([+-] digits [. digits] [(e|E) [+-] digits]; no
  * hex, nan, inf or locale) at s[*pos..n): 1 with *v correctly rounded
  * (possibly +-inf for a huge exponent) and *pos past it, or 0 when none

@@ -87,3 +87,34 @@ size_t qc_path_pieces(const qc_path *path)
         n += path->cmd[c] == QC_PATH_MOVE;
     return n;
 }
+
+/* Cuts the path's blocks to what it holds: a result keeps its path through
+ * the stitch plan and the writers, so at 10^6 points a doubling's slack is
+ * tens of MB held to the end. A shrink that fails keeps the larger block. */
+void qc__path_fit(qc_ctx *ctx, qc_path *path)
+{
+    unsigned char *cmd;
+    qc_vec2 *pt;
+
+    if (path->ncmd == 0 || path->npt == 0)
+        return;
+    if (path->cmd_cap > path->ncmd) {
+        cmd = (unsigned char *)qc__realloc(ctx, path->cmd, path->cmd_cap, path->ncmd);
+        if (cmd == NULL) {
+            qc_clear_error(ctx);
+            return;
+        }
+        path->cmd = cmd;
+        path->cmd_cap = path->ncmd;
+    }
+    if (path->pt_cap > path->npt) {
+        pt = (qc_vec2 *)qc__realloc(ctx, path->pt, path->pt_cap * sizeof *pt,
+                                    path->npt * sizeof *pt);
+        if (pt == NULL) {
+            qc_clear_error(ctx);
+            return;
+        }
+        path->pt = pt;
+        path->pt_cap = path->npt;
+    }
+}

@@ -494,7 +494,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
         rc = render(ctx, &pb, motifs, atts, first, out);
     }
     if (rc == QC_OK)
-        qc__pebble_path_fit(ctx, out);
+        qc__path_fit(ctx, out);
     if (rc == QC_OK && stats != NULL) {
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
         stats->motifs_placed += pb.n;

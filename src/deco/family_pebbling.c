@@ -185,7 +185,7 @@ int qc__pebbling_run(qc_ctx *ctx, const qc_region *region, const qc_params *para
         rc = render(ctx, &pb, pb.draw_in, out);
     }
     if (rc == QC_OK)
-        qc__pebble_path_fit(ctx, out);
+        qc__path_fit(ctx, out);
     if (rc == QC_OK && stats != NULL)
         rc = qc__pebbles_stats(ctx, &pb, &b, stats);
     qc_path_free(ctx, &raw);

@@ -93,10 +93,6 @@ QC__HIDDEN int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound
 QC__HIDDEN int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first,
                                     uint32_t **kids, double *start_angle);
 
-/* Cuts path's arrays to its size (a failed shrink keeps them as they are):
- * after drawing into a reservation for the most it could hold
- * (shared_pebble_fit.c). */
-QC__HIDDEN void qc__pebble_path_fit(qc_ctx *ctx, qc_path *path);
 
 /* Radius min/mean/max, count, pebbles touching fewer than three, coverage. */
 QC__HIDDEN int qc__pebbles_stats(qc_ctx *ctx, const qc__pebbles *pb, qc__pbound *b,

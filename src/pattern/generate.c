@@ -219,6 +219,7 @@ int qc__generate_one(qc_ctx *ctx, const qc_region *region, const qc_points *give
     if (res->path.ncmd == 0)
         return qc__fail(ctx, QC_EEMPTY, "the %s family produced no path in this region",
                         family->name);
+    qc__path_fit(ctx, &res->path);
     res->stats.points = res->points.n;
     res->stats.edges = res->edges.n;
     res->stats.order = res->order.n;

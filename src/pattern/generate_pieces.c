@@ -121,6 +121,7 @@ int qc__generate_pieces(qc_ctx *ctx, const qc_region *region, const qc_points *g
     if (rc < 0)
         return rc;
     out->stats.coverage = area > 0 ? covered / area : 0;
+    qc__path_fit(ctx, &out->path);
     out->stats.points = out->points.n;
     out->stats.edges = out->edges.n;
     out->stats.order = out->order.n;

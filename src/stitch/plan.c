@@ -312,6 +312,7 @@ int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_regio
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
     rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
+    qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
     if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
         rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);
         if (rc == QC_OK)
