@@ -53,6 +53,18 @@ QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn
                                 const qc__sdf *s, double d);
 
 /*
+ * Rounds the turns of c (open: its ends stay) tighter than turn (mm) as
+ * the tests measure them (the circle through a vertex and the points turn
+ * before and after it along c): their segments are split, then each run of
+ * tight vertices moves, a few rounds over, towards the middle of those
+ * points, kept only where the whole run stays d/20 inside s's region,
+ * crosses nothing and leaves no seam point that was within 1/4 in of the
+ * curve further away. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn,
+                                 const qc__sdf *s, double d);
+
+/*
  * Sends the evolved curve c (open: its ends stay) into every convex corner
  * of region sharper than 100 degrees that it leaves further than issue 16's
  * reach: a narrow tongue from its nearest segment down the bisector, kept
