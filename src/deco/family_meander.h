@@ -53,6 +53,14 @@ QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn
                                 const qc__sdf *s, double d);
 
 /*
+ * Waves the straight runs of c (open: its ends stay) longer than 1.8 d
+ * (within d/20 of their chord): a wave of about 1.5 d, towards the
+ * boundary near it, either side elsewhere, kept where it stays inside s's
+ * region and crosses nothing. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sdf *s);
+
+/*
  * Rounds the turns of c (open: its ends stay) tighter than turn (mm) as
  * the tests measure them (the circle through a vertex and the points turn
  * before and after it along c): their segments are split, then each run of

@@ -290,7 +290,9 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
 
     if (c->n < 4 || !(turn > 0.0))
         return QC_OK;
-    rc = densify(ctx, c, open, turn, &dense);
+    rc = qc__meander_wave(ctx, c, open, d, s); /* first: a wave turns gently */
+    if (rc == QC_OK)
+        rc = densify(ctx, c, open, turn, &dense);
     if (rc < 0) {
         qc_points_free(ctx, &dense);
         return rc;
