@@ -26,6 +26,8 @@
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
+#define ROUND_NEAR 6     /* after the first round, vertices this many steps from a
+                          * tight one are measured again (the stencil spans 2 / ROUND_DENSE) */
 #define SEAM_MM 6.35     /* issue 17: every seam within 1/4 in of a stitch, kept as it was */
 #define SEAM_OFF 0.05    /* mm: a sample further outside is off the seam (past a corner) */
 #define SEAM_SAMPLES 8   /* seam points on either side of a vertex, out to SEAM_MM */
@@ -282,7 +284,7 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
                       double d)
 {
     qc_points dense = {0};
-    unsigned char *tight = NULL;
+    unsigned char *tight = NULL, *near = NULL;
     qc_vec2 *to = NULL, *was = NULL;
     size_t pass, i, n;
     double longest = 0.0;
@@ -301,10 +303,13 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
     *c = dense;
     n = c->n;
     tight = qc__alloc(ctx, n);
+    near = qc__alloc(ctx, n);
     to = qc__alloc_array(ctx, n, sizeof *to);
     was = qc__alloc_array(ctx, n, sizeof *was);
-    if (tight == NULL || to == NULL || was == NULL)
+    if (tight == NULL || near == NULL || to == NULL || was == NULL)
         rc = QC_ENOMEM;
+    else
+        memset(near, 1, n);
     for (i = 0; i + (open ? 1 : 0) < n; i++) {
         qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
         longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
@@ -313,8 +318,17 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
         vbins bins;
         size_t moved = 0, start = 0, seen;
 
+        if (pass > 0) { /* only near what was tight: the rest has not moved */
+            memset(near, 0, n);
+            for (i = 0; i < n; i++)
+                if (tight[i]) {
+                    size_t k;
+                    for (k = 0; k <= 2 * ROUND_NEAR && k < n; k++)
+                        near[(i + n - ROUND_NEAR % n + k) % n] = 1;
+                }
+        }
         for (i = 0; i < n; i++) {
-            tight[i] = (unsigned char)turns_tight(c, open, i, turn);
+            tight[i] = (unsigned char)(near[i] && turns_tight(c, open, i, turn));
             if (tight[i]) {
                 qc_vec2 a = along(c, open, i, -1, turn), b = along(c, open, i, 1, turn);
                 qc_vec2 p = c->v[i];
@@ -346,6 +360,7 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
             break;
     }
     qc__free(ctx, tight, n);
+    qc__free(ctx, near, n);
     qc__free(ctx, to, n * sizeof *to);
     qc__free(ctx, was, n * sizeof *was);
     if (rc == QC_OK) { /* the split points left in line: the corner as it was */
