@@ -52,6 +52,9 @@ QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *
 QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn,
                                 const qc__sdf *s, double d);
 
+/* 1 if segment ab stays inner (mm) or more inside s's region, else 0. */
+QC__HIDDEN int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner);
+
 /*
  * Waves the straight runs of c (open: its ends stay) longer than 1.8 d
  * (within d/20 of their chord): a wave of about 1.5 d, towards the

@@ -136,6 +136,21 @@ static int seg_crosses(const qc_points *c, int open, const vbins *b, size_t k, q
     return 0;
 }
 
+int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner)
+{
+    double len = qc_hypot(b.x - a.x, b.y - a.y), t = 0.0, floor_step = 1e-3 * inner;
+
+    for (;;) { /* sphere tracing: nothing of the boundary within v of q */
+        double u = len > 0.0 ? fmin(t, len) / len : 0.0;
+        double v = qc__sdf_exact(s, QC__V2(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)), NULL);
+        if (v < inner)
+            return 0;
+        if (t >= len)
+            return 1;
+        t += fmax(v - inner, floor_step);
+    }
+}
+
 /* The point arc length len from vertex i along c, backwards (dir < 0) or
  * forwards; an open curve's end where it is nearer. */
 static qc_vec2 along(const qc_points *c, int open, size_t i, int dir, double len)
@@ -263,7 +278,8 @@ static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
         size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
         qc_vec2 m = to[i];
         was[k] = c->v[i];
-        if (qc__sdf_exact(s, m, NULL) < inner || bares_seam(c, open, b, s, i, m))
+        if (!qc__meander_seg_inside(s, c->v[ia], m, inner) ||
+            !qc__meander_seg_inside(s, m, c->v[ib], inner) || bares_seam(c, open, b, s, i, m))
             break;
         c->v[i] = m;
         if (seg_crosses(c, open, b, i, m, ia, i) || seg_crosses(c, open, b, i, m, i, ib)) {

@@ -105,7 +105,7 @@ static int wave_run(qc_ctx *ctx, const qc_points *c, int open, const qc__seg_gri
         px += nx * w;
         py += ny * w;
         p = QC__V2(px, py);
-        if (k > 0 && k < m && qc__sdf_exact(s, p, NULL) < WAVE_INNER * d)
+        if (k > 0 && !qc__meander_seg_inside(s, prev, p, 0.5 * WAVE_INNER * d))
             break;
         if (k > 0 && crosses_curve(c, open, g, i == 0 ? 0 : i - 1, j, prev, p))
             break;
