@@ -56,10 +56,10 @@ QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn
 QC__HIDDEN int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner);
 
 /*
- * Waves the straight runs of c (open: its ends stay) longer than 1.8 d
- * (within d/20 of their chord): a wave of about 1.5 d, towards the
- * boundary near it, either side elsewhere, kept where it stays inside s's
- * region and crosses nothing. Errors: QC_ENOMEM.
+ * Waves the straight runs of c (open: its ends stay) longer than 1.5 d
+ * (within d/20 of their chord): a sine of about 1.5 d, 0.07 d either side
+ * (near the boundary no nearer it than 0.06 d), kept where it stays inside
+ * s's region and crosses nothing. Errors: QC_ENOMEM.
  */
 QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sdf *s);
 

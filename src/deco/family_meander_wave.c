@@ -3,22 +3,24 @@
  * The evolution lays the curve straight along a seam (drawn onto the
  * clearance contour) and between parallel neighbours. Each run of the
  * polyline longer than WAVE_RUN d that stays within d/20 of its chord (as
- * test_meander measures a straight run) is redrawn as a gentle wave of
- * about WAVE_LENGTH d: one-sided towards the boundary where the run is
- * near it (the seam only comes nearer), either side in the middle. A
- * wave is kept only where it stays inside and crosses nothing.
+ * test_meander measures a straight run) is redrawn as a sine of about
+ * WAVE_LENGTH d and WAVE_SIDE d either side, a whole number of waves so it
+ * meets the curve where the run did. Near the boundary its crests towards
+ * the seam stop WAVE_INNER d short of it (the troughs, away from the seam,
+ * stay within 1/4 in of it: the run was at the clearance). A wave is kept
+ * only where it stays inside and crosses nothing: the waves of two
+ * neighbouring runs d apart leave them at least d - 2 WAVE_SIDE apart.
  */
 #include <math.h>
 #include <string.h>
 
 #include "family_meander.h"
 
-#define WAVE_RUN 1.8      /* runs longer than this, times d, are waved */
+#define WAVE_RUN 1.5      /* runs longer than this, times d, are waved */
 #define WAVE_TOL 0.05     /* straight: within this of the chord, times d */
 #define WAVE_LENGTH 1.5   /* wavelength, times d (a whole one in any 2 d) */
-#define WAVE_SIDE 0.08    /* amplitude either side, times d */
-#define WAVE_RIM 0.12     /* depth of a one-sided wave towards the boundary, times d */
-#define WAVE_RIM_BAND 0.5 /* runs nearer the boundary than this, times d, wave towards it */
+#define WAVE_SIDE 0.07    /* amplitude either side, times d */
+#define WAVE_RIM_BAND 0.5 /* runs nearer the boundary than this, times d, are clipped there */
 #define WAVE_STEP 0.15    /* the wave's vertex spacing, times d */
 #define WAVE_INNER 0.06   /* a waved vertex stays this far inside, times d */
 
@@ -87,20 +89,16 @@ static int wave_run(qc_ctx *ctx, const qc_points *c, int open, const qc__seg_gri
     if (waves < 1.0)
         waves = 1.0;
     lam = len / waves;
-    if (rim) { /* towards the boundary: against the field's gradient */
-        if (nx * grad.x + ny * grad.y > 0.0)
-            nx = -nx, ny = -ny;
-        amp = WAVE_RIM * d;
-    }
+    if (rim && nx * grad.x + ny * grad.y > 0.0) /* w > 0: towards the boundary */
+        nx = -nx, ny = -ny;
     for (k = 0; k <= m; k++) {
         double t = len * (double)k / (double)m, w, px, py;
         qc_vec2 p;
         /* the run's own vertices are in line: its point at t is on the chord */
-        w = rim ? 0.5 * amp * (1.0 - qc_cos(2.0 * QC_PI * t / lam))
-                : amp * qc_sin(2.0 * QC_PI * t / lam);
+        w = amp * qc_sin(2.0 * QC_PI * t / lam);
         px = a.x + ux * t;
         py = a.y + uy * t;
-        if (rim) /* no nearer the boundary than WAVE_INNER d */
+        if (rim && w > 0.0) /* no nearer the boundary than WAVE_INNER d */
             w = fmax(0.0, fmin(w, qc__sdf_exact(s, QC__V2(px, py), NULL) - WAVE_INNER * d));
         px += nx * w;
         py += ny * w;
