@@ -26,6 +26,8 @@
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
+#define ROUND_TIP 0.12   /* runs with a vertex this near the boundary, times d, stay:
+                          * a tongue's tip, deep in a corner (the clearance is 0.22 d) */
 #define ROUND_NEAR 6     /* after the first round, vertices this many steps from a
                           * tight one are measured again (the stencil spans 2 / ROUND_DENSE) */
 #define SEAM_MM 6.35     /* issue 17: every seam within 1/4 in of a stitch, kept as it was */
@@ -270,7 +272,7 @@ static int bares_seam(const qc_points *c, int open, const vbins *b, const qc__sd
  * of the boundary, bare a seam or cross the curve (a corner half rounded
  * turns tighter than before). Returns 1 if moved. */
 static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, double inner,
-                     size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
+                     double tip, size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
 {
     size_t n = c->n, k, i = first;
 
@@ -278,7 +280,7 @@ static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
         size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
         qc_vec2 m = to[i];
         was[k] = c->v[i];
-        if (!qc__meander_seg_inside(s, c->v[ia], m, inner) ||
+        if (qc__sdf_exact(s, was[k], NULL) < tip || !qc__meander_seg_inside(s, c->v[ia], m, inner) ||
             !qc__meander_seg_inside(s, m, c->v[ib], inner) || bares_seam(c, open, b, s, i, m))
             break;
         c->v[i] = m;
@@ -365,7 +367,8 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
                 j = j + 1 == n ? 0 : j + 1;
             }
             if (count > 0)
-                moved += (size_t)round_run(c, open, &bins, s, EASE_CLEAR * d, i, count, to, was);
+                moved += (size_t)round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, i, count,
+                                            to, was);
             else
                 j = j + 1 == n ? 0 : j + 1;
             seen += count > 0 ? count : 1;
