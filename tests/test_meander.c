@@ -371,9 +371,19 @@ static void meander_should_meet_the_goals_on_every_shape(void)
              * as grown, 1.39-1.61 with the holes closed in) */
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].farthest <= (acute ? 1.25 : 0.72), msg);
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.63, msg);
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].turn >= 0.12 * dd[k], msg);
-            /* (the pieces' figure is the jump between them: generate sews each piece on its own) */
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 12.0 : 4.0), msg);
+            /* turn: 0.15-0.24 d before the rounding pass (family_meander_ease.c),
+             * 0.18-0.34 d now but where it is left: the heart's cusp (seed 17,
+             * 0.14 d: the curve wraps its tip, which only a turn rounded
+             * outwards would clear) and a tongue's tip in a corner (two
+             * pieces seed 17, 0.14 d: rounded, the tongue leaves the corner);
+             * the hooks where the curve leaves a run along a seam stay
+             * 0.18-0.20 d where rounding them would bare the seam */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].turn >= 0.13 * dd[k], msg);
+            TEST_ASSERT_TRUE_MESSAGE(k == S_HEART || k == S_PIECES || m[k][s].turn >= 0.17 * dd[k], msg);
+            /* straight: 2.3-3.45 d before the waves (family_meander_wave.c),
+             * 1.55-2.45 d now. (The pieces' figure is the jump between them:
+             * generate sews each piece on its own.) */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 12.0 : 2.5), msg);
         }
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }

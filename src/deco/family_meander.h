@@ -52,6 +52,29 @@ QC__HIDDEN int qc__meander_grow(qc_ctx *ctx, qc_points *c, const qc__grow_opts *
 QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn,
                                 const qc__sdf *s, double d);
 
+/* 1 if segment ab stays inner (mm) or more inside s's region, else 0. */
+QC__HIDDEN int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner);
+
+/*
+ * Waves the straight runs of c (open: its ends stay) longer than 1.5 d
+ * (within d/20 of their chord): a sine of about 1.5 d, 0.07 d either side
+ * (near the boundary no nearer it than 0.06 d), kept where it stays inside
+ * s's region and crosses nothing. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sdf *s);
+
+/*
+ * Rounds the turns of c (open: its ends stay) tighter than turn (mm) as
+ * the tests measure them (the circle through a vertex and the points turn
+ * before and after it along c): their segments are split, then each run of
+ * tight vertices moves, a few rounds over, towards the middle of those
+ * points, kept only where the whole run stays d/20 inside s's region,
+ * crosses nothing and leaves no seam point that was within 1/4 in of the
+ * curve further away. Errors: QC_ENOMEM.
+ */
+QC__HIDDEN int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn,
+                                 const qc__sdf *s, double d);
+
 /*
  * Sends the evolved curve c (open: its ends stay) into every convex corner
  * of region sharper than 100 degrees that it leaves further than issue 16's

@@ -1,5 +1,5 @@
 /*
- * Easing the curve's tightest turns. The evolution fairs a vertex that
+ * Easing and rounding the curve's tightest turns. The evolution fairs a vertex that
  * turns tighter than the turn radius, but the boundary's wall pushes it
  * back: where the curve hugs a convex corner of the region it follows the
  * clearance's own sharp corner, and a tongue (family_meander_reach.c)
@@ -7,7 +7,10 @@
  * halfway towards the midpoint of its neighbours (into the bend, away from
  * the boundary), a few passes over; a move is kept only if the vertex stays
  * inside and its two segments cross nothing (checked against the segments
- * near it, binned in a grid).
+ * near it, binned in a grid). The spline through a corner still turns
+ * tighter than its three vertices say, so a last pass (qc__meander_round)
+ * measures each vertex's turn over the turn radius along the curve, as the
+ * tests do, and rounds what is still tight.
  */
 #include <math.h>
 #include <string.h>
@@ -19,6 +22,17 @@
 #define EASE_CLEAR 0.05  /* a moved vertex stays this far inside, times d */
 #define EASE_BELOW 0.95  /* eased: turning tighter than this times the radius
                           * (a tongue's tip turns at the radius itself) */
+#define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
+#define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
+#define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
+#define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
+#define ROUND_TIP 0.12   /* runs with a vertex this near the boundary, times d, stay:
+                          * a tongue's tip, deep in a corner (the clearance is 0.22 d) */
+#define ROUND_NEAR 6     /* after the first round, vertices this many steps from a
+                          * tight one are measured again (the stencil spans 2 / ROUND_DENSE) */
+#define SEAM_MM 6.35     /* issue 17: every seam within 1/4 in of a stitch, kept as it was */
+#define SEAM_OFF 0.05    /* mm: a sample further outside is off the seam (past a corner) */
+#define SEAM_SAMPLES 8   /* seam points on either side of a vertex, out to SEAM_MM */
 
 /* Radius of the circle through a, p, b (huge when they are in line). */
 static double circumradius(qc_vec2 a, qc_vec2 p, qc_vec2 b)
@@ -122,6 +136,265 @@ static int seg_crosses(const qc_points *c, int open, const vbins *b, size_t k, q
                     return 1;
             }
     return 0;
+}
+
+int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner)
+{
+    double len = qc_hypot(b.x - a.x, b.y - a.y), t = 0.0, floor_step = 1e-3 * inner;
+
+    for (;;) { /* sphere tracing: nothing of the boundary within v of q */
+        double u = len > 0.0 ? fmin(t, len) / len : 0.0;
+        double v = qc__sdf_exact(s, QC__V2(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)), NULL);
+        if (v < inner)
+            return 0;
+        if (t >= len)
+            return 1;
+        t += fmax(v - inner, floor_step);
+    }
+}
+
+/* The point arc length len from vertex i along c, backwards (dir < 0) or
+ * forwards; an open curve's end where it is nearer. */
+static qc_vec2 along(const qc_points *c, int open, size_t i, int dir, double len)
+{
+    size_t n = c->n, k = i, steps;
+
+    for (steps = 0; steps < n; steps++) {
+        size_t j;
+        double seg;
+        if (dir < 0 && k == 0 && open)
+            return c->v[0];
+        if (dir > 0 && k + 1 == n && open)
+            return c->v[n - 1];
+        j = dir < 0 ? (k == 0 ? n - 1 : k - 1) : (k + 1 == n ? 0 : k + 1);
+        seg = qc_hypot(c->v[j].x - c->v[k].x, c->v[j].y - c->v[k].y);
+        if (seg >= len) {
+            double t = len / seg;
+            return QC__V2(c->v[k].x + t * (c->v[j].x - c->v[k].x),
+                          c->v[k].y + t * (c->v[j].y - c->v[k].y));
+        }
+        len -= seg;
+        k = j;
+    }
+    return c->v[i];
+}
+
+/* Whether vertex i turns tighter than ROUND_BELOW times the radius, as
+ * the tests measure a turn: the circle through it and the points the
+ * radius before and after it along c (for an arc, its own radius; at a
+ * corner the circle the spline could at best round it to). */
+static int turns_tight(const qc_points *c, int open, size_t i, double turn)
+{
+    if (open && (i == 0 || i + 1 == c->n))
+        return 0;
+    return circumradius(along(c, open, i, -1, turn), c->v[i], along(c, open, i, 1, turn)) <
+           ROUND_BELOW * turn;
+}
+
+/* c with the segments at a tight vertex split into pieces of at most
+ * ROUND_DENSE times the radius (the same polyline, with room to bend). */
+static int densify(qc_ctx *ctx, const qc_points *c, int open, double turn, qc_points *out)
+{
+    size_t n = c->n, i, k;
+    unsigned char prev_tight = 0, first_tight = (unsigned char)turns_tight(c, open, 0, turn);
+    int rc = QC_OK;
+
+    out->n = 0;
+    prev_tight = first_tight;
+    for (i = 0; i < n && rc == QC_OK; i++) {
+        size_t j = i + 1 == n ? 0 : i + 1;
+        qc_vec2 a = c->v[i], b = c->v[j];
+        unsigned char next_tight = j == 0 ? first_tight : (unsigned char)turns_tight(c, open, j, turn);
+        double len = qc_hypot(b.x - a.x, b.y - a.y);
+        size_t m = (size_t)ceil(len / (ROUND_DENSE * turn));
+
+        rc = qc_points_push(ctx, out, a);
+        if ((prev_tight || next_tight) && !(open && j == 0))
+            for (k = 1; k < m && rc == QC_OK; k++)
+                rc = qc_points_push(ctx, out, QC__V2(a.x + (double)k / (double)m * (b.x - a.x),
+                                                     a.y + (double)k / (double)m * (b.y - a.y)));
+        prev_tight = next_tight;
+    }
+    return rc;
+}
+
+/* Distance from q to segment ab. */
+static double seg_dist(qc_vec2 q, qc_vec2 a, qc_vec2 b)
+{
+    double ux = b.x - a.x, uy = b.y - a.y, l2 = ux * ux + uy * uy, t = 0.0;
+
+    if (l2 > 0.0)
+        t = fmax(0.0, fmin(1.0, ((q.x - a.x) * ux + (q.y - a.y) * uy) / l2));
+    return qc_hypot(a.x + t * ux - q.x, a.y + t * uy - q.y);
+}
+
+/* Whether moving vertex i of c to m leaves a piece of seam near it further
+ * than SEAM_MM from the curve that was within it: the seam is sampled
+ * along the tangent at the boundary point nearest the vertex, against the
+ * two moved segments and every other segment binned near. */
+static int bares_seam(const qc_points *c, int open, const vbins *b, const qc__sdf *s, size_t i,
+                      qc_vec2 m)
+{
+    size_t n = c->n, ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
+    qc_vec2 g, p = c->v[i], f;
+    double v = qc__sdf_exact(s, p, &g), step = SEAM_MM / SEAM_SAMPLES;
+    int k;
+
+    if (v > SEAM_MM)
+        return 0; /* it covers no seam */
+    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
+    for (k = -SEAM_SAMPLES; k <= SEAM_SAMPLES; k++) {
+        qc_vec2 q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
+        size_t cx, cy, x, y, e;
+        int covered;
+        if (qc_hypot(q.x - p.x, q.y - p.y) > SEAM_MM || qc__sdf_exact(s, q, NULL) < -SEAM_OFF)
+            continue; /* p did not cover it, or past a corner: no seam */
+        covered = seg_dist(q, m, c->v[ib]) <= SEAM_MM ||
+                  (!(open && i == 0) && seg_dist(q, c->v[ia], m) <= SEAM_MM);
+        vcell(b, q, &cx, &cy);
+        for (y = cy ? cy - 1 : 0; !covered && y <= cy + 1 && y < b->gy; y++)
+            for (x = cx ? cx - 1 : 0; !covered && x <= cx + 1 && x < b->gx; x++)
+                for (e = b->start[y * b->gx + x]; !covered && e < b->start[y * b->gx + x + 1]; e++) {
+                    size_t j = b->idx[e], j1 = j + 1 == n ? 0 : j + 1;
+                    if (j == i || j1 == i || (open && j1 == 0))
+                        continue;
+                    covered = seg_dist(q, c->v[j], c->v[j1]) <= SEAM_MM;
+                }
+        if (!covered)
+            return 1;
+    }
+    return 0;
+}
+
+/* Moves the run of tight vertices from vertex first, count of them, each
+ * part of the way to the middle of the points the radius before and after
+ * it (to[]): all of them, or none where one would come within EASE_CLEAR d
+ * of the boundary, bare a seam or cross the curve (a corner half rounded
+ * turns tighter than before). Returns 1 if moved. */
+static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, double inner,
+                     double tip, size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
+{
+    size_t n = c->n, k, i = first;
+
+    for (k = 0; k < count; k++, i = i + 1 == n ? 0 : i + 1) {
+        size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
+        qc_vec2 m = to[i];
+        was[k] = c->v[i];
+        if (qc__sdf_exact(s, was[k], NULL) < tip || !qc__meander_seg_inside(s, c->v[ia], m, inner) ||
+            !qc__meander_seg_inside(s, m, c->v[ib], inner) || bares_seam(c, open, b, s, i, m))
+            break;
+        c->v[i] = m;
+        if (seg_crosses(c, open, b, i, m, ia, i) || seg_crosses(c, open, b, i, m, i, ib)) {
+            c->v[i] = was[k];
+            break;
+        }
+    }
+    if (k == count)
+        return 1;
+    while (k-- > 0) { /* undone, last first */
+        i = i == 0 ? n - 1 : i - 1;
+        c->v[i] = was[k];
+    }
+    return 0;
+}
+
+int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
+                      double d)
+{
+    qc_points dense = {0};
+    unsigned char *tight = NULL, *near = NULL;
+    qc_vec2 *to = NULL, *was = NULL;
+    size_t pass, i, n;
+    double longest = 0.0;
+    int rc;
+
+    if (c->n < 4 || !(turn > 0.0))
+        return QC_OK;
+    rc = qc__meander_wave(ctx, c, open, d, s); /* first: a wave turns gently */
+    if (rc == QC_OK)
+        rc = densify(ctx, c, open, turn, &dense);
+    if (rc < 0) {
+        qc_points_free(ctx, &dense);
+        return rc;
+    }
+    qc_points_free(ctx, c);
+    *c = dense;
+    n = c->n;
+    tight = qc__alloc(ctx, n);
+    near = qc__alloc(ctx, n);
+    to = qc__alloc_array(ctx, n, sizeof *to);
+    was = qc__alloc_array(ctx, n, sizeof *was);
+    if (tight == NULL || near == NULL || to == NULL || was == NULL)
+        rc = QC_ENOMEM;
+    else
+        memset(near, 1, n);
+    for (i = 0; i + (open ? 1 : 0) < n; i++) {
+        qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
+        longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
+    }
+    for (pass = 0; pass < ROUND_PASSES && rc == QC_OK; pass++) {
+        vbins bins;
+        size_t moved = 0, start = 0, seen;
+
+        if (pass > 0) { /* only near what was tight: the rest has not moved */
+            memset(near, 0, n);
+            for (i = 0; i < n; i++)
+                if (tight[i]) {
+                    size_t k;
+                    for (k = 0; k <= 2 * ROUND_NEAR && k < n; k++)
+                        near[(i + n - ROUND_NEAR % n + k) % n] = 1;
+                }
+        }
+        for (i = 0; i < n; i++) {
+            tight[i] = (unsigned char)(near[i] && turns_tight(c, open, i, turn));
+            if (tight[i]) {
+                qc_vec2 a = along(c, open, i, -1, turn), b = along(c, open, i, 1, turn);
+                qc_vec2 p = c->v[i];
+                to[i] = QC__V2(p.x + ROUND_STEP * (0.5 * (a.x + b.x) - p.x),
+                               p.y + ROUND_STEP * (0.5 * (a.y + b.y) - p.y));
+            } else {
+                start = i + 1 == n ? 0 : i + 1; /* a run never wraps past here */
+            }
+        }
+        if (open)
+            start = 0;
+        memset(&bins, 0, sizeof bins);
+        rc = vbins_build(ctx, &bins, c, 2.5 * longest + 1e-9);
+        for (seen = 0, i = start; seen < n && rc == QC_OK;) {
+            size_t count = 0, j = i;
+            while (seen + count < n && tight[j]) {
+                count++;
+                j = j + 1 == n ? 0 : j + 1;
+            }
+            if (count > 0)
+                moved += (size_t)round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, i, count,
+                                            to, was);
+            else
+                j = j + 1 == n ? 0 : j + 1;
+            seen += count > 0 ? count : 1;
+            i = j;
+        }
+        vbins_free(ctx, &bins, n);
+        if (moved == 0)
+            break;
+    }
+    qc__free(ctx, tight, n);
+    qc__free(ctx, near, n);
+    qc__free(ctx, to, n * sizeof *to);
+    qc__free(ctx, was, n * sizeof *was);
+    if (rc == QC_OK) { /* the split points left in line: the corner as it was */
+        size_t k = 0;
+        for (i = 0; i < n; i++) {
+            qc_vec2 a = k > 0 ? c->v[k - 1] : c->v[n - 1], p = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
+            double cr = (p.x - a.x) * (b.y - p.y) - (p.y - a.y) * (b.x - p.x);
+            double dot = (p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y);
+            if (i > 0 && !(open && i + 1 == n) && fabs(cr) <= 1e-9 * dot && dot > 0.0)
+                continue;
+            c->v[k++] = p;
+        }
+        c->n = k;
+    }
+    return rc;
 }
 
 int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,

@@ -273,6 +273,20 @@ int qc__meander_smooth(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed, do
             else if (hit[i] && round + 1 == ROUNDS)
                 level[i] = LEVELS - 1;
     }
+    /* left: spans straight already that still stray (a chord over a cusp,
+     * as the polyline itself strays: qc_generate's keep-inside pass takes
+     * them), or crossings the last round's straightening has not been
+     * checked for: those alone are straightened, a few rounds over, before
+     * the whole polyline is drawn (its corners turn far tighter) */
+    for (round = 0; round < ROUNDS && found > 0 && rc == QC_OK; round++) {
+        memset(hit, 0, spans);
+        rc = draw(ctx, &spline, r.v, r.n, spans, level, &path);
+        if (rc == QC_OK)
+            rc = find_crossings(ctx, &w, &path, spans, NULL, 0.5 * d, hit, &found);
+        for (i = 0; i < spans && rc == QC_OK; i++)
+            if (hit[i])
+                level[i] = LEVELS - 1;
+    }
     if (rc == QC_OK && found > 0) { /* the polyline itself */
         memset(level, LEVELS - 1, spans);
         rc = draw(ctx, &spline, r.v, r.n, spans, level, &path);
