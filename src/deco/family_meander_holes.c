@@ -94,7 +94,9 @@ static size_t climb(const holes *h, qc_vec2 *q, double step, double *R)
             size_t j;
             if (qc__sdf_at(h->s, p) < 0.0)
                 continue;
-            j = nearest(h, p, 2.0 * h->d, &r);
+            /* p is within step of q, so its nearest lies within *R + step
+             * (a margin for rounding): a smaller search, the same answer */
+            j = nearest(h, p, fmin(2.0 * h->d, *R + step + 0.01 * h->d), &r);
             if (r > *R && r < HUGE_VAL) {
                 *q = p;
                 *R = r;
@@ -270,6 +272,8 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
         double R;
 
+        if (sqrt((double)pk[k].f) * g.h < goal - 2.0 * g.h)
+            break; /* (sorted) no climb from here reaches the goal */
         if (mask[pk[k].at] & 2)
             continue;
         (void)climb(h, &q, g.h, &R);
