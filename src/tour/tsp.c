@@ -120,7 +120,11 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     memset(s->inq, 0, m);
     qc__tsp_queue_all(s);
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_2OPT, &delta));
-    if (method != QC_TSP_METHOD_OR3OPT) /* the default uncrosses at its end only */
+    /* Below the reversal limit the default's searches reach any crossing
+     * and it uncrosses at its end only (TSPLIB: 4% of its time); above,
+     * crossings needing long reversals are left to the uncrossing, and the
+     * kicks should start without them (624,100 points: 0.4% shorter). */
+    if (method != QC_TSP_METHOD_OR3OPT || m > s->max_reversal)
         QC__TRY(qc__tsp_uncross(s));
     if (method == QC_TSP_METHOD_2OPT)
         return QC_OK;
