@@ -51,8 +51,10 @@ typedef enum qc_tsp_method {
 /* The kicks Or-3opt always spends on n points, before perturb_iterations:
  * each a segment-local double bridge re-optimised around its ends by
  * 2-opt and Or-opt, the walk going on from tours up to half an average
- * edge longer than the best and ending at the best. */
-#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 11 / 20)
+ * edge longer than the best and ending at the best. From 50,000 points
+ * fewer (0.3n: at 624,100 points 11% less time for 0.09% of length). */
+#define QC_TSP_OR3OPT_KICKS(n) \
+    ((uint64_t)(n) >= 50000 ? (uint64_t)(n) * 3 / 10 : (uint64_t)(n) * 11 / 20)
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
