@@ -58,7 +58,8 @@ typedef enum qc_tsp_method {
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
-    int neighbours;      /* candidate list size; 0 = 10 (Or-3opt: 9) */
+    int neighbours;      /* candidate list size; 0 = 10 (9 for Or-3opt
+                            without perturb_iterations) */
     uint64_t seed;       /* for the perturbation phase */
     uint64_t perturb_iterations; /* extra perturbation rounds (kicks) after
                                     local search; the core has no clock, so

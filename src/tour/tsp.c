@@ -151,8 +151,9 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
      * Alone, the default's kicks are lighter: Or-opt moves only segments
      * of 1-2 points starting at the popped point (each end of a kick is
      * queued anyway) and each kick goes to the longer of two random edges;
-     * with the lists of 9 and one uncrossing, TSPLIB (seeds 1-3) 1.75% ->
-     * 1.78% above the optima for 2.9x -> 2.5x Or-opt's time. */
+     * with the lists of 9 and one uncrossing, TSPLIB 1.75% -> 1.78% above
+     * the optima (seeds 1-3) for 2.9x -> 2.4x Or-opt's time (bench, seed
+     * 1: 1.85% -> 1.86%, 3.02x -> 2.40x). */
     s->light_kicks = quick;
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, QC_TSP_OR3OPT_KICKS(m), seed,
                             DEFAULT_KICK_SLACK, 1));
