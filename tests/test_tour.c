@@ -442,6 +442,17 @@ void tsp_should_sweep_the_kicks_of_large_inputs(void)
     free(p);
 }
 
+/* The default's own kicks: 0.55n, and from 50,000 points 0.3n (there a
+ * kick gains less length per ms than the time costs). */
+void or3opt_kicks_should_thin_out_for_large_inputs(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(0, QC_TSP_OR3OPT_KICKS(0));
+    TEST_ASSERT_EQUAL_UINT64(550, QC_TSP_OR3OPT_KICKS(1000));
+    TEST_ASSERT_EQUAL_UINT64(27499, QC_TSP_OR3OPT_KICKS(49999));
+    TEST_ASSERT_EQUAL_UINT64(15000, QC_TSP_OR3OPT_KICKS(50000));
+    TEST_ASSERT_EQUAL_UINT64(300000, QC_TSP_OR3OPT_KICKS(1000000));
+}
+
 static void fail_cleanly_out_of_memory(int method)
 {
     qc_vec2 *p = random_points(300, 41, 20.0);
@@ -719,6 +730,7 @@ int main(void)
     RUN_TEST(tsp_method_zero_should_be_or3opt);
     RUN_TEST(tsp_should_repeat_for_a_seed);
     RUN_TEST(tsp_should_sweep_the_kicks_of_large_inputs);
+    RUN_TEST(or3opt_kicks_should_thin_out_for_large_inputs);
     RUN_TEST(tsp_should_fail_cleanly_out_of_memory);
     RUN_TEST(tour_length_should_sum_the_edges);
     RUN_TEST(tsp_should_come_near_the_tsplib_optima);

@@ -51,12 +51,15 @@ typedef enum qc_tsp_method {
 /* The kicks Or-3opt always spends on n points, before perturb_iterations:
  * each a segment-local double bridge re-optimised around its ends by
  * 2-opt and Or-opt, the walk going on from tours up to half an average
- * edge longer than the best and ending at the best. */
-#define QC_TSP_OR3OPT_KICKS(n) ((uint64_t)(n) * 11 / 20)
+ * edge longer than the best and ending at the best. From 50,000 points
+ * fewer (0.3n: at 624,100 points 11% less time for 0.09% of length). */
+#define QC_TSP_OR3OPT_KICKS(n) \
+    ((uint64_t)(n) >= 50000 ? (uint64_t)(n) * 3 / 10 : (uint64_t)(n) * 11 / 20)
 
 typedef struct qc_tsp_params {
     int method;          /* qc_tsp_method */
-    int neighbours;      /* candidate list size; 0 = 10 */
+    int neighbours;      /* candidate list size; 0 = 10 (9 for Or-3opt
+                            without perturb_iterations) */
     uint64_t seed;       /* for the perturbation phase */
     uint64_t perturb_iterations; /* extra perturbation rounds (kicks) after
                                     local search; the core has no clock, so

@@ -70,6 +70,9 @@ typedef struct qc__tsp {
     double *nbd;        /* their distances (Or-3opt only), or NULL */
     double eps;         /* gains below this are rounding noise */
     uint32_t max_reversal; /* the searches skip moves reversing more */
+    int light_kicks;    /* the default's own kicks (tsp_opt.c): Or-opt moves
+                           only segments of 1-2 points starting at the point
+                           popped; kicks go to the longer of two edges */
 
     /* the tour over 0..m-1 as an array with positions */
     uint32_t *t, *pos;

@@ -15,6 +15,9 @@
 #define TSP_MAX_POINTS (1u << 28) /* slots of the greedy sort keys fit 32 bits */
 #define TSP_MAX_COORD 1e150       /* squared distances stay finite */
 #define DEFAULT_K 10
+/* The lists of the default alone: 6 nearest and 3 Delaunay neighbours
+ * (tsp_cand.c), a few % less time for the same length. */
+#define DEFAULT_K_QUICK 9
 #define DEFAULT_KICK_SLACK 0.5 /* average edges (qc__tsp_perturb) */
 #define BUDGET_SLACK 1.0
 
@@ -79,6 +82,7 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     uint32_t m, i;
     double delta = 0.0;
     uint64_t extra, seed;
+    int quick;
 
     QC__TRY(qc__tsp_prepare(s));
     m = s->m;
@@ -92,7 +96,11 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
             s->t[i] = s->pos[i] = i;
         return QC_OK;
     }
-    s->k = (unsigned)(neighbours == 0 ? DEFAULT_K
+    extra = params ? params->perturb_iterations : 0;
+    /* The default alone runs lighter (below); before a budget, whose time
+     * dwarfs it, it runs in full: the budget's figures stay. */
+    quick = method == QC_TSP_METHOD_OR3OPT && extra == 0;
+    s->k = (unsigned)(neighbours == 0 ? (quick ? DEFAULT_K_QUICK : DEFAULT_K)
                       : neighbours > QC__TSP_MAX_K ? QC__TSP_MAX_K : neighbours);
     if (s->k > m - 1)
         s->k = m - 1;
@@ -116,10 +124,14 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     memset(s->inq, 0, m);
     qc__tsp_queue_all(s);
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_2OPT, &delta));
-    QC__TRY(qc__tsp_uncross(s));
+    /* Below the reversal limit the default alone reaches any crossing by
+     * its searches and uncrosses at its end only (TSPLIB: 4% of its time);
+     * above, crossings needing long reversals are left to the uncrossing,
+     * and the kicks should start without them (624,100 points: 0.4%). */
+    if (!quick || m > s->max_reversal)
+        QC__TRY(qc__tsp_uncross(s));
     if (method == QC_TSP_METHOD_2OPT)
         return QC_OK;
-    extra = params ? params->perturb_iterations : 0;
     seed = params ? params->seed : 0;
     qc__tsp_queue_all(s);
     if (method == QC_TSP_METHOD_OROPT) {
@@ -135,9 +147,17 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
      * give 1.75% (seeds 1-3) at 2.9x Or-opt's time (0.6n keeping only
      * shorter tours: 1.82% at 3.3x). A budget's rounds search deeper (LK
      * chains, tsp_or3opt.c) and walk on within one edge: up to 2000 points,
-     * 1000 ms, 0.13% above the optima (within 0.2 edge, Or-3opt: 0.31%). */
+     * 1000 ms, 0.13% above the optima (within 0.2 edge, Or-3opt: 0.31%).
+     * Alone, the default's kicks are lighter: Or-opt moves only segments
+     * of 1-2 points starting at the popped point (each end of a kick is
+     * queued anyway) and each kick goes to the longer of two random edges;
+     * with the lists of 9 and one uncrossing, TSPLIB 1.75% -> 1.78% above
+     * the optima (seeds 1-3) for 2.9x -> 2.4x Or-opt's time (bench, seed
+     * 1: 1.85% -> 1.86%, 3.02x -> 2.40x). */
+    s->light_kicks = quick;
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_OROPT, QC_TSP_OR3OPT_KICKS(m), seed,
                             DEFAULT_KICK_SLACK, 1));
+    s->light_kicks = 0;
     qc__tsp_queue_all(s);
     QC__TRY(qc__tsp_local_search(s, QC__TSP_LEVEL_OR3OPT, &delta));
     QC__TRY(qc__tsp_perturb(s, QC__TSP_LEVEL_LK, extra, seed ^ UINT64_C(0x9e3779b97f4a7c15),

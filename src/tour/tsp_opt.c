@@ -257,9 +257,11 @@ static int try_oropt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 
     bm.gain = -s->eps;
     bm.len = 0;
+    if (s->light_kicks && maxlen > 2)
+        maxlen = 2;
     for (len = 1; len <= maxlen; len++) {
-        or_segment(s, pa, len, &bm); /* a first */
-        if (len > 1)                 /* a last */
+        or_segment(s, pa, len, &bm);    /* a first */
+        if (len > 1 && !s->light_kicks) /* a last */
             or_segment(s, pa >= len - 1 ? pa - (len - 1) : pa + m - (len - 1), len, &bm);
     }
     if (bm.len == 0)
@@ -376,6 +378,12 @@ int qc__tsp_perturb(qc__tsp *s, int level, uint64_t rounds, uint64_t seed, doubl
             at = s->pos[u % s->m];
         } else {
             at = (uint32_t)qc_rng_below(&rng, s->m);
+            if (s->light_kicks) { /* the longer edge of two is likelier wrong */
+                uint32_t b = (uint32_t)qc_rng_below(&rng, s->m);
+                if (qc__tsp_dist(s, s->t[b], qc__tsp_next(s, s->t[b])) >
+                    qc__tsp_dist(s, s->t[at], qc__tsp_next(s, s->t[at])))
+                    at = b;
+            }
         }
         rc = kick(s, &rng, at, level == QC__TSP_LEVEL_LK ? KICK_MAX_LK : KICK_MAX, &delta);
         if (rc == QC_OK)
