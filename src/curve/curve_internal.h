@@ -15,4 +15,24 @@ typedef int (*qc__curve_point_fn)(void *ud, qc_vec2 p, int start);
 QC__HIDDEN int qc__curve_walk(const qc_path *path, double tol,
                               qc__curve_point_fn fn, void *ud);
 
+/* Widens box to hold p; the first point (*any == 0) sets it. Comparisons,
+ * not fmin/fmax (a call per point): a NaN coordinate gives way as in fmin. */
+static inline void qc__box_take(qc_bbox *box, int *any, qc_vec2 p)
+{
+    if (!*any) {
+        box->min = p;
+        box->max = p;
+        *any = 1;
+        return;
+    }
+    if (p.x < box->min.x || box->min.x != box->min.x)
+        box->min.x = p.x;
+    if (p.y < box->min.y || box->min.y != box->min.y)
+        box->min.y = p.y;
+    if (-p.x < -box->max.x || box->max.x != box->max.x)
+        box->max.x = p.x;
+    if (-p.y < -box->max.y || box->max.y != box->max.y)
+        box->max.y = p.y;
+}
+
 #endif

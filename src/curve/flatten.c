@@ -141,30 +141,14 @@ typedef struct measure {
     int any;
 } measure;
 
-/* fmin(a, b) by comparisons (fmin is a call, per flattened point): b
- * when it is smaller or a is NaN, as fmin does; signed zeros aside. */
-static double lesser(double a, double b)
-{
-    return b < a || a != a ? b : a;
-}
-
 static int measure_point(void *ud, qc_vec2 p, int start)
 {
     measure *m = (measure *)ud;
 
     if (!start && m->any)
         m->len += qc_hypot(p.x - m->last.x, p.y - m->last.y);
-    if (!m->any) {
-        m->box.min = p;
-        m->box.max = p;
-    } else {
-        m->box.min.x = lesser(m->box.min.x, p.x);
-        m->box.min.y = lesser(m->box.min.y, p.y);
-        m->box.max.x = -lesser(-m->box.max.x, -p.x);
-        m->box.max.y = -lesser(-m->box.max.y, -p.y);
-    }
+    qc__box_take(&m->box, &m->any, p);
     m->last = p;
-    m->any = 1;
     return QC_OK;
 }
 

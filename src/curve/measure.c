@@ -155,27 +155,6 @@ typedef struct measure {
     int any;
 } measure;
 
-/* fmin(a, b) by comparisons (fmin is a call, per point): b when it is
- * smaller or a is NaN, as fmin does; signed zeros aside. */
-static double lesser(double a, double b)
-{
-    return b < a || a != a ? b : a;
-}
-
-static void take_point(measure *m, qc_vec2 p)
-{
-    if (!m->any) {
-        m->box.min = p;
-        m->box.max = p;
-        m->any = 1;
-        return;
-    }
-    m->box.min.x = lesser(m->box.min.x, p.x);
-    m->box.min.y = lesser(m->box.min.y, p.y);
-    m->box.max.x = -lesser(-m->box.max.x, -p.x);
-    m->box.max.y = -lesser(-m->box.max.y, -p.y);
-}
-
 void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *box)
 {
     measure m;
@@ -192,7 +171,7 @@ void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *
         unsigned char cmd = path->cmd[c];
 
         if (c == 0 && cmd != QC_PATH_MOVE)
-            take_point(&m, cur);
+            qc__box_take(&m.box, &m.any, cur);
         if (cmd == QC_PATH_CUBIC) {
             qc_vec2 q[4];
 
@@ -200,7 +179,7 @@ void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *
             q[1] = path->pt[k];
             q[2] = path->pt[k + 1];
             q[3] = path->pt[k + 2];
-            take_point(&m, q[3]);
+            qc__box_take(&m.box, &m.any, q[3]);
             if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3])) {
                 m.len += cubic_length(q, 1e-3 * tol);
                 widen(q[0].x, q[1].x, q[2].x, q[3].x, &m.box.min.x, &m.box.max.x);
@@ -215,7 +194,7 @@ void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *
 
             if (cmd != QC_PATH_MOVE)
                 m.len += qc_hypot(p.x - cur.x, p.y - cur.y);
-            take_point(&m, p);
+            qc__box_take(&m.box, &m.any, p);
             cur = p;
         }
     }
