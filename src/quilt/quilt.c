@@ -310,11 +310,11 @@ static int sew_patch(quilter *q, size_t i, qc_vec2 entry)
                         pa->id != NULL && pa->id[0] ? "\")" : "", msg);
     }
     mark_sewn(q, i, res.params.family);
-    pr->length_mm = qc_curve_length(&res.path, 0.05);
+    pr->length_mm = res.stats.length_mm; /* qc_generate measured it */
     pr->largest_gap_mm = res.stats.largest_gap_mm;
     pr->farthest_fabric_mm = res.stats.farthest_fabric_mm;
     pr->seam_bare = res.stats.seam_bare;
-    pr->pieces = qc_path_pieces(&res.path);
+    pr->pieces = res.stats.pieces;
     rc = q->join == QC_JOIN_JUMP ? QC_OK : qc__links_init(q->ctx, &res.path, &lk);
     for (c = 0; c <= res.path.ncmd && rc >= 0; c++) {
         if (c == res.path.ncmd || (res.path.cmd[c] == QC_PATH_MOVE && c > c0)) {
