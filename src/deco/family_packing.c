@@ -405,14 +405,7 @@ static int attachments(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *s
     if (atts == NULL || first == NULL)
         return QC_ENOMEM;
     QC__TRY(samples_init(ctx, set, &sm));
-    /* grouped by parent as they are made (a counting sort: no qsort of 10^6
-     * entries, nor its hidden buffer); first[p] runs to the group's end */
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < n; i++)
-        if (pb->parent[i] != QC__PEB_NONE)
-            first[pb->parent[i] + 1]++;
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
+    qc__pebbles_group_starts(pb, first); /* first[p] runs to the group's end */
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         qc_vec2 e;

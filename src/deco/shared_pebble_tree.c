@@ -26,6 +26,18 @@ static int cmp_kid(const void *pa, const void *pb)
     return a->kid < b->kid ? -1 : a->kid > b->kid;
 }
 
+void qc__pebbles_group_starts(const qc__pebbles *pb, uint32_t *first)
+{
+    size_t n = pb->n, i;
+
+    memset(first, 0, (n + 1) * sizeof *first);
+    for (i = 0; i < n; i++)
+        if (pb->parent[i] != QC__PEB_NONE)
+            first[pb->parent[i] + 1]++;
+    for (i = 0; i < n; i++)
+        first[i + 1] += first[i];
+}
+
 static double angle_of(qc_vec2 from, qc_vec2 to)
 {
     return qc_atan2(to.y - from.y, to.x - from.x);
@@ -48,14 +60,7 @@ int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_ou
         qc__free(ctx, keys, n * sizeof *keys);
         return QC_ENOMEM;
     }
-    /* grouped by parent as they are made (a counting sort: no qsort of 10^6
-     * entries, nor its hidden buffer); first[p] runs to the group's end */
-    memset(first, 0, (n + 1) * sizeof *first);
-    for (i = 0; i < n; i++)
-        if (pb->parent[i] != QC__PEB_NONE)
-            first[pb->parent[i] + 1]++;
-    for (i = 0; i < n; i++)
-        first[i + 1] += first[i];
+    qc__pebbles_group_starts(pb, first); /* first[p] runs to the group's end */
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
         double entry, k;
