@@ -151,6 +151,20 @@ static inline int qc__is_space(char c)
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
 }
 
+/* Whether segments ab and cd cross properly: each one's ends strictly on
+ * either side of the other (exact orientation: touching is not crossing). */
+static inline int qc__segs_cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
+{
+    double o1 = qc_orient2d(a, b, c), o2 = qc_orient2d(a, b, d);
+    double o3, o4;
+
+    if (!((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)))
+        return 0;
+    o3 = qc_orient2d(c, d, a);
+    o4 = qc_orient2d(c, d, b);
+    return (o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0);
+}
+
 /* A point from its coordinates (a C99 compound literal). */
 #define QC__V2(x, y) ((qc_vec2){(x), (y)})
 

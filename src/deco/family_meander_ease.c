@@ -44,14 +44,6 @@ static double circumradius(qc_vec2 a, qc_vec2 p, qc_vec2 b)
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
 
-static int crosses(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
-{
-    double d1 = qc_orient2d(a, b, c), d2 = qc_orient2d(a, b, d);
-    double d3 = qc_orient2d(c, d, a), d4 = qc_orient2d(c, d, b);
-
-    return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 /* The curve's vertices binned in square cells (positions as binned). */
 typedef struct vbins {
     double x0, y0, h;
@@ -125,14 +117,14 @@ static int seg_crosses(const qc_points *c, int open, const vbins *b, size_t k, q
                     continue;
                 if (s == i || s == j || t == i || t == j || s == k || t == k)
                     continue; /* next to it, or the moved vertex's own */
-                if (crosses(c->v[i], c->v[j], c->v[s], c->v[t]))
+                if (qc__segs_cross_proper(c->v[i], c->v[j], c->v[s], c->v[t]))
                     return 1;
                 /* the segment ending at s too (s's bin stands for both) */
                 t = s;
                 s = s == 0 ? (open ? SIZE_MAX : n - 1) : s - 1;
                 if (s == SIZE_MAX || s == i || s == j || t == i || t == j || s == k || t == k)
                     continue;
-                if (crosses(c->v[i], c->v[j], c->v[s], c->v[t]))
+                if (qc__segs_cross_proper(c->v[i], c->v[j], c->v[s], c->v[t]))
                     return 1;
             }
     return 0;

@@ -32,14 +32,6 @@ static uint32_t next_point(const void *ud, uint32_t k)
     return k + 1;
 }
 
-static int crosses(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
-{
-    double d1 = qc_orient2d(a, b, c), d2 = qc_orient2d(a, b, d);
-    double d3 = qc_orient2d(c, d, a), d4 = qc_orient2d(c, d, b);
-
-    return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 /* Scratch of the smoothing rounds. */
 typedef struct smooth {
     qc_path span;      /* one span on its own, to flatten */
@@ -143,7 +135,7 @@ static int find_crossings(qc_ctx *ctx, smooth *w, const qc_path *path, size_t sp
                 size_t s = grid.seg[i], t = grid.seg[j], gap = s > t ? s - t : t - s;
                 if (gap < 2 || gap + 2 == nf) /* neighbours (a closed path's ends meet) */
                     continue;
-                if (!crosses(w->flat.v[s], w->flat.v[s + 1], w->flat.v[t], w->flat.v[t + 1]))
+                if (!qc__segs_cross_proper(w->flat.v[s], w->flat.v[s + 1], w->flat.v[t], w->flat.v[t + 1]))
                     continue;
                 (*found)++;
                 hit[w->owner[s]] = hit[w->owner[t]] = 1;

@@ -24,14 +24,6 @@
 #define WAVE_STEP 0.15    /* the wave's vertex spacing, times d */
 #define WAVE_INNER 0.06   /* a waved vertex stays this far inside, times d */
 
-static int crosses(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
-{
-    double d1 = qc_orient2d(a, b, c), d2 = qc_orient2d(a, b, d);
-    double d3 = qc_orient2d(c, d, a), d4 = qc_orient2d(c, d, b);
-
-    return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 /* The last vertex j > i such that c[i..j] all lie within tol of chord i j. */
 static size_t run_end(const qc_points *c, size_t i, double tol)
 {
@@ -66,7 +58,7 @@ static int crosses_curve(const qc_points *c, int open, const qc__seg_grid *g, si
                     continue;
                 if (!open && lo == 0 && s + 1 == n)
                     continue;
-                if (crosses(a, b, c->v[s], c->v[t]))
+                if (qc__segs_cross_proper(a, b, c->v[s], c->v[t]))
                     return 1;
             }
     return 0;

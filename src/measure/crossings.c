@@ -54,18 +54,6 @@ static int apart(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
     return abx1 < cdx0 || cdx1 < abx0 || aby1 < cdy0 || cdy1 < aby0;
 }
 
-static int cross_proper(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
-{
-    double o1 = qc_orient2d(a, b, c), o2 = qc_orient2d(a, b, d);
-    double o3, o4;
-
-    if (!((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)))
-        return 0;
-    o3 = qc_orient2d(c, d, a);
-    o4 = qc_orient2d(c, d, b);
-    return (o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0);
-}
-
 /* A zero-length segment crosses nothing properly: not binned, so stitches
  * repeated on one spot cost nothing. */
 static int zero_length(const qc_vec2 *pts, size_t n, size_t s)
@@ -168,7 +156,7 @@ int qc_path_self_crossings(qc_ctx *ctx, const qc_vec2 *pts, size_t n, int closed
                 cell_range(&g, b0, b1, rb);
                 if ((ra[0] > rb[0] ? ra[0] : rb[0]) != cx || (ra[1] > rb[1] ? ra[1] : rb[1]) != cy)
                     continue; /* counted in the first common cell */
-                if (cross_proper(a0, a1, b0, b1))
+                if (qc__segs_cross_proper(a0, a1, b0, b1))
                     found++;
             }
         }
