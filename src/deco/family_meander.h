@@ -85,13 +85,17 @@ QC__HIDDEN int qc__meander_reach(qc_ctx *ctx, const qc_region *region, const qc_
                                  double d, int open, qc_points *c);
 
 /*
- * Draws the curve c (open: its ends stay) in round the widest empty discs
- * it leaves in region (wider than 0.57 d): every vertex within 0.7 d
- * beyond such a disc moves radially towards its centre, by up to 0.15 d,
- * lines near the seams (s) only towards them; no vertex is added. A few
- * passes, while the widest disc narrows; one that does not, or that makes
- * the curve cross itself, is undone. Curves beyond 8000 vertices are left
- * alone (a work budget). Deterministic. Errors: QC_ENOMEM.
+ * Closes the widest empty discs the curve c (open: its ends stay) leaves
+ * in region (wider than 0.57 d): a bump of one line into each (0.6 d
+ * either side along the curve, up to 0.25 d high), from whichever side
+ * narrows the widest gap round it most; where none does, every vertex
+ * within 0.7 d beyond the disc moves radially towards its centre, by up
+ * to 0.15 d. Kept only where it narrows that gap, crosses nothing, turns
+ * no tighter than d/4 where the curve did not, and moves no line near the
+ * seams (s) away from them; no vertex is added. A few passes; one that
+ * widens the widest disc, or makes the curve cross itself, is undone.
+ * Curves beyond 8000 vertices are left alone (a work budget).
+ * Deterministic. Errors: QC_ENOMEM.
  */
 QC__HIDDEN int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s,
                                  double d, int open, qc_points *c);

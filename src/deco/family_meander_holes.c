@@ -4,17 +4,21 @@
  * where channels meet or bend (a T or an L of lines d apart) the fabric
  * lies 0.65-0.7 d from any stitch, not the d/2 of evenly spaced lines. So,
  * a few passes: a distance raster of the curve finds the widest empty
- * discs (its local maxima, climbed to the exact distance), and round each
- * disc within a little of the widest the curve is drawn in towards its
- * centre: every vertex in a band beyond the disc moves radially inward,
- * by up to the excess, the share falling smoothly to nothing across the
- * band, and less where the channel behind it would grow too wide. Lines
- * near the seams move only towards them (they cover the seams). Radial
- * moves of at most 0.15 d, ordered along each ray, fold nothing; no vertex
- * is added (the thread comes from the narrower channels round a hole).
- * A pass is judged by the next one's measure: one after which the widest
- * disc is no narrower is undone and the phase ends, as it is should the
- * curve cross itself (the hard invariant, checked on the whole curve).
+ * discs (its local maxima, climbed to the exact distance), and into each
+ * disc within a little of the widest the curve is bulged: from each side
+ * the disc touches in turn, a bump of the line there (its vertices within
+ * 0.6 d along the curve moved towards the centre by up to 0.25 d, less
+ * further along), the line behind left where it is, so the curve grows
+ * into the hole instead of opening the channel behind. Each bump is
+ * judged on the spot: the widest gap on a lattice round the disc (seams
+ * included) must narrow, the curve must not cross itself there nor turn
+ * tighter than d/4 where it did not, and lines near the seams move only
+ * towards them (they cover the seams). The best bump is kept; where none
+ * helps, the lines all round are drawn in radially instead (by up to
+ * 0.15 d, less where the channel behind would grow too wide), judged the
+ * same way. A pass that leaves the widest disc wider is undone and the
+ * phase ends, as it is should the curve cross itself (the hard
+ * invariant, checked on the whole curve).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -32,12 +36,23 @@
                          * within this (the ridge's distance, times d) */
 #define RIM 0.8         /* vertices this near the seams move only towards them ... */
 #define SEAM 0.12       /* ... and no nearer than this, times d */
-#define PASSES 6
+#define PASSES 3
 #define MAX_VERTICES 8000 /* a work budget: larger curves (a 15 x 15 in block at
                            * 0.4 in, whose middle settles during the growth) are
                            * left as grown, each pass being global */
+#define BUMP_W 0.6   /* a bump spans this arc either side of its contact, times d */
+#define BUMP_MAX 0.25 /* and rises by at most this, times d */
+#define CONTACT 0.1  /* vertices this near the disc's rim touch it, times d */
+#define LOCAL_RES 0.125 /* the lattice judging a bump, times d ... */
+#define LOCAL_PAD 0.65  /* ... out to this beyond the disc, times d */
+#define LOCAL_NEAR 0.15 /* the near search's reach beyond the widest so far, times d */
+#define TURN_MIN 0.2 /* a bump makes no vertex turn tighter than this, times d */
+#define TURN_ARC 0.25 /* ... measured through the points this far along, times d, */
+#define STRAIGHT 2.0  /* ... nor run straight for longer than this, times d ... */
+#define STRAIGHT_SPAN 8 /* ... judged this many vertices either side */
 #define TIER 0.04       /* a pass closes the discs within this of the widest, times d */
-#define GAIN 0.003      /* a pass is kept if the widest disc shrank by this, times d */
+#define GAIN 0.003      /* a move is kept if the widest gap round it shrank by this,
+                         * a pass unless the widest disc grew by this, times d */
 
 typedef struct holes {
     const qc_points *c;
@@ -46,6 +61,9 @@ typedef struct holes {
     const qc__sdf *s;
     qc__seg_grid sg;
     uint32_t *stamp; /* per vertex: the last disc that moved it, + 1 */
+    uint32_t *undo;  /* the vertices one bump moved ... */
+    qc_vec2 *was;    /* ... and where they were */
+    size_t nundo;
 } holes;
 
 static uint32_t next_seg(const void *ud, uint32_t k)
@@ -80,19 +98,43 @@ static size_t nearest(const holes *h, qc_vec2 q, double reach, double *dist)
     return best;
 }
 
+/* Whether a segment of c lies within r of q (the first found will do). */
+static int near_any(const holes *h, qc_vec2 q, double r)
+{
+    size_t cells[4], x, y, k, ns = h->open ? h->c->n - 1 : h->c->n;
+    double r2 = r * r;
+
+    qc__seg_grid_cells(&h->sg, QC__V2(q.x - r, q.y - r), QC__V2(q.x + r, q.y + r), cells);
+    for (y = cells[1]; y <= cells[3]; y++)
+        for (x = cells[0]; x <= cells[2]; x++)
+            for (k = h->sg.start[y * h->sg.gx + x]; k < h->sg.start[y * h->sg.gx + x + 1]; k++) {
+                size_t i = h->sg.seg[k];
+                if (i < ns &&
+                    qc__seg_dist2(q, h->c->v[i], h->c->v[next_seg(h->c, (uint32_t)i)]) <= r2)
+                    return 1;
+            }
+    return 0;
+}
+
 /* The disc at *q grown: *q moved (8 directions, steps from h down to
  * h/4) while its exact distance to the curve grows; returns the nearest
  * segment, *R the distance (the raster's peak is a cell off). */
-static size_t climb(const holes *h, qc_vec2 *q, double step, double *R)
+static size_t climb(const holes *h, qc_vec2 *q, double step, double guess, double *R)
 {
-    size_t s = nearest(h, *q, 2.0 * h->d, R), k, t;
+    /* the raster's guess is a cell or so off: a search a little beyond
+     * it, exact if it finds a segment within its reach */
+    size_t s = nearest(h, *q, fmin(2.0 * h->d, guess + 2.0 * step), R), k, t;
+
+    if (!(*R <= guess + 2.0 * step))
+        s = nearest(h, *q, 2.0 * h->d, R);
 
     for (t = 0; t < 3; t++, step *= 0.5)
         for (k = 0; k < 8; k++) {
             double ang = QC_PI * (double)k / 4.0, r;
             qc_vec2 p = QC__V2(q->x + step * qc_cos(ang), q->y + step * qc_sin(ang));
             size_t j;
-            if (qc__sdf_at(h->s, p) < 0.0)
+            /* a segment within *R of p: it is no higher (the quick test) */
+            if (qc__sdf_at(h->s, p) < 0.0 || (*R < h->d && near_any(h, p, *R)))
                 continue;
             /* p is within step of q, so its nearest lies within *R + step
              * (a margin for rounding): a smaller search, the same answer */
@@ -165,6 +207,309 @@ static double behind(const qc__gap_grid *g, const unsigned char *mask, qc_vec2 p
     return best;
 }
 
+/* The widest gap round q: the greatest distance from the curve of the
+ * region's points (seams included) on a lattice within half of q, capped
+ * at d; or, once it reaches stop, stop (the move judged is no better).
+ * Rings of the lattice from q outwards (the widest gap lies near q). A
+ * point whose nearest segment in a small search is no further than the
+ * widest so far cannot raise it; the others are searched in full, far
+ * enough for the segments moves have carried out of their cells. */
+static double local_far(const holes *h, qc_vec2 q, double half, double stop)
+{
+    double step = LOCAL_RES * h->d, cap = h->d, best = 0.0;
+    long i, j, ring, m = (long)(half / step);
+
+    for (ring = 0; ring <= m; ring++)
+        for (j = -ring; j <= ring; j++)
+            for (i = -ring; i <= ring; i += (j == -ring || j == ring) ? 1 : 2 * ring) {
+                qc_vec2 p = QC__V2(q.x + (double)i * step, q.y + (double)j * step);
+                double r;
+                if (qc__sdf_at(h->s, p) < 0.0)
+                    continue;
+                if (near_any(h, p, best))
+                    continue;
+                /* most lie just beyond best: a near search first, exact
+                 * when it finds a segment that a move cannot have carried
+                 * out of the cells searched */
+                (void)nearest(h, p, best + (LOCAL_NEAR + BUMP_MAX) * h->d, &r);
+                if (!(r <= best + LOCAL_NEAR * h->d))
+                    (void)nearest(h, p, cap + BUMP_MAX * h->d, &r);
+                best = fmax(best, fmin(r, cap));
+                if (best >= stop)
+                    return stop;
+            }
+    return best;
+}
+
+/* Whether the segment from vertex i crosses another segment of c. */
+static int seg_crosses(const holes *h, const qc_points *c, size_t i)
+{
+    size_t ns = h->open ? c->n - 1 : c->n, cells[4], x, y, k, i1 = next_seg(c, (uint32_t)i);
+    qc_vec2 a = c->v[i], b = c->v[i1];
+    double pad = BUMP_MAX * h->d;
+
+    if (i >= ns)
+        return 0;
+    qc__seg_grid_cells(&h->sg, QC__V2(fmin(a.x, b.x) - pad, fmin(a.y, b.y) - pad),
+                       QC__V2(fmax(a.x, b.x) + pad, fmax(a.y, b.y) + pad), cells);
+    for (y = cells[1]; y <= cells[3]; y++)
+        for (x = cells[0]; x <= cells[2]; x++)
+            for (k = h->sg.start[y * h->sg.gx + x]; k < h->sg.start[y * h->sg.gx + x + 1]; k++) {
+                size_t j = h->sg.seg[k], j1;
+                if (j >= ns || j == i)
+                    continue;
+                j1 = next_seg(c, (uint32_t)j);
+                if (j1 == i || i1 == j)
+                    continue;
+                if (qc__segs_cross_proper(a, b, c->v[j], c->v[j1]))
+                    return 1;
+            }
+    return 0;
+}
+
+/* The point dist (mm) along c from vertex i, forwards (dir 1) or back;
+ * an open curve's end if it comes first. */
+static qc_vec2 along(const holes *h, const qc_points *c, size_t i, double dist, int dir)
+{
+    size_t n = c->n, k;
+
+    for (k = 0; k < n; k++) {
+        size_t j = dir ? (i + 1 == n ? 0 : i + 1) : (i == 0 ? n - 1 : i - 1);
+        qc_vec2 p = c->v[i], q;
+        double len;
+        if (h->open && ((dir && i + 1 == n) || (!dir && i == 0)))
+            return p;
+        q = c->v[j];
+        len = qc_hypot(q.x - p.x, q.y - p.y);
+        if (len >= dist)
+            return QC__V2(p.x + (q.x - p.x) * dist / len, p.y + (q.y - p.y) * dist / len);
+        dist -= len;
+        i = j;
+    }
+    return c->v[i];
+}
+
+/* The radius of the circle through vertex i and the points TURN_ARC d
+ * before and after it along c, as the tests measure turns (huge where
+ * they are in line). */
+static double turn_at(const holes *h, const qc_points *c, size_t i)
+{
+    qc_vec2 a = along(h, c, i, TURN_ARC * h->d, 0), b = along(h, c, i, TURN_ARC * h->d, 1);
+    qc_vec2 at = c->v[i];
+    double ab = qc_hypot(at.x - a.x, at.y - a.y), bc = qc_hypot(b.x - at.x, b.y - at.y);
+    double ca = qc_hypot(a.x - b.x, a.y - b.y);
+    double cr = fabs((at.x - a.x) * (b.y - at.y) - (at.y - a.y) * (b.x - at.x));
+
+    return cr > 1e-12 * ab * bc * ca ? ab * bc * ca / (2.0 * cr) : HUGE_VAL;
+}
+
+/* The tightest turn (circumradius, mm) at the vertices the last move
+ * moved and their neighbours, two either side. */
+static double tightest(const holes *h, const qc_points *c)
+{
+    size_t n = c->n, k;
+    double best = HUGE_VAL;
+
+    for (k = 0; k < h->nundo; k++) { /* the spline through i bends two spans either side */
+        size_t j, i = h->undo[k];
+        for (j = 0; j < 5 && j < n; j++) {
+            size_t at = (i + n + j - 2) % n;
+            best = fmin(best, turn_at(h, c, at));
+        }
+    }
+    return best;
+}
+
+/* The longest straight stretch through vertex i within STRAIGHT_SPAN
+ * vertices either side (mm along the curve): a run whose vertices all lie
+ * within d/20 of the chord between its ends, as the tests measure it. */
+static double straight_at(const holes *h, const qc_points *c, size_t i)
+{
+    size_t n = c->n, span = STRAIGHT_SPAN, a, b, k;
+    double best = 0.0, tol = h->d / 20.0;
+
+    if (n < 2 * span + 3)
+        return 0.0;
+    for (a = 0; a <= span; a++) /* the run from i - a to i + b (cyclic offsets) */
+        for (b = (a == 0 ? 1 : 0); b <= span; b++) {
+            size_t ia = (i + n - a) % n, ib = (i + b) % n;
+            qc_vec2 p = c->v[ia], q = c->v[ib];
+            double len = qc_hypot(q.x - p.x, q.y - p.y);
+            int ok = len > 0.0 && !(h->open && (i < a || i + b >= n));
+            for (k = 1; k < a + b && ok; k++) {
+                qc_vec2 v = c->v[(ia + k) % n];
+                ok = fabs((q.x - p.x) * (v.y - p.y) - (q.y - p.y) * (v.x - p.x)) <= tol * len;
+            }
+            if (ok)
+                best = fmax(best, len);
+        }
+    return best;
+}
+
+/* The longest straight stretch through the vertices the last move moved. */
+static double straightest(const holes *h, const qc_points *c)
+{
+    double best = 0.0;
+    size_t k;
+
+    for (k = 0; k < h->nundo; k++)
+        best = fmax(best, straight_at(h, c, h->undo[k]));
+    return best;
+}
+
+/* Whether the last move made the curve turn tighter than TURN_MIN d
+ * where it turned less tightly before, or run straight for longer than
+ * STRAIGHT d where it ran straight for less (compared with the moved
+ * vertices put back for a moment). */
+static int turns_tighter(holes *h, qc_points *c)
+{
+    double now = tightest(h, c), before, run = straightest(h, c), run_was;
+    size_t k;
+
+    if (!(now < TURN_MIN * h->d) && !(run > STRAIGHT * h->d))
+        return 0;
+    for (k = 0; k < h->nundo; k++) { /* swap: as it was */
+        qc_vec2 t = c->v[h->undo[k]];
+        c->v[h->undo[k]] = h->was[k];
+        h->was[k] = t;
+    }
+    before = tightest(h, c);
+    run_was = straightest(h, c);
+    for (k = 0; k < h->nundo; k++) { /* and back */
+        qc_vec2 t = c->v[h->undo[k]];
+        c->v[h->undo[k]] = h->was[k];
+        h->was[k] = t;
+    }
+    return (now < TURN_MIN * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
+}
+
+/* Puts back what the last bump moved. */
+static void unbump(holes *h, qc_points *c)
+{
+    size_t k;
+
+    for (k = 0; k < h->nundo; k++)
+        c->v[h->undo[k]] = h->was[k];
+    h->nundo = 0;
+}
+
+/* Raises a bump of the curve at vertex v0 towards q: the vertices within
+ * BUMP_W d along the curve either side move by rise, less further along
+ * (the line behind stays: the curve grows into the hole). 0, undone, if
+ * it would carry a line near a seam away from it, too near it, or make
+ * the curve cross itself. */
+static int bump(holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
+{
+    size_t n = c->n, side, k, j;
+    qc_vec2 u = QC__V2(q.x - c->v[v0].x, q.y - c->v[v0].y);
+    double ul = qc_hypot(u.x, u.y), w = BUMP_W * h->d;
+
+    h->nundo = 0;
+    if (!(ul > 0.0))
+        return 0;
+    u.x /= ul;
+    u.y /= ul;
+    for (side = 0; side < 2; side++) {
+        double arc = 0.0;
+        for (j = v0, k = 0; k < n / 2; k++) {
+            size_t nx;
+            qc_vec2 p = c->v[j], m;
+            double was, now, s;
+            if (h->open && (j == 0 || j + 1 == n))
+                break;
+            nx = side ? (j + 1 == n ? 0 : j + 1) : (j == 0 ? n - 1 : j - 1);
+            if (!(side && j == v0)) {
+                s = rise * fall(arc / w);
+                m = QC__V2(p.x + s * u.x, p.y + s * u.y);
+                was = qc__sdf_at(h->s, p);
+                now = qc__sdf_at(h->s, m);
+                if ((was < RIM * h->d && now > was) || now < SEAM * h->d) {
+                    unbump(h, c);
+                    return 0;
+                }
+                h->undo[h->nundo] = (uint32_t)j;
+                h->was[h->nundo++] = p;
+                c->v[j] = m;
+            }
+            arc += qc_hypot(c->v[nx].x - p.x, c->v[nx].y - p.y);
+            if (arc > w)
+                break;
+            j = nx;
+        }
+    }
+    for (k = 0; k < h->nundo; k++) {
+        size_t i = h->undo[k];
+        if (seg_crosses(h, c, i) || seg_crosses(h, c, i == 0 ? n - 1 : i - 1)) {
+            unbump(h, c);
+            return 0;
+        }
+    }
+    if (turns_tighter(h, c)) {
+        unbump(h, c);
+        return 0;
+    }
+    return 1;
+}
+
+/* Tries a bump from each side (up to four, 60 degrees apart or more) the
+ * disc at q (radius R) touches and keeps the one that narrows the widest
+ * gap round it most, if any does. */
+static int try_bumps(holes *h, qc_points *c, qc_vec2 q, double R)
+{
+    size_t cells[4], x, y, e, pick[4], np = 0, k, best = (size_t)-1;
+    double reach = R + CONTACT * h->d, half = R + LOCAL_PAD * h->d, rise;
+    double before = local_far(h, q, half, HUGE_VAL), least = before - GAIN * h->d;
+
+    rise = fmin(BUMP_MAX * h->d, R - AIM * h->d);
+    if (!(rise > 0.0))
+        return 0;
+    /* the contacts: the nearest vertex, then the nearest more than 60
+     * degrees round from those picked */
+    for (k = 0; k < 4; k++) {
+        double bd = HUGE_VAL;
+        size_t bi = (size_t)-1;
+        qc__seg_grid_cells(&h->sg, QC__V2(q.x - reach, q.y - reach), QC__V2(q.x + reach, q.y + reach),
+                           cells);
+        for (y = cells[1]; y <= cells[3]; y++)
+            for (x = cells[0]; x <= cells[2]; x++)
+                for (e = h->sg.start[y * h->sg.gx + x]; e < h->sg.start[y * h->sg.gx + x + 1]; e++) {
+                    size_t i = h->sg.seg[e], t;
+                    qc_vec2 p = c->v[i];
+                    double r = qc_hypot(p.x - q.x, p.y - q.y);
+                    int ok = r < reach && r > 0.0 && (r < bd || (r == bd && i < bi));
+                    for (t = 0; t < np && ok; t++) {
+                        qc_vec2 o = c->v[pick[t]];
+                        double ro = qc_hypot(o.x - q.x, o.y - q.y);
+                        ok = ((p.x - q.x) * (o.x - q.x) + (p.y - q.y) * (o.y - q.y)) < 0.5 * r * ro;
+                    }
+                    if (ok && !(h->open && (i == 0 || i + 1 == c->n))) {
+                        bd = r;
+                        bi = i;
+                    }
+                }
+        if (bi == (size_t)-1)
+            break;
+        pick[np++] = bi;
+    }
+    for (k = 0; k < np; k++) {
+        double after;
+        if (!bump(h, c, pick[k], q, rise))
+            continue;
+        after = local_far(h, q, half, least);
+        unbump(h, c);
+        if (after < least) {
+            least = after;
+            best = k;
+        }
+    }
+    if (best == (size_t)-1)
+        return 0;
+    if (!bump(h, c, pick[best], q, rise))
+        return 0;
+    h->nundo = 0;
+    return 1;
+}
+
 /* Draws the vertices round the disc at q (radius R) in towards q by up
  * to shift, each as far as the space behind it allows; stamp marks them
  * for disc number k. */
@@ -200,6 +545,8 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
                  * them), and no nearer than the seam clearance */
                 if ((was < RIM * h->d && now > was) || now < SEAM * h->d)
                     continue;
+                h->undo[h->nundo] = (uint32_t)i;
+                h->was[h->nundo++] = p;
                 c->v[i] = m;
             }
 }
@@ -251,7 +598,9 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
     if (rc == QC_OK && np > 0) {
         qsort(pk, np, sizeof *pk, cmp_peak);
         h->stamp = qc__alloc_array(ctx, c->n, sizeof *h->stamp);
-        if (h->stamp == NULL)
+        h->undo = qc__alloc_array(ctx, c->n, sizeof *h->undo);
+        h->was = qc__alloc_array(ctx, c->n, sizeof *h->was);
+        if (h->stamp == NULL || h->undo == NULL || h->was == NULL)
             rc = QC_ENOMEM;
         else
             memset(h->stamp, 0, c->n * sizeof *h->stamp);
@@ -260,10 +609,10 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
         rc = qc__seg_grid_build(ctx, &h->sg, c->v, ns, next_seg, c, h->d, 4.0);
     /* the raster errs by up to a cell: every peak within two of the greatest */
     for (k = 0; rc == QC_OK && k < np &&
-                sqrt((double)pk[k].f) >= sqrt((double)pk[0].f) - 2.0; k++) {
+                sqrt((double)pk[k].f) >= sqrt((double)pk[0].f) - 1.0; k++) {
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
         double R;
-        (void)climb(h, &q, g.h, &R);
+        (void)climb(h, &q, g.h, sqrt((double)pk[k].f) * g.h, &R);
         if (R < HUGE_VAL)
             *worst = fmax(*worst, R);
     }
@@ -272,21 +621,34 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
         double R;
 
-        if (sqrt((double)pk[k].f) * g.h < goal - 2.0 * g.h)
+        if (sqrt((double)pk[k].f) * g.h < goal - g.h)
             break; /* (sorted) no climb from here reaches the goal */
         if (mask[pk[k].at] & 2)
             continue;
-        (void)climb(h, &q, g.h, &R);
+        (void)climb(h, &q, g.h, sqrt((double)pk[k].f) * g.h, &R);
         if (!(R > goal) || R == HUGE_VAL)
             continue;
-        close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d), (uint32_t)k);
+        if (!try_bumps(h, c, q, R)) { /* else drawn in all round, judged the same way */
+            double before = local_far(h, q, R + LOCAL_PAD * h->d, HUGE_VAL);
+            h->nundo = 0;
+            close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d), (uint32_t)k);
+            if (turns_tighter(h, c) ||
+                !(local_far(h, q, R + LOCAL_PAD * h->d, before - GAIN * h->d) < before - GAIN * h->d)) {
+                unbump(h, c);
+                continue;
+            }
+            h->nundo = 0;
+        }
         (*moved)++;
         /* the discs whose bands this one moved wait for the next pass */
         block(&g, mask, q, 2.0 * (R + BAND * h->d));
     }
     qc__seg_grid_free(ctx, &h->sg);
     qc__free(ctx, h->stamp, h->stamp != NULL ? c->n * sizeof *h->stamp : 0);
-    h->stamp = NULL;
+    qc__free(ctx, h->undo, h->undo != NULL ? c->n * sizeof *h->undo : 0);
+    qc__free(ctx, h->was, h->was != NULL ? c->n * sizeof *h->was : 0);
+    h->stamp = h->undo = NULL;
+    h->was = NULL;
     qc__free(ctx, pk, pcap * sizeof *pk);
     qc__free(ctx, g.f, cells * sizeof *g.f);
     qc__free(ctx, mask, cells);
@@ -313,14 +675,16 @@ int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s, do
     if (rc == QC_OK)
         rc = QC__RESERVE(ctx, cur.v, cur.cap, c->n);
     /* each pass measures the curve it starts from (now) before it moves
-     * it: one that finds the widest disc no narrower than the pass before
-     * did (was) undoes that pass, and the phase ends */
+     * it: one that finds the widest disc wider than the pass before did
+     * (was) undoes that pass, and the phase ends (every move was judged
+     * where it was made: the widest disc, blocked behind another in one
+     * pass, may wait for the next) */
     for (p = 0; p <= PASSES && rc == QC_OK; p++) {
         memcpy(cur.v, c->v, c->n * sizeof *c->v);
         rc = pass(ctx, region, &h, c, p < PASSES && moved > 0, &now, &moved);
         if (rc < 0)
             break;
-        if (p > 0 && !(now < was - GAIN * d)) {
+        if (p > 0 && now > was + GAIN * d) {
             memcpy(c->v, prev.v, c->n * sizeof *c->v);
             break;
         }
