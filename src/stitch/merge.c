@@ -20,7 +20,7 @@
 #include "stitch_internal.h"
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
-#define NOT_JOINT ((size_t)-1)
+#define NOT_JOINT UINT32_MAX
 /* The junction table is cut by a grid of cells over the piece's box, each
  * cell's places hashed within its own run of slots (two per point in the
  * cell). A table hashed over all of it misses the cache at every probe: at
@@ -46,7 +46,7 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
     mg->m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *mg->m);
     mg->table = (uint32_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
     mg->start = (uint32_t *)qc__alloc_array(ctx, mg->cells + 1, sizeof *mg->start);
-    mg->place = (size_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
+    mg->place = (uint32_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
     mg->gone = (unsigned char *)qc__alloc(ctx, longest);
     mg->cap = longest;
     if (mg->m == NULL || mg->table == NULL || mg->start == NULL || mg->place == NULL ||
@@ -138,7 +138,7 @@ static uint32_t cell_of(const grid *g, qc_vec2 p)
 static void mark_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
 {
     uint32_t *table = mg->table, *start = mg->start;
-    size_t *place = mg->place;
+    uint32_t *place = mg->place;
     grid g = make_grid(v, n, mg->cells);
     size_t i, ncell = (size_t)g.gx * g.gy;
 
@@ -166,7 +166,7 @@ static void mark_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
         place[i] = h;
     }
     for (i = 0; i < n; i++) {
-        size_t e = table[place[i]];
+        uint32_t e = table[place[i]];
 
         place[i] = e & 1 ? e / 2 - 1 : NOT_JOINT;
     }
@@ -192,7 +192,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
                        double floor_len, double keep)
 {
     qc_vec2 *m = mg->m;
-    const size_t *place = mg->place;
+    const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
 

@@ -21,7 +21,7 @@ typedef struct qc__merge {
     size_t slots;         /* its size: two per point */
     uint32_t *start;      /* per cell of a grid over the piece: its first slot */
     size_t cells;         /* cells at most */
-    size_t *place;        /* per point: where the piece passes it again */
+    uint32_t *place;      /* per point: where the piece passes it again */
     unsigned char *gone;  /* per place: a junction merged away */
     size_t cap;
 } qc__merge;
