@@ -133,13 +133,6 @@ void qc__tsp_queue_all(qc__tsp *s)
 #define SWEEP_JITTER 64 /* points: the next kick is this near the sweep */
 #define KICK_REVERSAL 1000
 
-/* Whether reversing between a and c (either side) costs too much. */
-int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
-{
-    uint32_t d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
-    return d > s->max_reversal && s->m - d > s->max_reversal;
-}
-
 /* The best 2-opt move removing an edge at a; applies it. 1 if moved. */
 static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 {
