@@ -96,9 +96,9 @@ static grid make_grid(const qc_vec2 *v, size_t n, size_t cells)
     size_t i;
 
     g.x0 = x1, g.y0 = y1;
-    for (i = 1; i < n; i++) {
-        g.x0 = fmin(g.x0, v[i].x), x1 = fmax(x1, v[i].x);
-        g.y0 = fmin(g.y0, v[i].y), y1 = fmax(y1, v[i].y);
+    for (i = 1; i < n; i++) { /* comparisons, not fmin (a libm call) */
+        g.x0 = v[i].x < g.x0 ? v[i].x : g.x0, x1 = v[i].x > x1 ? v[i].x : x1;
+        g.y0 = v[i].y < g.y0 ? v[i].y : g.y0, y1 = v[i].y > y1 ? v[i].y : y1;
     }
     w = x1 - g.x0, h = y1 - g.y0;
     g.gx = g.gy = 1;
@@ -183,8 +183,10 @@ static double stray(const qc_vec2 *v, size_t lo, size_t hi, qc_vec2 a, qc_vec2 b
 {
     double d2 = 0;
 
-    for (; lo < hi; lo++)
-        d2 = fmax(d2, qc__seg_dist2(v[lo], a, b));
+    for (; lo < hi; lo++) { /* as fmax (a NaN distance is passed over), without its call */
+        double e = qc__seg_dist2(v[lo], a, b);
+        d2 = e > d2 ? e : d2;
+    }
     return sqrt(d2);
 }
 
