@@ -165,8 +165,9 @@ static void widen(uncross *u, uint32_t a, uint32_t b)
  * boxes' overlap); it finds the pairs the box tree's scan from every edge
  * finds, and stacks them in its order (by the lower first point, then the
  * higher). A 10 m wanderer (623,518 points): the scan's queries were 3.8%
- * of the whole run's profile, the uncrossing with the grid 1.7%. Long edges over a fine grid (GRID_MAX_FILED) or
- * clusters in a coarse one (GRID_MAX_PAIRS) leave it to the scan. */
+ * of the whole run's profile, the uncrossing with the grid 1.7%. Long
+ * edges over a fine grid (GRID_MAX_FILED) or clusters in a coarse one
+ * (GRID_MAX_PAIRS) leave it to the scan. */
 #define EDGES_PER_CELL 2
 #define GRID_MAX_FILED 16
 #define GRID_MAX_PAIRS 16 /* per edge: pairs sharing a cell (clustered points) */
