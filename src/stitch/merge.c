@@ -197,6 +197,10 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
+    /* a step whose square exceeds this is at least min_seg long, whatever
+     * the square root rounds to: most steps, without one (none when
+     * min_seg keeps every step or is too small to square exactly) */
+    double long2 = min_seg >= 1e-100 ? min_seg * min_seg * (1 + 1e-9) : HUGE_VAL;
 
     if (n == 0)
         return 0;
@@ -206,8 +210,9 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     for (i = 1; i < n; i++) {
         int last = i + 1 == n, joints = place[i] != NOT_JOINT && place[at] != NOT_JOINT;
         int here_ok = !last && place[i] == NOT_JOINT, prev_ok = k >= 2 && place[at] == NOT_JOINT;
-        double d = dist(m[k - 1], v[i]), drop_here, drop_prev;
+        double dx = v[i].x - m[k - 1].x, dy = v[i].y - m[k - 1].y, d, drop_here, drop_prev;
 
+        d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(m[k - 1], v[i]);
         if (d == 0 && !last)
             continue;
         if (d >= min_seg || (i - at > MAX_MERGE_RUN && !last)) {
