@@ -200,6 +200,31 @@ static void plan_should_keep_a_point_the_path_passes_twice(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* The same corner at the end of a long piece (4,040 points first, in rows
+ * of 1 mm steps away from it): the merge's junction table is cut into
+ * cells over the piece's box, and the two passes must meet in one. */
+static void plan_should_keep_a_point_passed_twice_in_a_long_piece(void)
+{
+    const qc_vec2 tail[] = {{0, 0}, {3, 3}, {3.06, 3.06}, {3.06, 3.28}, {3.06, 6}, {0, 6},
+                            {0.5, 5.5}, {3, 3}, {0, 0}};
+    enum { ROWS = 40, ROW = 101 };
+    static qc_vec2 pts[ROWS * ROW + 9];
+    qc_plan plan;
+    size_t r, i, n = 0;
+
+    for (r = 0; r < ROWS; r++)
+        for (i = 0; i < ROW; i++)
+            pts[n++] = v2(10.0 + (double)(r % 2 ? ROW - 1 - i : i), 10.0 + (double)r);
+    for (i = 0; i < 9; i++)
+        pts[n++] = tail[i];
+    plan_of(pts, n, &plan);
+    TEST_ASSERT_EQUAL_size_t(2, visits(&plan, v2(3, 3)));
+    TEST_ASSERT_EQUAL_size_t(2, visits(&plan, v2(0, 0)));
+    TEST_ASSERT_EQUAL_size_t(1, visits(&plan, v2(60, 30)));
+    qc_plan_free(&ctx, &plan);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 static void plan_should_add_jumps_and_tie_offs_per_piece(void)
 {
     qc_path path = {0};
@@ -426,6 +451,7 @@ int main(void)
     RUN_TEST(plan_should_keep_a_corner_closer_than_the_minimum);
     RUN_TEST(plan_should_still_merge_straight_runs_and_tiny_corners);
     RUN_TEST(plan_should_keep_a_point_the_path_passes_twice);
+    RUN_TEST(plan_should_keep_a_point_passed_twice_in_a_long_piece);
     RUN_TEST(plan_should_add_jumps_and_tie_offs_per_piece);
     RUN_TEST(plan_should_leave_no_short_stitch_after_a_tie_off);
     RUN_TEST(plan_should_flatten_curves_within_tolerance);

@@ -30,6 +30,11 @@ QC__HIDDEN void qc__out_int(qc__out *o, int64_t v);
  * "0.005"); decimals 0..9. trim != 0 drops trailing zeros and a bare point
  * ("-1.25", "3"), and "-0" becomes "0". */
 QC__HIDDEN void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim);
+/* The same texts written backwards into a caller's buffer ending at end
+ * (24 and 40 bytes suffice), returning where they start: an encoder can
+ * make a whole line and write it at once. */
+QC__HIDDEN char *qc__fmt_int(char *end, int64_t v);
+QC__HIDDEN char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim);
 /* Flushes; returns QC_OK or the first failure (QC_EIO from the callback). */
 QC__HIDDEN int qc__out_finish(qc__out *o);
 

@@ -71,42 +71,53 @@ static char *digits(char *end, uint64_t v, int min_digits)
     return end;
 }
 
-void qc__out_int(qc__out *o, int64_t v)
+char *qc__fmt_int(char *end, int64_t v)
 {
-    char tmp[24], *end = tmp + sizeof tmp, *s;
     uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+    char *s = digits(end, u, 1);
 
-    s = digits(end, u, 1);
     if (v < 0)
         *--s = '-';
+    return s;
+}
+
+void qc__out_int(qc__out *o, int64_t v)
+{
+    char tmp[24], *end = tmp + sizeof tmp, *s = qc__fmt_int(end, v);
+
     qc__out_bytes(o, s, (size_t)(end - s));
 }
 
-void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim)
+char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim)
 {
     static const uint64_t pow10[10] = {1, 10, 100, 1000, 10000, 100000,
                                        1000000, 10000000, 100000000,
                                        1000000000};
-    char tmp[40], *end = tmp + sizeof tmp, *s;
     uint64_t u = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
     uint64_t ip = u / pow10[decimals], fp = u % pow10[decimals];
-    int neg = v < 0;
+    char *s = end, *last = end;
 
-    s = end;
     if (decimals > 0) {
         s = digits(end, fp, decimals);
-        if (trim) {
-            while (end > s && end[-1] == '0')
-                end--;
+        if (trim) { /* the text ends earlier: move it up to end */
+            while (last > s && last[-1] == '0')
+                last--;
+            memmove(s + (end - last), s, (size_t)(last - s));
+            s += end - last;
         }
-        if (end > s)
+        if (s < end)
             *--s = '.';
-        else
-            s = end;
     }
     s = digits(s, ip, 1);
-    if (neg && !(trim && u == 0))
+    if (v < 0 && !(trim && u == 0))
         *--s = '-';
+    return s;
+}
+
+void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim)
+{
+    char tmp[40], *end = tmp + sizeof tmp, *s = qc__fmt_fixed(end, v, decimals, trim);
+
     qc__out_bytes(o, s, (size_t)(end - s));
 }
 
@@ -118,7 +129,9 @@ int qc__out_finish(qc__out *o)
 
 int64_t qc__round(double x)
 {
-    return x >= 0 ? (int64_t)floor(x + 0.5) : -(int64_t)floor(-x + 0.5);
+    /* the conversion truncates, which is floor for x + 0.5 >= 0: the same
+     * values as floor() without a libm call per coordinate */
+    return x >= 0 ? (int64_t)(x + 0.5) : -(int64_t)(-x + 0.5);
 }
 
 int64_t qc__mm_to_units(double mm, double units_per_mm)

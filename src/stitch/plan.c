@@ -256,7 +256,7 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
 {
     qc__merge mg;
     qc_vec2 *m;
-    size_t longest = 0, k, start = 0, cnt;
+    size_t longest = 0, k, start = 0, cnt = 0;
     double total = 0;
     int rc = QC_OK;
 
@@ -286,7 +286,9 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
         rc = plan_grow(ctx, out, (size_t)total);
     start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
-        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
+        /* one piece (most patterns): m still holds it from the count */
+        if (ends->n > 1)
+            cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
         if (cnt >= 2)
             rc = emit_piece(ctx, out, m, cnt, r);
         start = ends->i[k];

@@ -18,8 +18,10 @@ QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
 typedef struct qc__merge {
     qc_vec2 *m;           /* the kept points */
     uint32_t *table;      /* a hash table of the piece's places (merge.c) */
-    size_t slots;         /* its size, a power of two */
-    size_t *place;        /* per point: where the piece passes it again */
+    size_t slots;         /* its size: two per point */
+    uint32_t *start;      /* per cell of a grid over the piece: its first slot */
+    size_t cells;         /* cells at most */
+    uint32_t *place;      /* per point: where the piece passes it again */
     unsigned char *gone;  /* per place: a junction merged away */
     size_t cap;
 } qc__merge;

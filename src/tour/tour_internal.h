@@ -153,8 +153,18 @@ QC__HIDDEN int qc__tsp_move2(qc__tsp *s, uint32_t a, uint32_t b, uint32_t c, uin
 QC__HIDDEN void qc__tsp_push(qc__tsp *s, uint32_t a);
 /* Makes room for the queue; queues every point in tour order. */
 QC__HIDDEN void qc__tsp_queue_all(qc__tsp *s);
-/* Whether a move reversing between a and c costs too much (huge tours). */
-QC__HIDDEN int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c);
+/* Whether a move reversing between a and c costs too much (huge tours;
+ * never when the shorter side of any move is within the limit). Inline:
+ * the searches of every file ask it of each candidate. */
+static inline int qc__tsp_too_far(const qc__tsp *s, uint32_t a, uint32_t c)
+{
+    uint32_t d;
+
+    if (s->m / 2 <= s->max_reversal)
+        return 0;
+    d = s->pos[c] >= s->pos[a] ? s->pos[c] - s->pos[a] : s->pos[a] - s->pos[c];
+    return d > s->max_reversal && s->m - d > s->max_reversal;
+}
 
 /* How far the local search goes: each level adds a move. */
 enum { QC__TSP_LEVEL_2OPT, QC__TSP_LEVEL_OROPT, QC__TSP_LEVEL_OR3OPT, QC__TSP_LEVEL_LK };
