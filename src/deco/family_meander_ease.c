@@ -22,6 +22,8 @@
 #define EASE_CLEAR 0.05  /* a moved vertex stays this far inside, times d */
 #define EASE_BELOW 0.95  /* eased: turning tighter than this times the radius
                           * (a tongue's tip turns at the radius itself) */
+#define WAVE_RUN 1.5     /* runs longer than this, times d, are waved first ... */
+#define WAVE_AGAIN 1.8   /* ... and these once more after the rounding */
 #define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
@@ -437,10 +439,8 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
     return 0;
 }
 
-/* qc__meander_ease(); with whole, a moved vertex's two segments (not
- * only the vertex) stay EASE_CLEAR d inside. */
-static int ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s, double d,
-                int whole)
+int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
+                     double d)
 {
     size_t pass, i, n = c->n;
     double longest = 0.0;
@@ -465,9 +465,7 @@ static int ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf 
                 continue;
             m = QC__V2(p.x + EASE_STEP * (0.5 * (a.x + b.x) - p.x),
                        p.y + EASE_STEP * (0.5 * (a.y + b.y) - p.y));
-            if (qc__sdf_exact(s, m, NULL) < EASE_CLEAR * d ||
-                (whole && (!qc__meander_seg_inside(s, a, m, EASE_CLEAR * d) ||
-                           !qc__meander_seg_inside(s, m, b, EASE_CLEAR * d))))
+            if (qc__sdf_exact(s, m, NULL) < EASE_CLEAR * d)
                 continue;
             c->v[i] = m;
             if (seg_crosses(c, open, &bins, i, m, ia, i) || seg_crosses(c, open, &bins, i, m, i, ib))
@@ -480,12 +478,6 @@ static int ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf 
             break;
     }
     return rc;
-}
-
-int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
-                     double d)
-{
-    return ease(ctx, c, open, turn, s, d, 0);
 }
 
 /* c with the vertices closer than ROUND_CLUMP radii to the one before
@@ -552,7 +544,7 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
     if (c->n < 4 || !(turn > 0.0))
         return QC_OK;
     memset(&r, 0, sizeof r);
-    rc = qc__meander_wave(ctx, c, open, d, s); /* first: a wave turns gently */
+    rc = qc__meander_wave(ctx, c, open, d, WAVE_RUN, s); /* first: a wave turns gently */
     for (pass = 0; pass < ROUND_PASSES && rc == QC_OK; pass++) {
         vbins bins;
         size_t moved = 0, start = 0, seen;
@@ -607,6 +599,8 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
             break;
     }
     round_buf_free(ctx, &r);
+    if (rc == QC_OK) /* and what the rounding left straight, or could not wave before */
+        rc = qc__meander_wave(ctx, c, open, d, WAVE_AGAIN, s);
     if (rc == QC_OK) { /* the split points left in line: the corner as it was */
         size_t k = 0;
         n = c->n;
