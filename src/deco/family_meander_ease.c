@@ -28,8 +28,9 @@
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
-#define ROUND_TIP 0.12   /* runs with a vertex this near the boundary, times d, stay:
-                          * a tongue's tip, deep in a corner (the clearance is 0.22 d) */
+#define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, stay:
+                          * a tongue's tip, deep in a corner (the clearance is 0.22 d;
+                          * the tips reach.c draws lie 0.08 d off the seams) */
 #define ROUND_REACH 2.0  /* rounded outwards: the curve this far either side of the
                           * run moves too, times the radius */
 #define ROUND_OUT_GAIN 1.5 /* ... back out by this times the run's mean move: the
