@@ -71,7 +71,9 @@ QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, d
  * tight vertices moves, a few rounds over, towards the middle of those
  * points, kept only where the whole run stays d/20 inside s's region,
  * crosses nothing and leaves no seam point that was within 1/4 in of the
- * curve further away. Errors: QC_ENOMEM.
+ * curve further away; where that fails, outwards: the curve out to two
+ * radii either side moves back out, so the corner stays and its legs
+ * spread. Straight runs are waved before and after. Errors: QC_ENOMEM.
  */
 QC__HIDDEN int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn,
                                  const qc__sdf *s, double d);

@@ -10,7 +10,9 @@
  * near it, binned in a grid). The spline through a corner still turns
  * tighter than its three vertices say, so a last pass (qc__meander_round)
  * measures each vertex's turn over the turn radius along the curve, as the
- * tests do, and rounds what is still tight.
+ * tests do, and rounds what is still tight: inwards where that bares no
+ * seam, else outwards (the corner stays, its legs spread), respacing the
+ * vertices at the tight turns every round, then waves what it left straight.
  */
 #include <math.h>
 #include <string.h>
@@ -334,7 +336,7 @@ static int seam_covered(const qc_points *c, int open, const vbins *b, qc_vec2 q)
     return 0;
 }
 
-/* Bit k + SEAM_SAMPLES set for each of p's seam samples c covers. */
+/* Bit k + OUT_SAMPLES set for each of p's seam samples that c covers. */
 static uint32_t seam_cover(const qc_points *c, int open, const vbins *b, const qc__sdf *s,
                            qc_vec2 p)
 {
@@ -381,30 +383,40 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
 
     if (count > ROUND_OUT_MAX)
         return 0;
-    for (k = 0; k < count; k++, i = i + 1 == n ? 0 : i + 1) {
+    for (k = 0; k < count; k++, i = j_next(n, i)) {
         mx += ROUND_OUT_GAIN * (to[i].x - c->v[i].x) / (double)count;
         my += ROUND_OUT_GAIN * (to[i].y - c->v[i].y) / (double)count;
         last = i;
     }
     /* the stretch that moves: out to reach along c either side of the run,
      * each vertex's arc length from the run in dist[] */
-    for (arc = 0.0, before = 0, i = first; before < ROUND_SIDE; before++, lo = i = i == 0 ? n - 1 : i - 1) {
+    for (arc = 0.0, before = 0, i = first; before < ROUND_SIDE; before++) {
         size_t j = step_from(n, open, i, -1);
-        if (j == SIZE_MAX || (arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y)) >= reach)
+        if (j == SIZE_MAX)
+            break;
+        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
+        if (arc >= reach)
             break;
         back[before] = arc;
+        lo = i = j;
     }
-    for (arc = 0.0, after = 0, i = last; after < ROUND_SIDE; after++, i = j_next(n, i)) {
+    for (arc = 0.0, after = 0, i = last; after < ROUND_SIDE; after++) {
         size_t j = step_from(n, open, i, 1);
-        if (j == SIZE_MAX || (arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y)) >= reach)
+        if (j == SIZE_MAX)
+            break;
+        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
+        if (arc >= reach)
             break;
         fwd[after] = arc;
+        i = j;
     }
     m = before + count + after;
     if (m + 2 >= n || m > ROUND_OUT_MAX)
         return 0;
     for (k = 0; k < m; k++)
-        dist[k] = k < before ? back[before - 1 - k] : k < before + count ? 0.0 : fwd[k - before - count];
+        dist[k] = k < before           ? back[before - 1 - k]
+                  : k < before + count ? 0.0
+                                       : fwd[k - before - count];
     /* the seam near its vertices and the middles of its segments, as covered */
     for (k = 0, i = lo == 0 ? n - 1 : lo - 1; k <= m; k++, i = j_next(n, i)) {
         size_t j = j_next(n, i);
@@ -438,47 +450,6 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
     for (k = 0, i = lo; k < moved; k++, i = j_next(n, i)) /* undone */
         c->v[i] = was[k];
     return 0;
-}
-
-int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
-                     double d)
-{
-    size_t pass, i, n = c->n;
-    double longest = 0.0;
-    int rc = QC_OK;
-
-    if (n < 4 || !(turn > 0.0))
-        return QC_OK;
-    for (i = 0; i + (open ? 1 : 0) < n; i++) {
-        qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
-        longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
-    }
-    for (pass = 0; pass < EASE_PASSES && rc == QC_OK; pass++) {
-        vbins bins;
-        size_t moved = 0;
-
-        memset(&bins, 0, sizeof bins);
-        rc = vbins_build(ctx, &bins, c, 2.5 * longest + 1e-9);
-        for (i = open ? 1 : 0; i < (open ? n - 1 : n) && rc == QC_OK; i++) {
-            size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
-            qc_vec2 a = c->v[ia], p = c->v[i], b = c->v[ib], m;
-            if (circumradius(a, p, b) >= EASE_BELOW * turn)
-                continue;
-            m = QC__V2(p.x + EASE_STEP * (0.5 * (a.x + b.x) - p.x),
-                       p.y + EASE_STEP * (0.5 * (a.y + b.y) - p.y));
-            if (qc__sdf_exact(s, m, NULL) < EASE_CLEAR * d)
-                continue;
-            c->v[i] = m;
-            if (seg_crosses(c, open, &bins, i, m, ia, i) || seg_crosses(c, open, &bins, i, m, i, ib))
-                c->v[i] = p;
-            else
-                moved++;
-        }
-        vbins_free(ctx, &bins, n);
-        if (moved == 0)
-            break;
-    }
-    return rc;
 }
 
 /* c with the vertices closer than ROUND_CLUMP radii to the one before
@@ -618,3 +589,43 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
     return rc;
 }
 
+int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
+                     double d)
+{
+    size_t pass, i, n = c->n;
+    double longest = 0.0;
+    int rc = QC_OK;
+
+    if (n < 4 || !(turn > 0.0))
+        return QC_OK;
+    for (i = 0; i + (open ? 1 : 0) < n; i++) {
+        qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
+        longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
+    }
+    for (pass = 0; pass < EASE_PASSES && rc == QC_OK; pass++) {
+        vbins bins;
+        size_t moved = 0;
+
+        memset(&bins, 0, sizeof bins);
+        rc = vbins_build(ctx, &bins, c, 2.5 * longest + 1e-9);
+        for (i = open ? 1 : 0; i < (open ? n - 1 : n) && rc == QC_OK; i++) {
+            size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
+            qc_vec2 a = c->v[ia], p = c->v[i], b = c->v[ib], m;
+            if (circumradius(a, p, b) >= EASE_BELOW * turn)
+                continue;
+            m = QC__V2(p.x + EASE_STEP * (0.5 * (a.x + b.x) - p.x),
+                       p.y + EASE_STEP * (0.5 * (a.y + b.y) - p.y));
+            if (qc__sdf_exact(s, m, NULL) < EASE_CLEAR * d)
+                continue;
+            c->v[i] = m;
+            if (seg_crosses(c, open, &bins, i, m, ia, i) || seg_crosses(c, open, &bins, i, m, i, ib))
+                c->v[i] = p;
+            else
+                moved++;
+        }
+        vbins_free(ctx, &bins, n);
+        if (moved == 0)
+            break;
+    }
+    return rc;
+}
