@@ -164,6 +164,8 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
             rc = qc__meander_round(ctx, &c, tiled, o.turn, &s, d);
         if (rc == QC_OK) /* and the holes the rounding opened again */
             rc = qc__meander_holes(ctx, region, &s, d, tiled, &c);
+        if (rc == QC_OK) /* and the turns those bumps tightened */
+            rc = qc__meander_round(ctx, &c, tiled, o.turn, &s, d);
         if (rc == QC_OK)
             rc = tiled ? qc__meander_smooth(ctx, c.v, c.n, 0, d, NULL, &one)
                        : sew(ctx, &c, &s, region, params, &one);

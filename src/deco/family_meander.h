@@ -56,12 +56,13 @@ QC__HIDDEN int qc__meander_ease(qc_ctx *ctx, qc_points *c, int open, double turn
 QC__HIDDEN int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner);
 
 /*
- * Waves the straight runs of c (open: its ends stay) longer than 1.5 d
+ * Waves the straight runs of c (open: its ends stay) longer than run d
  * (within d/20 of their chord): a sine of about 1.5 d, 0.07 d either side
  * (near the boundary no nearer it than 0.06 d), kept where it stays inside
  * s's region and crosses nothing. Errors: QC_ENOMEM.
  */
-QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sdf *s);
+QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, double run,
+                                const qc__sdf *s);
 
 /*
  * Rounds the turns of c (open: its ends stay) tighter than turn (mm) as
@@ -70,7 +71,9 @@ QC__HIDDEN int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, c
  * tight vertices moves, a few rounds over, towards the middle of those
  * points, kept only where the whole run stays d/20 inside s's region,
  * crosses nothing and leaves no seam point that was within 1/4 in of the
- * curve further away. Errors: QC_ENOMEM.
+ * curve further away; where that fails, outwards: the curve out to two
+ * radii either side moves back out, so the corner stays and its legs
+ * spread. Straight runs are waved before and after. Errors: QC_ENOMEM.
  */
 QC__HIDDEN int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn,
                                  const qc__sdf *s, double d);

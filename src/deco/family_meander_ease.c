@@ -10,7 +10,9 @@
  * near it, binned in a grid). The spline through a corner still turns
  * tighter than its three vertices say, so a last pass (qc__meander_round)
  * measures each vertex's turn over the turn radius along the curve, as the
- * tests do, and rounds what is still tight.
+ * tests do, and rounds what is still tight: inwards where that bares no
+ * seam, else outwards (the corner stays, its legs spread), respacing the
+ * vertices at the tight turns every round, then waves what it left straight.
  */
 #include <math.h>
 #include <string.h>
@@ -22,17 +24,26 @@
 #define EASE_CLEAR 0.05  /* a moved vertex stays this far inside, times d */
 #define EASE_BELOW 0.95  /* eased: turning tighter than this times the radius
                           * (a tongue's tip turns at the radius itself) */
+#define WAVE_RUN 1.5     /* runs longer than this, times d, are waved first ... */
+#define WAVE_AGAIN 1.8   /* ... and these once more after the rounding */
 #define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
-#define ROUND_TIP 0.12   /* runs with a vertex this near the boundary, times d, stay:
-                          * a tongue's tip, deep in a corner (the clearance is 0.22 d) */
-#define ROUND_NEAR 6     /* after the first round, vertices this many steps from a
-                          * tight one are measured again (the stencil spans 2 / ROUND_DENSE) */
+#define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, stay:
+                          * a tongue's tip, deep in a corner (the clearance is 0.22 d;
+                          * the tips reach.c draws lie 0.08 d off the seams) */
+#define ROUND_REACH 2.0  /* rounded outwards: the curve this far either side of the
+                          * run moves too, times the radius */
+#define ROUND_OUT_GAIN 1.5 /* ... back out by this times the run's mean move: the
+                          * corner moves out a little, towards the seam it covers */
+#define ROUND_SIDE 24    /* ... but at most this many vertices either side */
+#define ROUND_OUT_MAX 64 /* ... and at most this many in all */
+#define ROUND_CLUMP 0.2  /* vertices nearer than this, times the radius, merge */
 #define SEAM_MM 6.35     /* issue 17: every seam within 1/4 in of a stitch, kept as it was */
 #define SEAM_OFF 0.05    /* mm: a sample further outside is off the seam (past a corner) */
 #define SEAM_SAMPLES 8   /* seam points on either side of a vertex, out to SEAM_MM */
+#define OUT_SAMPLES 14   /* ... and out to 1.75 SEAM_MM, rounding outwards */
 
 /* Radius of the circle through a, p, b (huge when they are in line). */
 static double circumradius(qc_vec2 a, qc_vec2 p, qc_vec2 b)
@@ -290,60 +301,244 @@ static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
     return 0;
 }
 
+/* Seam point k (-OUT_SAMPLES..OUT_SAMPLES) near p: along the tangent at
+ * the boundary point nearest p, drawn back onto the boundary; 0 if p is
+ * further than SEAM_MM from it. */
+static int seam_sample(const qc__sdf *s, qc_vec2 p, int k, qc_vec2 *q)
+{
+    qc_vec2 g, f;
+    double v = qc__sdf_exact(s, p, &g), step = SEAM_MM / SEAM_SAMPLES;
+
+    if (v > SEAM_MM)
+        return 0;
+    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
+    *q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
+    v = qc__sdf_exact(s, *q, &g);
+    *q = QC__V2(q->x - v * g.x, q->y - v * g.y);
+    return 1;
+}
+
+/* Whether a segment of c (binned in b) passes within SEAM_MM of q. */
+static int seam_covered(const qc_points *c, int open, const vbins *b, qc_vec2 q)
+{
+    size_t n = c->n, cx, cy, x, y, e;
+
+    vcell(b, q, &cx, &cy);
+    for (y = cy ? cy - 1 : 0; y <= cy + 1 && y < b->gy; y++)
+        for (x = cx ? cx - 1 : 0; x <= cx + 1 && x < b->gx; x++)
+            for (e = b->start[y * b->gx + x]; e < b->start[y * b->gx + x + 1]; e++) {
+                size_t j = b->idx[e], j1 = j + 1 == n ? 0 : j + 1, j0 = j == 0 ? n - 1 : j - 1;
+                if (!(open && j1 == 0) && seg_dist(q, c->v[j], c->v[j1]) <= SEAM_MM)
+                    return 1;
+                if (!(open && j == 0) && seg_dist(q, c->v[j0], c->v[j]) <= SEAM_MM)
+                    return 1;
+            }
+    return 0;
+}
+
+/* Bit k + OUT_SAMPLES set for each of p's seam samples that c covers. */
+static uint32_t seam_cover(const qc_points *c, int open, const vbins *b, const qc__sdf *s,
+                           qc_vec2 p)
+{
+    uint32_t bits = 0;
+    qc_vec2 q;
+    int k;
+
+    for (k = -OUT_SAMPLES; k <= OUT_SAMPLES; k++)
+        if (seam_sample(s, p, k, &q) && seam_covered(c, open, b, q))
+            bits |= (uint32_t)1 << (k + OUT_SAMPLES);
+    return bits;
+}
+
+/* The vertex after i of a closed curve of n. */
+static size_t j_next(size_t n, size_t i)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
+/* The vertex steps from i along c (dir < 0 backwards), or SIZE_MAX past an
+ * open curve's end vertex (which stays). */
+static size_t step_from(size_t n, int open, size_t i, int dir)
+{
+    if (dir < 0)
+        return i == 0 ? (open ? SIZE_MAX : n - 1) : (open && i == 1 ? SIZE_MAX : i - 1);
+    return i + 1 == n ? (open ? SIZE_MAX : 0) : (open && i + 2 == n ? SIZE_MAX : i + 1);
+}
+
+/* Rounds the run of tight vertices from first, count of them, outwards
+ * where round_run() could not round it inwards (a hook that leaves a run
+ * along a seam: cut, it bares the seam it covered): the run moves to[] as
+ * there while it and the curve out to ROUND_REACH radii either side move
+ * back out by the run's mean move, fading with the distance from the run.
+ * The corner stays about where it was, its legs spread, its turn widens.
+ * Checked as round_run() checks; all or nothing. Returns 1 if moved. */
+static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, double inner,
+                     double turn, size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
+{
+    size_t n = c->n, k, i = first, last = first, lo = first, before, after, moved = 0, m;
+    double mx = 0.0, my = 0.0, reach = ROUND_REACH * turn, arc;
+    double dist[ROUND_OUT_MAX], back[ROUND_SIDE], fwd[ROUND_SIDE];
+    uint32_t cover[2 * ROUND_OUT_MAX + 1];
+    qc_vec2 at[2 * ROUND_OUT_MAX + 1];
+
+    if (count > ROUND_OUT_MAX)
+        return 0;
+    for (k = 0; k < count; k++, i = j_next(n, i)) {
+        mx += ROUND_OUT_GAIN * (to[i].x - c->v[i].x) / (double)count;
+        my += ROUND_OUT_GAIN * (to[i].y - c->v[i].y) / (double)count;
+        last = i;
+    }
+    /* the stretch that moves: out to reach along c either side of the run,
+     * each vertex's arc length from the run in dist[] */
+    for (arc = 0.0, before = 0, i = first; before < ROUND_SIDE; before++) {
+        size_t j = step_from(n, open, i, -1);
+        if (j == SIZE_MAX)
+            break;
+        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
+        if (arc >= reach)
+            break;
+        back[before] = arc;
+        lo = i = j;
+    }
+    for (arc = 0.0, after = 0, i = last; after < ROUND_SIDE; after++) {
+        size_t j = step_from(n, open, i, 1);
+        if (j == SIZE_MAX)
+            break;
+        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
+        if (arc >= reach)
+            break;
+        fwd[after] = arc;
+        i = j;
+    }
+    m = before + count + after;
+    if (m + 2 >= n || m > ROUND_OUT_MAX)
+        return 0;
+    for (k = 0; k < m; k++)
+        dist[k] = k < before           ? back[before - 1 - k]
+                  : k < before + count ? 0.0
+                                       : fwd[k - before - count];
+    /* the seam near its vertices and the middles of its segments, as covered */
+    for (k = 0, i = lo == 0 ? n - 1 : lo - 1; k <= m; k++, i = j_next(n, i)) {
+        size_t j = j_next(n, i);
+        at[2 * k] = QC__V2(0.5 * (c->v[i].x + c->v[j].x), 0.5 * (c->v[i].y + c->v[j].y));
+        if (k < m)
+            at[2 * k + 1] = c->v[j];
+    }
+    for (k = 0; k < 2 * m + 1; k++)
+        cover[k] = seam_cover(c, open, b, s, at[k]);
+    for (k = 0, i = lo; k < m; k++, i = j_next(n, i)) {
+        size_t ia = i == 0 ? n - 1 : i - 1, ib = j_next(n, i);
+        double w = 1.0 - dist[k] / reach;
+        qc_vec2 q = k >= before && k < before + count ? to[i] : c->v[i];
+        was[k] = c->v[i];
+        q = QC__V2(q.x - w * mx, q.y - w * my);
+        if (!qc__meander_seg_inside(s, c->v[ia], q, inner) ||
+            !qc__meander_seg_inside(s, q, c->v[ib], inner))
+            break;
+        c->v[i] = q;
+        if (seg_crosses(c, open, b, i, q, ia, i) || seg_crosses(c, open, b, i, q, i, ib)) {
+            c->v[i] = was[k];
+            break;
+        }
+        moved++;
+    }
+    for (k = 0; moved == m && k < 2 * m + 1; k++) /* no seam it covered left bare */
+        if ((cover[k] & ~seam_cover(c, open, b, s, at[k])) != 0)
+            break;
+    if (moved == m && k == 2 * m + 1)
+        return 1;
+    for (k = 0, i = lo; k < moved; k++, i = j_next(n, i)) /* undone */
+        c->v[i] = was[k];
+    return 0;
+}
+
+/* c with the vertices closer than ROUND_CLUMP radii to the one before
+ * dropped (rounding a corner gathers them), then split again at the tight
+ * ones (densify): the rounding keeps room to bend. */
+static int respace(qc_ctx *ctx, qc_points *c, int open, double turn)
+{
+    qc_points dense = {0};
+    size_t i, k = 1, n = c->n;
+    int rc;
+
+    for (i = 1; i < n; i++) {
+        qc_vec2 a = c->v[k - 1], p = c->v[i];
+        if (!(open && i + 1 == n) && qc_hypot(p.x - a.x, p.y - a.y) < ROUND_CLUMP * turn)
+            continue;
+        c->v[k++] = p;
+    }
+    c->n = k;
+    rc = densify(ctx, c, open, turn, &dense);
+    if (rc == QC_OK) {
+        qc_points t = *c;
+        *c = dense;
+        dense = t;
+    }
+    qc_points_free(ctx, &dense);
+    return rc;
+}
+
+/* The per-vertex scratch of the rounding, for n vertices. */
+typedef struct round_buf {
+    unsigned char *tight;
+    qc_vec2 *to, *was;
+    size_t cap;
+} round_buf;
+
+static void round_buf_free(qc_ctx *ctx, round_buf *r)
+{
+    qc__free(ctx, r->tight, r->cap);
+    qc__free(ctx, r->to, r->cap * sizeof *r->to);
+    qc__free(ctx, r->was, r->cap * sizeof *r->was);
+    memset(r, 0, sizeof *r);
+}
+
+static int round_buf_fit(qc_ctx *ctx, round_buf *r, size_t n)
+{
+    if (n <= r->cap)
+        return QC_OK;
+    round_buf_free(ctx, r);
+    r->tight = qc__alloc(ctx, n);
+    r->to = qc__alloc_array(ctx, n, sizeof *r->to);
+    r->was = qc__alloc_array(ctx, n, sizeof *r->was);
+    r->cap = n;
+    return r->tight == NULL || r->to == NULL || r->was == NULL ? QC_ENOMEM : QC_OK;
+}
+
 int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
                       double d)
 {
-    qc_points dense = {0};
-    unsigned char *tight = NULL, *near = NULL;
-    qc_vec2 *to = NULL, *was = NULL;
+    round_buf r;
     size_t pass, i, n;
     double longest = 0.0;
     int rc;
 
     if (c->n < 4 || !(turn > 0.0))
         return QC_OK;
-    rc = qc__meander_wave(ctx, c, open, d, s); /* first: a wave turns gently */
-    if (rc == QC_OK)
-        rc = densify(ctx, c, open, turn, &dense);
-    if (rc < 0) {
-        qc_points_free(ctx, &dense);
-        return rc;
-    }
-    qc_points_free(ctx, c);
-    *c = dense;
-    n = c->n;
-    tight = qc__alloc(ctx, n);
-    near = qc__alloc(ctx, n);
-    to = qc__alloc_array(ctx, n, sizeof *to);
-    was = qc__alloc_array(ctx, n, sizeof *was);
-    if (tight == NULL || near == NULL || to == NULL || was == NULL)
-        rc = QC_ENOMEM;
-    else
-        memset(near, 1, n);
-    for (i = 0; i + (open ? 1 : 0) < n; i++) {
-        qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
-        longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
-    }
+    memset(&r, 0, sizeof r);
+    rc = qc__meander_wave(ctx, c, open, d, WAVE_RUN, s); /* first: a wave turns gently */
     for (pass = 0; pass < ROUND_PASSES && rc == QC_OK; pass++) {
         vbins bins;
         size_t moved = 0, start = 0, seen;
 
-        if (pass > 0) { /* only near what was tight: the rest has not moved */
-            memset(near, 0, n);
-            for (i = 0; i < n; i++)
-                if (tight[i]) {
-                    size_t k;
-                    for (k = 0; k <= 2 * ROUND_NEAR && k < n; k++)
-                        near[(i + n - ROUND_NEAR % n + k) % n] = 1;
-                }
-        }
+        rc = respace(ctx, c, open, turn);
+        n = c->n;
+        if (rc == QC_OK)
+            rc = round_buf_fit(ctx, &r, n);
+        if (rc < 0 || n < 4)
+            break;
+        if (pass == 0)
+            for (i = 0; i + (open ? 1 : 0) < n; i++) {
+                qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
+                longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
+            }
         for (i = 0; i < n; i++) {
-            tight[i] = (unsigned char)(near[i] && turns_tight(c, open, i, turn));
-            if (tight[i]) {
+            r.tight[i] = (unsigned char)turns_tight(c, open, i, turn);
+            if (r.tight[i]) {
                 qc_vec2 a = along(c, open, i, -1, turn), b = along(c, open, i, 1, turn);
                 qc_vec2 p = c->v[i];
-                to[i] = QC__V2(p.x + ROUND_STEP * (0.5 * (a.x + b.x) - p.x),
-                               p.y + ROUND_STEP * (0.5 * (a.y + b.y) - p.y));
+                r.to[i] = QC__V2(p.x + ROUND_STEP * (0.5 * (a.x + b.x) - p.x),
+                                 p.y + ROUND_STEP * (0.5 * (a.y + b.y) - p.y));
             } else {
                 start = i + 1 == n ? 0 : i + 1; /* a run never wraps past here */
             }
@@ -354,15 +549,20 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
         rc = vbins_build(ctx, &bins, c, 2.5 * longest + 1e-9);
         for (seen = 0, i = start; seen < n && rc == QC_OK;) {
             size_t count = 0, j = i;
-            while (seen + count < n && tight[j]) {
+            while (seen + count < n && r.tight[j]) {
                 count++;
                 j = j + 1 == n ? 0 : j + 1;
             }
-            if (count > 0)
-                moved += (size_t)round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, i, count,
-                                            to, was);
-            else
+            if (count > 0) {
+                int ok = round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, i, count,
+                                   r.to, r.was);
+                if (!ok)
+                    ok = round_out(c, open, &bins, s, EASE_CLEAR * d, turn, i, count, r.to,
+                                   r.was);
+                moved += (size_t)ok;
+            } else {
                 j = j + 1 == n ? 0 : j + 1;
+            }
             seen += count > 0 ? count : 1;
             i = j;
         }
@@ -370,12 +570,12 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
         if (moved == 0)
             break;
     }
-    qc__free(ctx, tight, n);
-    qc__free(ctx, near, n);
-    qc__free(ctx, to, n * sizeof *to);
-    qc__free(ctx, was, n * sizeof *was);
+    round_buf_free(ctx, &r);
+    if (rc == QC_OK) /* and what the rounding left straight, or could not wave before */
+        rc = qc__meander_wave(ctx, c, open, d, WAVE_AGAIN, s);
     if (rc == QC_OK) { /* the split points left in line: the corner as it was */
         size_t k = 0;
+        n = c->n;
         for (i = 0; i < n; i++) {
             qc_vec2 a = k > 0 ? c->v[k - 1] : c->v[n - 1], p = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
             double cr = (p.x - a.x) * (b.y - p.y) - (p.y - a.y) * (b.x - p.x);

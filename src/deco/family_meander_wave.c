@@ -2,8 +2,8 @@
  * Waves on the meander's straight runs (issue 17: none longer than 2 d).
  * The evolution lays the curve straight along a seam (drawn onto the
  * clearance contour) and between parallel neighbours. Each run of the
- * polyline longer than WAVE_RUN d that stays within d/20 of its chord (as
- * test_meander measures a straight run) is redrawn as a sine of about
+ * polyline longer than run d (the caller's) that stays within d/20 of its
+ * chord (as test_meander measures a straight run) is redrawn as a sine of about
  * WAVE_LENGTH d and WAVE_SIDE d either side, a whole number of waves so it
  * meets the curve where the run did. Near the boundary its crests towards
  * the seam stop WAVE_INNER d short of it (the troughs, away from the seam,
@@ -16,7 +16,6 @@
 
 #include "family_meander.h"
 
-#define WAVE_RUN 1.5      /* runs longer than this, times d, are waved */
 #define WAVE_TOL 0.05     /* straight: within this of the chord, times d */
 #define WAVE_LENGTH 1.5   /* wavelength, times d (a whole one in any 2 d) */
 #define WAVE_SIDE 0.07    /* amplitude either side, times d */
@@ -118,7 +117,7 @@ static uint32_t next_vertex(const void *ud, uint32_t k)
     return k + 1 == c->n ? 0 : k + 1;
 }
 
-int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sdf *s)
+int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, double run, const qc__sdf *s)
 {
     qc_points out = {0};
     qc__seg_grid g;
@@ -133,7 +132,7 @@ int qc__meander_wave(qc_ctx *ctx, qc_points *c, int open, double d, const qc__sd
     for (i = 0; i < c->n && rc == QC_OK;) {
         int ok = 0;
         j = i + 1 < c->n ? run_end(c, i, WAVE_TOL * d) : i;
-        if (j > i && qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y) > WAVE_RUN * d)
+        if (j > i && qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y) > run * d)
             rc = wave_run(ctx, c, open, &g, s, d, i, j, &out, &ok);
         if (rc == QC_OK && ok) {
             i = j; /* j itself starts what follows */
