@@ -20,7 +20,6 @@
 #include "stitch_internal.h"
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
-#define NOT_JOINT ((size_t)-1)
 
 /* The junction table has a power of two of slots, at least twice the
  * longest piece: probes stay short. */
@@ -64,61 +63,6 @@ void qc__merge_free(qc_ctx *ctx, qc__merge *mg)
     memset(mg, 0, sizeof *mg);
 }
 
-static uint64_t bits_of(double x)
-{
-    uint64_t b;
-
-    x += 0.0; /* -0 and +0 are one place */
-    memcpy(&b, &x, sizeof b);
-    return b;
-}
-
-static size_t place_hash(qc_vec2 p, size_t mask)
-{
-    uint64_t h = bits_of(p.x) * 0x9E3779B97F4A7C15u ^ bits_of(p.y);
-
-    h ^= h >> 29;
-    h *= 0xBF58476D1CE4E5B9u;
-    h ^= h >> 32;
-    return (size_t)h & mask;
-}
-
-/* place[i]: for a junction (v[i] recurs in v[0..n) other than as a repeat
- * of the point just before: a run of equal points is one visit) the least
- * index of its place, else NOT_JOINT. A hash table on the exact
- * coordinates finds each place's first index in one pass (a sort by place
- * was a third of a 10^5-point job); a slot holds (first index + 1) * 2,
- * plus 1 once the place has a second visit. The answer does not depend on
- * the table's order. */
-static void mark_junctions(const qc_vec2 *v, size_t n, uint32_t *table, size_t slots,
-                           size_t *place)
-{
-    size_t i, mask = slots - 1;
-
-    memset(table, 0, slots * sizeof *table);
-    for (i = 0; i < n; i++) {
-        size_t h = place_hash(v[i], mask);
-
-        while (table[h] != 0) {
-            qc_vec2 q = v[table[h] / 2 - 1];
-
-            if (q.x == v[i].x && q.y == v[i].y)
-                break;
-            h = (h + 1) & mask;
-        }
-        if (table[h] == 0)
-            table[h] = (uint32_t)(i + 1) * 2;
-        else if (!(v[i - 1].x == v[i].x && v[i - 1].y == v[i].y))
-            table[h] |= 1u; /* a new visit, not a repeat of the point before */
-        place[i] = h;
-    }
-    for (i = 0; i < n; i++) {
-        size_t e = table[place[i]];
-
-        place[i] = e & 1 ? e / 2 - 1 : NOT_JOINT;
-    }
-}
-
 static double dist(qc_vec2 a, qc_vec2 b)
 {
     return qc_hypot(b.x - a.x, b.y - a.y);
@@ -145,12 +89,12 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
 
     if (n == 0)
         return 0;
-    mark_junctions(v, n, mg->table, mg->slots, mg->place);
+    qc__mark_junctions(v, n, mg->table, mg->slots, mg->place);
     memset(gone, 0, n);
     m[k++] = v[0];
     for (i = 1; i < n; i++) {
-        int last = i + 1 == n, joints = place[i] != NOT_JOINT && place[at] != NOT_JOINT;
-        int here_ok = !last && place[i] == NOT_JOINT, prev_ok = k >= 2 && place[at] == NOT_JOINT;
+        int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
+        int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
         double d = dist(m[k - 1], v[i]), drop_here, drop_prev;
 
         if (d == 0 && !last)

@@ -24,6 +24,14 @@ typedef struct qc__merge {
     size_t cap;
 } qc__merge;
 
+#define QC__NOT_JOINT ((size_t)-1) /* qc__mark_junctions: not a junction */
+
+/* place[i] for the piece v[0..n): for a junction (v[i] recurs in v other
+ * than as a repeat of the point just before: a run of equal points is one
+ * visit) the least index of its place, else QC__NOT_JOINT (junctions.c).
+ * table: slots (a power of two, at least 2n) of scratch. */
+QC__HIDDEN void qc__mark_junctions(const qc_vec2 *v, size_t n, uint32_t *table, size_t slots,
+                                   size_t *place);
 QC__HIDDEN int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest);
 QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
 
