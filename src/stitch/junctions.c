@@ -135,8 +135,10 @@ static int mark_bucketed(const qc_vec2 *v, size_t n, uint32_t *table, size_t slo
     local = start + ncell + 1;
     room = slots - n - ncell - 1;
     memset(start, 0, (ncell + 1) * sizeof *start);
-    for (i = 0; i < n; i++)
-        start[cell_of(&g, v[i]) + 1]++;
+    for (i = 0; i < n; i++) { /* place holds the cells till the scatter */
+        place[i] = cell_of(&g, v[i]);
+        start[place[i] + 1]++;
+    }
     for (c = 0; c < ncell; c++) {
         most = start[c + 1] > most ? start[c + 1] : most;
         start[c + 1] += start[c];
@@ -144,7 +146,7 @@ static int mark_bucketed(const qc_vec2 *v, size_t n, uint32_t *table, size_t slo
     if (2 * most > room)
         return 0;
     for (i = 0; i < n; i++) /* stable: each cell's points in index order */
-        idx[start[cell_of(&g, v[i])]++] = (uint32_t)i;
+        idx[start[place[i]]++] = (uint32_t)i;
     for (c = ncell; c > 0; c--) /* the starts again */
         start[c] = start[c - 1];
     start[0] = 0;
