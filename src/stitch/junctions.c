@@ -39,7 +39,7 @@ static size_t place_hash(qc_vec2 p, size_t mask)
 
 /* Files point i in table (slots mask + 1): its slot, marked as a second
  * visit unless it repeats the point before. */
-static size_t file_point(const qc_vec2 *v, size_t i, uint32_t *table, size_t mask)
+static inline size_t file_point(const qc_vec2 *v, size_t i, uint32_t *table, size_t mask)
 {
     size_t h = place_hash(v[i], mask);
 
