@@ -14,9 +14,12 @@ int qc__write_pat(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
 
     (void)opts;
     for (i = 0; i < plan->n; i++) {
-        int64_t x = qc__mm_to_inch_units(plan->p[i].x, 1000);
-        int64_t y = qc__mm_to_inch_units(plan->p[i].y, 1000);
+        int64_t x, y;
 
+        if (plan->p[i].x >= 0 && plan->p[i].y >= 0)
+            continue; /* rounds to >= 0: converted once, below */
+        x = qc__mm_to_inch_units(plan->p[i].x, 1000);
+        y = qc__mm_to_inch_units(plan->p[i].y, 1000);
         if (x < 0 || y < 0)
             return qc__fail(ctx, QC_ERANGE,
                             "pat: point %lu (%.3f, %.3f) mm is negative; move the "
