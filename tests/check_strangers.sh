@@ -101,7 +101,7 @@ import math
 n = 60000
 p = " ".join("%.3f,%.3f" % (50 + 40 * math.cos(6.2832 * i / n), 50 + 40 * math.sin(6.2832 * i / n)) for i in range(n))
 open("m.svg", "w").write("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\"><polygon points=\"%s\"/></svg>" % p)' &&
-        expect_fail 1 "packing: .* motif copies (up to 60001 points each) make .* over the limit of 4000000" \
+        expect_fail 1 "packing: about .* motif points (.* points at spacing .* mm, motif m.svg of 60001 points) exceed the limit of 4000000" \
             "$QC" generate --family packing --motif m.svg -o p.pat && [ ! -e p.pat ]
 }
 check packing_copies_of_a_huge_motif_are_refused packed_budget

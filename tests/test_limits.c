@@ -4,6 +4,7 @@
  * (the counting allocator's peak stays small), so memory stays linear in
  * what is accepted.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -393,6 +394,62 @@ static void test_packing_budget_should_admit_a_million_point_block(void)
     assert_clean();
 }
 
+/* Packing refuses a motif too detailed for the block from the skeleton's
+ * points and the motif's vertices, before the pebbles are packed: the
+ * refused call allocates nothing (packing the 2,500 pebbles first, as the
+ * exact count after placement needs, allocates their grid and arrays). */
+static void test_packing_should_refuse_a_detailed_motif_before_packing(void)
+{
+    enum { SIDES = 2000, PER_ROW = 50 };
+    static char svg[SIDES * 40 + 128];
+    qc_motif_set set = {0};
+    qc_region r = {0};
+    qc_points pts = {0};
+    qc_order order = {0};
+    qc_skeleton sk;
+    qc_params p;
+    qc_path out = {0};
+    size_t k, at, allocs, peak;
+
+    at = (size_t)sprintf(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\"><polygon points=\"");
+    for (k = 0; k < SIDES; k++) /* a circle of SIDES straight sides */
+        at += (size_t)sprintf(svg + at, "%.4f,%.4f ", 50 + 40 * cos(6.283185307 * k / SIDES),
+                              50 + 40 * sin(6.283185307 * k / SIDES));
+    sprintf(svg + at, "\"/></svg>");
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_motif_from_svg(&ctx, svg, strlen(svg), "ring", &set));
+    TEST_ASSERT_TRUE(set.m[0].path.npt >= SIDES);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "square:500", 1.0, &r));
+    for (k = 0; k < PER_ROW * PER_ROW; k++) { /* a 10 mm lattice, one row after another */
+        qc_vec2 v = {5.0 + 10.0 * (double)(k % PER_ROW), 5.0 + 10.0 * (double)(k / PER_ROW)};
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, &pts, v));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_order_push(&ctx, &order, (uint32_t)k));
+    }
+    TEST_ASSERT_TRUE((double)pts.n * (double)set.m[0].path.npt > QC_PACKED_POINTS_BUDGET(pts.n));
+    memset(&sk, 0, sizeof sk);
+    sk.p = pts.v;
+    sk.n = pts.n;
+    sk.order = order.i;
+    sk.norder = order.n;
+    memset(&p, 0, sizeof p);
+    p.spacing = 10;
+    p.r_seed = 0.7;
+    allocs = ta.allocs;
+    peak = ta.peak_bytes;
+    TEST_ASSERT_EQUAL_INT(QC_ELIMIT, qc_deco_packing(&ctx, &r, &p, &sk, &set, &out, NULL));
+    TEST_ASSERT_EQUAL_size_t(allocs, ta.allocs); /* refused before any work */
+    TEST_ASSERT_EQUAL_size_t(peak, ta.peak_bytes);
+    TEST_ASSERT_EQUAL_size_t(0, out.ncmd);
+    TEST_ASSERT_NULL(strchr(qc_errmsg(&ctx), '\n'));
+    assert_msg_has("spacing 10 mm");
+    assert_msg_has("motif ring");
+    assert_msg_has("exceed the limit of 4000000");
+    qc_points_free(&ctx, &pts);
+    qc_order_free(&ctx, &order);
+    qc_region_free(&ctx, &r);
+    qc_motif_set_free(&ctx, &set);
+    assert_clean();
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -408,5 +465,6 @@ int main(void)
     RUN_TEST(test_shapes_should_cap_size_and_segments);
     RUN_TEST(test_generate_should_use_memory_linear_in_the_points);
     RUN_TEST(test_packing_budget_should_admit_a_million_point_block);
+    RUN_TEST(test_packing_should_refuse_a_detailed_motif_before_packing);
     return UNITY_END();
 }

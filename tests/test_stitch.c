@@ -1,11 +1,13 @@
 /* The stitch plan: merging, splitting, tie-offs, jumps, clipping, estimates. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "quiltc.h"
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
+#include "../src/stitch/stitch_internal.h"
 
 static testalloc ta;
 static qc_ctx ctx;
@@ -444,6 +446,91 @@ static void plan_should_reject_bad_params_and_survive_oom(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* Junctions by a sort, for comparison: the least index of each place
+ * visited again other than as a repeat of the point before. */
+static const qc_vec2 *sort_v;
+
+static int cmp_place(const void *pa, const void *pb)
+{
+    size_t a = *(const size_t *)pa, b = *(const size_t *)pb;
+    qc_vec2 p = sort_v[a], q = sort_v[b];
+
+    if (p.x != q.x)
+        return p.x < q.x ? -1 : 1;
+    if (p.y != q.y)
+        return p.y < q.y ? -1 : 1;
+    return a < b ? -1 : a > b;
+}
+
+static void junctions_by_sort(const qc_vec2 *v, size_t n, size_t *ref, size_t *ord)
+{
+    size_t i, j, k;
+
+    for (i = 0; i < n; i++)
+        ord[i] = i;
+    sort_v = v;
+    qsort(ord, n, sizeof *ord, cmp_place);
+    for (i = 0; i < n; i = j) {
+        int again = 0;
+        for (j = i + 1; j < n && v[ord[j]].x == v[ord[i]].x && v[ord[j]].y == v[ord[i]].y; j++)
+            again |= !(v[ord[j] - 1].x == v[ord[j]].x && v[ord[j] - 1].y == v[ord[j]].y);
+        for (k = i; k < j; k++)
+            ref[ord[k]] = again ? ord[i] : (size_t)QC__NOT_JOINT;
+    }
+}
+
+/* The merge's junction marks (a hash table cut by a grid of cells over
+ * the piece) are those a sort finds, at any piece length: a walk on a
+ * small lattice (revisits, runs of one point, -0 and +0, a far outlier
+ * that stretches the grid, an infinity). */
+static void junctions_should_be_those_a_sort_finds(void)
+{
+    static const size_t sizes[] = {5000, 70000, 300000};
+    size_t z;
+
+    for (z = 0; z < sizeof sizes / sizeof *sizes; z++) {
+        size_t n = sizes[z], i, joints = 0;
+        qc_vec2 *v = malloc(n * sizeof *v);
+        size_t *ref = malloc(n * sizeof *ref), *ord = malloc(n * sizeof *ord);
+        qc__merge mg;
+        qc_rng rng;
+
+        TEST_ASSERT_NOT_NULL(v);
+        TEST_ASSERT_NOT_NULL(ref);
+        TEST_ASSERT_NOT_NULL(ord);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__merge_init(&ctx, &mg, n));
+        qc_rng_seed(&rng, 21 + z);
+        v[0].x = 0.0;
+        v[0].y = 0.0;
+        for (i = 1; i < n; i++) {
+            uint64_t r = qc_rng_below(&rng, 10);
+            v[i] = v[i - 1];
+            if (r < 2) /* a repeat of the point before */
+                continue;
+            v[i].x += r < 6 ? (r < 4 ? 0.5 : -0.5) : 0.0;
+            v[i].y += r >= 6 ? (r < 8 ? 0.5 : -0.5) : 0.0;
+            v[i].x = fabs(v[i].x) > 40.0 ? 0.0 : v[i].x;
+            v[i].y = fabs(v[i].y) > 40.0 ? 0.0 : v[i].y;
+            if (v[i].x == 0.0 && (i & 1))
+                v[i].x = -0.0; /* the same place as +0 */
+        }
+        v[n / 2].x = z == 1 ? 1e6 : 200.0;
+        v[n / 3].y = HUGE_VAL;
+        qc__merge_junctions(&mg, v, n);
+        junctions_by_sort(v, n, ref, ord);
+        for (i = 0; i < n; i++) {
+            TEST_ASSERT_EQUAL_size_t(ref[i], mg.place[i]);
+            joints += mg.place[i] != QC__NOT_JOINT;
+        }
+        TEST_ASSERT_TRUE(joints > n / 2 && joints < n); /* real junctions, and not all */
+        qc__merge_free(&ctx, &mg);
+        free(v);
+        free(ref);
+        free(ord);
+    }
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -458,5 +545,6 @@ int main(void)
     RUN_TEST(plan_should_clip_to_region);
     RUN_TEST(clip_should_keep_exactly_the_inside_length);
     RUN_TEST(plan_should_reject_bad_params_and_survive_oom);
+    RUN_TEST(junctions_should_be_those_a_sort_finds);
     return UNITY_END();
 }

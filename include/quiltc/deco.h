@@ -29,7 +29,8 @@ int qc_deco_pebbling(qc_ctx *ctx, const qc_region *region, const qc_params *para
                      const qc_skeleton *skel, const qc_motif_set *motifs,
                      qc_path *out, qc_stats *stats);
 /* Packing draws a copy of a motif per pebble: the copies may hold at most
- * QC_PACKED_POINTS_BUDGET(n) motif points for n skeleton points, counted once
+ * QC_PACKED_POINTS_BUDGET(n) motif points for n skeleton points, estimated
+ * before the pebbles are packed (n times the smallest motif) and counted once
  * the motifs are chosen, before any is drawn (QC_ELIMIT: a 60,000-vertex
  * motif would take gigabytes). The budget grows with the block, sized from
  * the memory goal of 1 KB per point (issue 21): QC_PACKED_POINTS_PER_POINT

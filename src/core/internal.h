@@ -146,6 +146,27 @@ QC__HIDDEN int qc__uf_union(uint32_t *parent, uint32_t a, uint32_t b);
 
 /* White space in every text format the core reads, without the C locale's
  * isspace: blank, tab, LF, CR, form feed. */
+/* xoshiro256** (rng.c), inline for the samplers' inner loops: qc_rng_u64
+ * and qc_rng_unit are these. */
+static inline uint64_t qc__rng_u64(qc_rng *rng)
+{
+    uint64_t *s = rng->s, x = s[1] * 5, t = s[1] << 17, result;
+
+    result = ((x << 7) | (x >> 57)) * 9;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = (s[3] << 45) | (s[3] >> 19);
+    return result;
+}
+
+static inline double qc__rng_unit(qc_rng *rng)
+{
+    return (double)(qc__rng_u64(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
 static inline int qc__is_space(char c)
 {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';

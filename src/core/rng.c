@@ -9,11 +9,6 @@ static uint64_t splitmix64(uint64_t *x)
     return z ^ (z >> 31);
 }
 
-static uint64_t rotl(uint64_t x, int k)
-{
-    return (x << k) | (x >> (64 - k));
-}
-
 void qc_rng_seed(qc_rng *rng, uint64_t seed)
 {
     int i;
@@ -24,22 +19,12 @@ void qc_rng_seed(qc_rng *rng, uint64_t seed)
 
 uint64_t qc_rng_u64(qc_rng *rng)
 {
-    uint64_t *s = rng->s;
-    uint64_t result = rotl(s[1] * 5, 7) * 9;
-    uint64_t t = s[1] << 17;
-
-    s[2] ^= s[0];
-    s[3] ^= s[1];
-    s[1] ^= s[2];
-    s[0] ^= s[3];
-    s[2] ^= t;
-    s[3] = rotl(s[3], 45);
-    return result;
+    return qc__rng_u64(rng);
 }
 
 double qc_rng_unit(qc_rng *rng)
 {
-    return (double)(qc_rng_u64(rng) >> 11) * (1.0 / 9007199254740992.0);
+    return qc__rng_unit(rng);
 }
 
 uint64_t qc_rng_below(qc_rng *rng, uint64_t n)
@@ -48,7 +33,7 @@ uint64_t qc_rng_below(qc_rng *rng, uint64_t n)
     uint64_t r;
 
     do {
-        r = qc_rng_u64(rng);
+        r = qc__rng_u64(rng);
     } while (limit != 0 && r >= limit);
     return r % n;
 }

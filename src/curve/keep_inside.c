@@ -14,6 +14,7 @@
 #define STEP_MM 0.2    /* sampling along a command */
 #define INSET_MM 0.5   /* route nodes sit this far inside a reflex corner */
 #define MAX_NODES 2000 /* route nodes (reflex corners) considered */
+#define MAX_DISC_CELLS 4.0 /* a safe disc's side, in index cells, at most */
 
 typedef struct kin {
     qc_ctx *ctx;
@@ -97,6 +98,12 @@ static int clear_inside(kin *k, const qc_vec2 *p, size_t n)
         return 0;
     for (r = 64.0 * e; r >= e; r *= 0.125)
         if (!qc__rindex_near(&k->ix, p[0], r + QC__INSIDE_TOL_MM)) {
+            /* as wide as the boundary allows, while a query stays within
+             * MAX_DISC_CELLS index cells: one disc then serves a whole
+             * stretch of small commands (motifs, pebbles) */
+            while (2.0 * r < MAX_DISC_CELLS * k->ix.cell &&
+                   !qc__rindex_near(&k->ix, p[0], 2.0 * r + QC__INSIDE_TOL_MM))
+                r *= 2.0;
             k->safe_c = p[0];
             k->safe_r = r;
             return in_safe(k, p, n);
@@ -109,7 +116,7 @@ static int clear_inside(kin *k, const qc_vec2 *p, size_t n)
  * found anew. Sampling decides wherever none can say. */
 static int known_inside(kin *k, const qc_vec2 *q, size_t n)
 {
-    return in_safe(k, q, n) || hull_inside(k, q, n) || clear_inside(k, q, n);
+    return in_safe(k, q, n) || clear_inside(k, q, n) || hull_inside(k, q, n);
 }
 
 /* The sample count is worked out only where the shortcuts cannot decide

@@ -73,7 +73,7 @@ static double cubic_length(const qc_vec2 c[4], double exact_gap)
 {
     qc_vec2 stack[MEASURE_MAX_DEPTH + 2][4];
     int depth[MEASURE_MAX_DEPTH + 2];
-    int sp = 1, k;
+    int sp = 1, k, rough = 1; /* rough: the top is c, known not smooth */
     double len = 0;
 
     if (smooth_speed(c)) /* most cubics: no stack */
@@ -86,11 +86,12 @@ static double cubic_length(const qc_vec2 c[4], double exact_gap)
         int d = depth[sp - 1];
         double chord, poly;
 
-        if (smooth_speed(q)) {
+        if (!rough && smooth_speed(q)) {
             len += gauss_length(q);
             sp--;
             continue;
         }
+        rough = 0;
         chord = dist(q[0], q[3]);
         poly = dist(q[0], q[1]) + dist(q[1], q[2]) + dist(q[2], q[3]);
         if (poly - chord <= exact_gap || d >= MEASURE_MAX_DEPTH) {

@@ -255,6 +255,38 @@ static int copies_budget(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set 
     return QC_OK;
 }
 
+/* The budget before any pebble is placed: every skeleton point makes about
+ * one pebble or more (1.35-1.45 on the lattices), each drawn with a choosable
+ * motif, so npoints copies of the smallest already over the budget are
+ * refused at once (the exact count follows once the motifs are chosen). */
+static int copies_estimate(qc_ctx *ctx, const qc_motif_set *set, size_t npoints, double d)
+{
+    double budget = QC_PACKED_POINTS_BUDGET(npoints);
+    size_t i, least = 0;
+    const qc_motif *pick = NULL;
+    int closed = 0;
+
+    for (i = 0; i < set->n; i++) /* closed motifs when there are any, as place_motifs */
+        closed |= set->m[i].legs == 0 && set->m[i].path.ncmd >= 2;
+    for (i = 0; i < set->n; i++) {
+        const qc_motif *m = &set->m[i];
+        if (m->path.ncmd < 2 || (closed && m->legs != 0))
+            continue;
+        if (pick == NULL || m->path.npt < least) {
+            pick = m;
+            least = m->path.npt;
+        }
+    }
+    if (pick != NULL && (double)npoints * (double)least > budget)
+        return qc__fail(ctx, QC_ELIMIT,
+                        "packing: about %.0f motif points (%lu points at spacing %g mm, "
+                        "motif %s of %lu points) exceed the limit of %.0f; raise the spacing "
+                        "or use a simpler motif",
+                        (double)npoints * (double)least, (unsigned long)npoints, d, pick->name,
+                        (unsigned long)least, budget);
+    return QC_OK;
+}
+
 /* x in the unit frame of f. */
 static qc_vec2 unmap(const qc__xf *f, qc_vec2 x)
 {
@@ -461,7 +493,9 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
             goto out;
         motifs = &def;
     }
-    rc = qc__pbound_init(ctx, &b, region, d, 4 * skel->n + 4096);
+    rc = copies_estimate(ctx, motifs, skel->n, d);
+    if (rc == QC_OK)
+        rc = qc__pbound_init(ctx, &b, region, d, 4 * skel->n + 4096);
     if (rc == QC_OK)
         rc = qc__pebbles_pack(ctx, region, &b, params, skel, &pb);
     n = pb.n;

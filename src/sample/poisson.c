@@ -51,7 +51,9 @@ static int is_far(const pgrid *g, qc_vec2 p)
         const qc_vec2 *at = g->at + (size_t)cy * g->nx + (size_t)cx;
         long w = (long)g->nx;
         int hit = 0;
-        for (i = 0; i < 9; i++)
+        if (near(g, at[0], p)) /* p's own cell: the likeliest conflict */
+            return 0;
+        for (i = 1; i < 9; i++)
             hit |= near(g, at[off[i][1] * w + off[i][0]], p);
         if (hit)
             return 0;
@@ -90,8 +92,8 @@ static qc_vec2 random_direction(qc_rng *rng)
     double s, k;
 
     do {
-        u.x = 2.0 * qc_rng_unit(rng) - 1.0;
-        u.y = 2.0 * qc_rng_unit(rng) - 1.0;
+        u.x = 2.0 * qc__rng_unit(rng) - 1.0;
+        u.y = 2.0 * qc__rng_unit(rng) - 1.0;
         s = u.x * u.x + u.y * u.y;
     } while (s > 1.0 || s < 1e-6);
     k = 1.0 / sqrt(s);
@@ -111,7 +113,7 @@ static int grow(qc_ctx *ctx, const qc__rindex *ix, pgrid *g, double d, double ma
 
         for (t = 0; t < k && !placed; t++) {
             qc_vec2 u = random_direction(rng), p;
-            double r = d * sqrt(1.0 + 3.0 * qc_rng_unit(rng)); /* area-uniform in [d, 2d) */
+            double r = d * sqrt(1.0 + 3.0 * qc__rng_unit(rng)); /* area-uniform in [d, 2d) */
 
             p.x = c.x + r * u.x;
             p.y = c.y + r * u.y;

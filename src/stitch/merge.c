@@ -20,7 +20,6 @@
 #include "stitch_internal.h"
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
-#define NOT_JOINT UINT32_MAX
 /* The junction table is cut by a grid of cells over the piece's box, each
  * cell's places hashed within its own run of slots (two per point in the
  * cell). A table hashed over all of it misses the cache at every probe: at
@@ -130,12 +129,12 @@ static uint32_t cell_of(const grid *g, qc_vec2 p)
 
 /* place[i]: for a junction (v[i] recurs in v[0..n) other than as a repeat
  * of the point just before: a run of equal points is one visit) the least
- * index of its place, else NOT_JOINT. A hash table on the exact
+ * index of its place, else QC__NOT_JOINT. A hash table on the exact
  * coordinates finds each place's first index in one pass (a sort by place
  * was a third of a 10^5-point job); a slot holds (first index + 1) * 2,
  * plus 1 once the place has a second visit. The answer does not depend on
  * the table's order. */
-static void mark_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
+void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
 {
     uint32_t *table = mg->table, *start = mg->start;
     uint32_t *place = mg->place;
@@ -168,7 +167,7 @@ static void mark_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     for (i = 0; i < n; i++) {
         uint32_t e = table[place[i]];
 
-        place[i] = e & 1 ? e / 2 - 1 : NOT_JOINT;
+        place[i] = e & 1 ? e / 2 - 1 : QC__NOT_JOINT;
     }
 }
 
@@ -204,12 +203,12 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
 
     if (n == 0)
         return 0;
-    mark_junctions(mg, v, n);
+    qc__merge_junctions(mg, v, n);
     memset(gone, 0, n);
     m[k++] = v[0];
     for (i = 1; i < n; i++) {
-        int last = i + 1 == n, joints = place[i] != NOT_JOINT && place[at] != NOT_JOINT;
-        int here_ok = !last && place[i] == NOT_JOINT, prev_ok = k >= 2 && place[at] == NOT_JOINT;
+        int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
+        int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
         double dx = v[i].x - m[k - 1].x, dy = v[i].y - m[k - 1].y, d, drop_here, drop_prev;
 
         d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(m[k - 1], v[i]);

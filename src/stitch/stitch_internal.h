@@ -26,9 +26,18 @@ typedef struct qc__merge {
     size_t cap;
 } qc__merge;
 
+#define QC__NOT_JOINT UINT32_MAX /* qc__merge_junctions: not a junction */
+
 QC__HIDDEN int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest);
 QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
 
+/*
+ * mg->place[i] for the piece v[0..n) (n <= the longest given to init): for
+ * a junction (v[i] recurs in v other than as a repeat of the point just
+ * before: a run of equal points is one visit) the least index of its
+ * place, else QC__NOT_JOINT (merge.c; qc__merge_piece's first step).
+ */
+QC__HIDDEN void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n);
 /*
  * Keeps in mg->m the points of v[0..n) (n <= the longest given to init)
  * that a plan sews, returning how many: steps shorter than min_seg merged
