@@ -47,6 +47,9 @@
 #define LOCAL_PAD 0.65  /* ... out to this beyond the disc, times d */
 #define LOCAL_NEAR 0.15 /* the near search's reach beyond the widest so far, times d */
 #define TURN_MIN 0.2 /* a bump makes no vertex turn tighter than this, times d */
+#define TURN_SEAM 0.25 /* (at a seam's mouth, where the rounding has run: this) */
+#define MOUTH 0.7 /* the mouths on the seams closed in: wider than this, times d
+                   * (narrower ones, drawn in, hook at the seam) */
 #define TURN_ARC 0.25 /* ... measured through the points this far along, times d, */
 #define STRAIGHT 2.0  /* ... nor run straight for longer than this, times d ... */
 #define STRAIGHT_SPAN 8 /* ... judged this many vertices either side */
@@ -64,6 +67,7 @@ typedef struct holes {
     uint32_t *undo;  /* the vertices one bump moved ... */
     qc_vec2 *was;    /* ... and where they were */
     size_t nundo;
+    double turn_min; /* the disc at hand's TURN_MIN or TURN_SEAM, times d */
 } holes;
 
 static uint32_t next_seg(const void *ud, uint32_t k)
@@ -153,6 +157,7 @@ static size_t climb(const holes *h, qc_vec2 *q, double step, double guess, doubl
 typedef struct peak {
     float f;
     uint32_t at;
+    int seam; /* a channel's mouth: a neighbour lies outside the region */
 } peak;
 
 static int cmp_peak(const void *pa, const void *pb)
@@ -366,7 +371,7 @@ static int turns_tighter(holes *h, qc_points *c)
     double now = tightest(h, c), before, run = straightest(h, c), run_was;
     size_t k;
 
-    if (!(now < TURN_MIN * h->d) && !(run > STRAIGHT * h->d))
+    if (!(now < h->turn_min * h->d) && !(run > STRAIGHT * h->d))
         return 0;
     for (k = 0; k < h->nundo; k++) { /* swap: as it was */
         qc_vec2 t = c->v[h->undo[k]];
@@ -380,7 +385,7 @@ static int turns_tighter(holes *h, qc_points *c)
         c->v[h->undo[k]] = h->was[k];
         h->was[k] = t;
     }
-    return (now < TURN_MIN * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
+    return (now < h->turn_min * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
 }
 
 /* Puts back what the last bump moved. */
@@ -552,8 +557,10 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
 }
 
 /* One pass: *worst receives the widest disc's exact radius (the greatest
- * of the raster's first peaks, climbed); with act, the discs wider than
- * the goal and than *worst less TIER are closed in (*moved: how many). */
+ * of the raster's first peaks, climbed) inside; with act, the discs wider
+ * than the goal and than *worst less TIER are closed in (*moved: how many),
+ * and the mouths on the seams wider than MOUTH and than the widest mouth
+ * less TIER. */
 static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, int act,
                 double *worst, size_t *moved)
 {
@@ -561,7 +568,7 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
     unsigned char *mask = NULL;
     peak *pk = NULL;
     size_t np = 0, pcap = 0, cells, i, k, ns = h->open ? c->n - 1 : c->n;
-    double floor2, goal;
+    double floor2, goal[2], widest[2] = {0.0, 0.0}, first[2] = {HUGE_VAL, HUGE_VAL};
     int rc;
 
     *moved = 0;
@@ -579,19 +586,23 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
     for (i = 0; rc == QC_OK && i < cells; i++) { /* the peaks: no neighbour greater */
         size_t x = i % g.nx, y = i / g.nx;
         int top = mask[i] && (double)g.f[i] > floor2 && g.f[i] < (float)QC__GAP_FAR;
+        int seam = 0;
         for (k = 0; k < 9 && top; k++) {
             long xx = (long)x + (long)(k % 3) - 1, yy = (long)y + (long)(k / 3) - 1;
             size_t at;
             if (k == 4 || xx < 0 || yy < 0 || xx >= (long)g.nx || yy >= (long)g.ny)
                 continue;
             at = (size_t)yy * g.nx + (size_t)xx;
-            top = g.f[at] < g.f[i] || (g.f[at] == g.f[i] && at > i);
+            /* outside cells are far from the curve, never a peak's rival */
+            seam |= !mask[at];
+            top = !mask[at] || g.f[at] < g.f[i] || (g.f[at] == g.f[i] && at > i);
         }
         if (top) {
             rc = QC__RESERVE(ctx, pk, pcap, np + 1);
             if (rc < 0)
                 break;
             pk[np].f = g.f[i];
+            pk[np].seam = seam;
             pk[np++].at = (uint32_t)i;
         }
     }
@@ -607,28 +618,38 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
     }
     if (rc == QC_OK && np > 0)
         rc = qc__seg_grid_build(ctx, &h->sg, c->v, ns, next_seg, c, h->d, 4.0);
-    /* the raster errs by up to a cell: every peak within two of the greatest */
-    for (k = 0; rc == QC_OK && k < np &&
-                sqrt((double)pk[k].f) >= sqrt((double)pk[0].f) - 1.0; k++) {
+    /* the raster errs by up to a cell: every peak within two of the greatest;
+     * the mouths on the seams are a tier of their own, so that a wide one
+     * does not hold back the holes inside (nor they it) */
+    for (k = 0; rc == QC_OK && k < np; k++) {
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
         double R;
+        int t = pk[k].seam;
+        if (first[t] == HUGE_VAL)
+            first[t] = sqrt((double)pk[k].f);
+        if (sqrt((double)pk[k].f) < first[t] - 1.0)
+            continue;
         (void)climb(h, &q, g.h, sqrt((double)pk[k].f) * g.h, &R);
         if (R < HUGE_VAL)
-            *worst = fmax(*worst, R);
+            widest[t] = fmax(widest[t], R);
     }
-    goal = fmax(GOAL * h->d, *worst - TIER * h->d);
+    *worst = widest[0]; /* the holes inside judge the pass */
+    goal[0] = fmax(GOAL * h->d, widest[0] - TIER * h->d);
+    goal[1] = fmax(MOUTH * h->d, widest[1] - TIER * h->d);
     for (k = 0; rc == QC_OK && act && k < np; k++) {
         qc_vec2 q = qc__gap_grid_centre(&g, pk[k].at);
         double R;
 
-        if (sqrt((double)pk[k].f) * g.h < goal - g.h)
-            break; /* (sorted) no climb from here reaches the goal */
+        if (sqrt((double)pk[k].f) * g.h < fmin(goal[0], goal[1]) - g.h)
+            break; /* (sorted) no climb from here reaches a goal */
         if (mask[pk[k].at] & 2)
             continue;
         (void)climb(h, &q, g.h, sqrt((double)pk[k].f) * g.h, &R);
-        if (!(R > goal) || R == HUGE_VAL)
+        if (!(R > goal[pk[k].seam]) || R == HUGE_VAL)
             continue;
-        if (!try_bumps(h, c, q, R)) { /* else drawn in all round, judged the same way */
+        h->turn_min = pk[k].seam ? TURN_SEAM : TURN_MIN;
+        /* a mouth is drawn in all round (its bumps hook at the seam) */
+        if (pk[k].seam || !try_bumps(h, c, q, R)) { /* else drawn in, judged the same way */
             double before = local_far(h, q, R + LOCAL_PAD * h->d, HUGE_VAL);
             h->nundo = 0;
             close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d), (uint32_t)k);
