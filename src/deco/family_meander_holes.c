@@ -47,7 +47,6 @@
 #define LOCAL_PAD 0.65  /* ... out to this beyond the disc, times d */
 #define LOCAL_NEAR 0.15 /* the near search's reach beyond the widest so far, times d */
 #define TURN_MIN 0.2 /* a bump makes no vertex turn tighter than this, times d */
-#define TURN_SEAM 0.25 /* (at a seam's mouth, where the rounding has run: this) */
 #define MOUTH 0.7 /* the mouths on the seams closed in: wider than this, times d
                    * (narrower ones, drawn in, hook at the seam) */
 #define TURN_ARC 0.25 /* ... measured through the points this far along, times d, */
@@ -67,7 +66,6 @@ typedef struct holes {
     uint32_t *undo;  /* the vertices one bump moved ... */
     qc_vec2 *was;    /* ... and where they were */
     size_t nundo;
-    double turn_min; /* the disc at hand's TURN_MIN or TURN_SEAM, times d */
 } holes;
 
 static uint32_t next_seg(const void *ud, uint32_t k)
@@ -371,7 +369,7 @@ static int turns_tighter(holes *h, qc_points *c)
     double now = tightest(h, c), before, run = straightest(h, c), run_was;
     size_t k;
 
-    if (!(now < h->turn_min * h->d) && !(run > STRAIGHT * h->d))
+    if (!(now < TURN_MIN * h->d) && !(run > STRAIGHT * h->d))
         return 0;
     for (k = 0; k < h->nundo; k++) { /* swap: as it was */
         qc_vec2 t = c->v[h->undo[k]];
@@ -385,7 +383,7 @@ static int turns_tighter(holes *h, qc_points *c)
         c->v[h->undo[k]] = h->was[k];
         h->was[k] = t;
     }
-    return (now < h->turn_min * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
+    return (now < TURN_MIN * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
 }
 
 /* Puts back what the last bump moved. */
@@ -647,7 +645,6 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
         (void)climb(h, &q, g.h, sqrt((double)pk[k].f) * g.h, &R);
         if (!(R > goal[pk[k].seam]) || R == HUGE_VAL)
             continue;
-        h->turn_min = pk[k].seam ? TURN_SEAM : TURN_MIN;
         /* a mouth is drawn in all round (its bumps hook at the seam) */
         if (pk[k].seam || !try_bumps(h, c, q, R)) { /* else drawn in, judged the same way */
             double before = local_far(h, q, R + LOCAL_PAD * h->d, HUGE_VAL);
