@@ -181,6 +181,25 @@ static int cmp_hole(const void *pa, const void *pb) /* farthest first */
     return (a->at > b->at) - (a->at < b->at);
 }
 
+/* The first hole cell (mask 1; the rest are 0) from k on, or cells: memchr
+ * skips the bare raster far faster than a loop over its cells. */
+static size_t next_hole(const unsigned char *mask, size_t k, size_t cells)
+{
+    const unsigned char *at = k < cells ? memchr(mask + k, 1, cells - k) : NULL;
+
+    return at != NULL ? (size_t)(at - mask) : cells;
+}
+
+/* The number of hole cells, counted only up to most + 1. */
+static size_t count_holes(const unsigned char *mask, size_t cells, size_t most)
+{
+    size_t n = 0, k;
+
+    for (k = next_hole(mask, 0, cells); k < cells && n <= most; k = next_hole(mask, k + 1, cells))
+        n++;
+    return n;
+}
+
 /* The distances of the few hole cells (mask set) by looking round each
  * among the seeds, in buckets about twice the gap wide: no raster of
  * distances. Those beyond lim go to hs (room for nh), their count to *nout. */
@@ -191,15 +210,14 @@ static int few_holes(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
     seed_buckets sb;
 
     QC__TRY(seed_buckets_build(ctx, g, pts, 2 * (long)ceil(sqrt(lim)) + 1, &sb));
-    for (k = 0; k < cells; k++)
-        if (mask[k] & 1) {
-            float f = (float)seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
-            if ((double)f > lim) {
-                hs[n].f = f;
-                hs[n].at = (uint32_t)k;
-                n++;
-            }
+    for (k = next_hole(mask, 0, cells); k < cells; k = next_hole(mask, k + 1, cells)) {
+        float f = (float)seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
+        if ((double)f > lim) {
+            hs[n].f = f;
+            hs[n].at = (uint32_t)k;
+            n++;
         }
+    }
     seed_buckets_free(ctx, &sb);
     *nout = n;
     return QC_OK;
@@ -272,8 +290,7 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         rc = stamp_seeds(ctx, &g, out, mask, lim);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        nh += mask[k];
+    nh = count_holes(mask, cells, cells / 64);
     if (nh > cells / 64) { /* many holes: their distances by one transform */
         rc = many_holes(ctx, &g, out, mask, lim, &hs, &cap, &nh);
     } else {
