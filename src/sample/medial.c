@@ -41,7 +41,7 @@ static int cmp_ridge(const void *pa, const void *pb)
 /* Whether the cells at offsets -o and +o of c are both inside, and c is no
  * lower than either and strictly above one (the heights compared first:
  * most cells are on a slope; floats compare as the doubles they widen to). */
-static int ridge_across(const float *f, const unsigned char *mask, size_t c, size_t o)
+static inline int ridge_across(const float *f, const unsigned char *mask, size_t c, size_t o)
 {
     float v = f[c], a = f[c + o], b = f[c - o];
 
