@@ -7,6 +7,7 @@
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
+#include "../sample/sample_internal.h"
 
 static testalloc ta;
 static qc_ctx ctx;
@@ -158,6 +159,51 @@ static void test_poisson_is_spaced_and_maximal_in_every_part(void)
     qc_region_free(&ctx, &r);
 }
 
+/* The holes pass leaves no place well inside farther than the gap from
+ * every point (give or take its d / 8 raster): after a sparse start (many
+ * holes: one transform of the raster) and after a Poisson fill (a few:
+ * each hole cell's nearest point looked up among the points round it). */
+static void test_fill_holes_leaves_no_place_beyond_the_gap(void)
+{
+    static const char *const shapes[2] = {"holed", "heart:150"};
+    const double d = 8.0, margin = 1.0, gap = 0.95 * d, h = d / 8.0;
+    int s, sparse;
+
+    for (s = 0; s < 2; s++)
+        for (sparse = 0; sparse < 2; sparse++) {
+            qc_region r;
+            qc_points pts = {0};
+            qc_sample_params sp = params(QC_SAMPLE_POISSON, sparse ? 5.0 * d : d, margin);
+            qc_bbox box;
+            size_t n0, i;
+            double x, y;
+
+            if (s == 0)
+                holed_square(&r);
+            else
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, shapes[s], 1.0, &r));
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_sample(&ctx, &r, &sp, &pts));
+            n0 = pts.n;
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__sample_fill_holes(&ctx, &r, d, margin, gap, &pts));
+            TEST_ASSERT_GREATER_THAN_UINT((unsigned)n0, (unsigned)pts.n); /* Bridson leaves some */
+            assert_admissible(&r, &pts, margin);
+            box = qc_region_bbox(&r);
+            for (y = box.min.y + 0.3; y < box.max.y; y += d / 3.0)
+                for (x = box.min.x + 0.2; x < box.max.x; x += d / 3.0) {
+                    double best = 1e9;
+                    qc_vec2 q = v2(x, y);
+                    if (!qc_region_contains(&r, q) ||
+                        qc_region_boundary_distance(&r, q) < margin + h)
+                        continue;
+                    for (i = 0; i < pts.n; i++)
+                        best = fmin(best, hypot(pts.v[i].x - x, pts.v[i].y - y));
+                    TEST_ASSERT_LESS_THAN_DOUBLE(gap + 1.5 * h, best);
+                }
+            qc_points_free(&ctx, &pts);
+            qc_region_free(&ctx, &r);
+        }
+}
+
 static void test_same_seed_same_points_other_seed_other_points(void)
 {
     qc_region r;
@@ -254,6 +300,7 @@ int main(void)
     RUN_TEST(test_tessellations_have_their_neighbourhoods);
     RUN_TEST(test_samples_avoid_holes_and_keep_the_margin);
     RUN_TEST(test_poisson_is_spaced_and_maximal_in_every_part);
+    RUN_TEST(test_fill_holes_leaves_no_place_beyond_the_gap);
     RUN_TEST(test_same_seed_same_points_other_seed_other_points);
     RUN_TEST(test_bad_requests_are_refused_before_allocating);
     RUN_TEST(test_margin_wider_than_region_gives_no_points);

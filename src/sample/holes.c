@@ -15,7 +15,6 @@
 #include "../measure/measure_internal.h"
 
 #define CELLS_PER_D 8.0 /* raster: d / 8 */
-#define SEED 2          /* mask bit: a point's cell (few holes only) */
 
 typedef struct hole {
     float f; /* squared distance to the nearest point, cells */
@@ -82,26 +81,94 @@ static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
     return QC_OK;
 }
 
-/* Cell (i, j)'s squared distance to the nearest seed (a cell of mask with
- * SEED set), cells, looking in square rings outward until no nearer seed
- * can lie beyond (the value a distance transform gives it: integers, exact). */
-static double seed_dist2(const qc__gap_grid *g, const unsigned char *mask, long i, long j)
+/* The seeds (the cells of the points) filed in square buckets of b cells,
+ * so a hole cell's nearest seed is looked for among the few seeds round it
+ * rather than cell by cell. */
+typedef struct seed_buckets {
+    long b, bx, by;
+    uint32_t *start; /* bucket q's seeds: xy[2 * start[q] .. 2 * start[q + 1]) */
+    long *xy;        /* the seeds' cells, column and row */
+    size_t n;
+} seed_buckets;
+
+static void seed_buckets_free(qc_ctx *ctx, seed_buckets *sb)
 {
-    long nx = (long)g->nx, ny = (long)g->ny, r, x, y;
+    qc__free(ctx, sb->start, ((size_t)(sb->bx * sb->by) + 1) * sizeof *sb->start);
+    qc__free(ctx, sb->xy, 2 * (sb->n ? sb->n : 1) * sizeof *sb->xy);
+}
+
+static int seed_buckets_build(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts, long b,
+                              seed_buckets *sb)
+{
+    size_t k, nb;
+
+    sb->b = b;
+    sb->bx = ((long)g->nx + b - 1) / b;
+    sb->by = ((long)g->ny + b - 1) / b;
+    sb->n = pts->n;
+    nb = (size_t)(sb->bx * sb->by);
+    sb->start = qc__alloc_array(ctx, nb + 1, sizeof *sb->start);
+    sb->xy = qc__alloc_array(ctx, 2 * (sb->n ? sb->n : 1), sizeof *sb->xy);
+    if (sb->start == NULL || sb->xy == NULL) {
+        seed_buckets_free(ctx, sb);
+        return QC_ENOMEM;
+    }
+    memset(sb->start, 0, (nb + 1) * sizeof *sb->start);
+    for (k = 0; k < pts->n; k++) { /* counted, */
+        size_t c = seed_cell(g, pts->v[k]);
+        if (c != SIZE_MAX)
+            sb->start[(long)(c / g->nx) / b * sb->bx + (long)(c % g->nx) / b + 1]++;
+    }
+    for (k = 0; k < nb; k++) /* summed, */
+        sb->start[k + 1] += sb->start[k];
+    for (k = 0; k < pts->n; k++) { /* filed (start[q] runs one bucket ahead meanwhile) */
+        size_t c = seed_cell(g, pts->v[k]);
+        long x, y;
+        uint32_t at;
+        if (c == SIZE_MAX)
+            continue;
+        x = (long)(c % g->nx);
+        y = (long)(c / g->nx);
+        at = sb->start[y / b * sb->bx + x / b]++;
+        sb->xy[2 * at] = x;
+        sb->xy[2 * at + 1] = y;
+    }
+    for (k = nb; k > 0; k--)
+        sb->start[k] = sb->start[k - 1];
+    sb->start[0] = 0;
+    return QC_OK;
+}
+
+/* Cell (i, j)'s squared distance to the nearest seed, cells, looking in
+ * square rings of buckets outward until no nearer seed can lie beyond (a
+ * seed outside rings 0..R lies more than R b cells away): the value a
+ * distance transform gives it (integers, exact). */
+static double seed_dist2(const seed_buckets *sb, long i, long j)
+{
+    long bi = i / sb->b, bj = j / sb->b, r, x, y;
     double best = (double)(float)QC__GAP_FAR;
 
-    for (r = 0; (double)r * (double)r < best && (r <= nx || r <= ny); r++)
-        for (y = j - r; y <= j + r; y++) {
-            long step = (y == j - r || y == j + r) ? 1 : 2 * r;
-            if (y < 0 || y >= ny)
+    for (r = 0; r <= sb->bx || r <= sb->by; r++) {
+        double reach = (double)((r - 1) * sb->b);
+        if (r > 0 && reach * reach >= best)
+            break;
+        for (y = bj - r; y <= bj + r; y++) {
+            long step = (y == bj - r || y == bj + r) ? 1 : 2 * r;
+            if (y < 0 || y >= sb->by)
                 continue;
-            for (x = i - r; x <= i + r; x += step > 0 ? step : 1)
-                if (x >= 0 && x < nx && (mask[y * nx + x] & SEED)) {
-                    double d2 = (double)(x - i) * (double)(x - i) +
-                                (double)(y - j) * (double)(y - j);
+            for (x = bi - r; x <= bi + r; x += step > 0 ? step : 1) {
+                uint32_t s, e;
+                if (x < 0 || x >= sb->bx)
+                    continue;
+                for (s = sb->start[y * sb->bx + x], e = sb->start[y * sb->bx + x + 1]; s < e;
+                     s++) {
+                    double dx = (double)(sb->xy[2 * s] - i), dy = (double)(sb->xy[2 * s + 1] - j);
+                    double d2 = dx * dx + dy * dy;
                     best = d2 < best ? d2 : best;
                 }
+            }
         }
+    }
     return best;
 }
 
@@ -114,29 +181,46 @@ static int cmp_hole(const void *pa, const void *pb) /* farthest first */
     return (a->at > b->at) - (a->at < b->at);
 }
 
-/* The distances of the few hole cells (mask set) by looking round each,
- * the seeds marked in mask: no raster of distances. Those beyond lim go to
- * hs (room for nh), their count to *nout. */
-static void few_holes(const qc__gap_grid *g, const qc_points *pts, unsigned char *mask,
-                      double lim, hole *hs, size_t *nout)
+/* The first hole cell (mask 1; the rest are 0) from k on, or cells: memchr
+ * skips the bare raster far faster than a loop over its cells. */
+static size_t next_hole(const unsigned char *mask, size_t k, size_t cells)
+{
+    const unsigned char *at = k < cells ? memchr(mask + k, 1, cells - k) : NULL;
+
+    return at != NULL ? (size_t)(at - mask) : cells;
+}
+
+/* The number of hole cells, counted only up to most + 1. */
+static size_t count_holes(const unsigned char *mask, size_t cells, size_t most)
+{
+    size_t n = 0, k;
+
+    for (k = next_hole(mask, 0, cells); k < cells && n <= most; k = next_hole(mask, k + 1, cells))
+        n++;
+    return n;
+}
+
+/* The distances of the few hole cells (mask set) by looking round each
+ * among the seeds, in buckets about twice the gap wide: no raster of
+ * distances. Those beyond lim go to hs (room for nh), their count to *nout. */
+static int few_holes(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
+                     const unsigned char *mask, double lim, hole *hs, size_t *nout)
 {
     size_t k, n = 0, cells = g->nx * g->ny;
+    seed_buckets sb;
 
-    for (k = 0; k < pts->n; k++) {
-        size_t c = seed_cell(g, pts->v[k]);
-        if (c != SIZE_MAX)
-            mask[c] |= SEED; /* its own disk cleared the hole bit */
-    }
-    for (k = 0; k < cells; k++)
-        if (mask[k] & 1) {
-            float f = (float)seed_dist2(g, mask, (long)(k % g->nx), (long)(k / g->nx));
-            if ((double)f > lim) {
-                hs[n].f = f;
-                hs[n].at = (uint32_t)k;
-                n++;
-            }
+    QC__TRY(seed_buckets_build(ctx, g, pts, 2 * (long)ceil(sqrt(lim)) + 1, &sb));
+    for (k = next_hole(mask, 0, cells); k < cells; k = next_hole(mask, k + 1, cells)) {
+        float f = (float)seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
+        if ((double)f > lim) {
+            hs[n].f = f;
+            hs[n].at = (uint32_t)k;
+            n++;
         }
+    }
+    seed_buckets_free(ctx, &sb);
     *nout = n;
+    return QC_OK;
 }
 
 /* The distances of many hole cells by one transform of a raster seeded at
@@ -206,8 +290,7 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         rc = stamp_seeds(ctx, &g, out, mask, lim);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++)
-        nh += mask[k];
+    nh = count_holes(mask, cells, cells / 64);
     if (nh > cells / 64) { /* many holes: their distances by one transform */
         rc = many_holes(ctx, &g, out, mask, lim, &hs, &cap, &nh);
     } else {
@@ -216,7 +299,7 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
         if (hs == NULL)
             rc = QC_ENOMEM;
         else
-            few_holes(&g, out, mask, lim, hs, &nh);
+            rc = few_holes(ctx, &g, out, mask, lim, hs, &nh);
     }
     if (rc < 0 || nh == 0)
         goto out;

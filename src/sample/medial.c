@@ -39,16 +39,13 @@ static int cmp_ridge(const void *pa, const void *pb)
 }
 
 /* Whether the cells at offsets -o and +o of c are both inside, and c is no
- * lower than either and strictly above one. */
-static int ridge_across(const float *f, const unsigned char *mask, size_t c, size_t o)
+ * lower than either and strictly above one (the heights compared first:
+ * most cells are on a slope; floats compare as the doubles they widen to). */
+static inline int ridge_across(const float *f, const unsigned char *mask, size_t c, size_t o)
 {
-    double v = (double)f[c], a, b;
+    float v = f[c], a = f[c + o], b = f[c - o];
 
-    if (!mask[c + o] || !mask[c - o])
-        return 0;
-    a = (double)f[c + o];
-    b = (double)f[c - o];
-    return v >= a && v >= b && (v > a || v > b);
+    return v >= a && v >= b && (v > a || v > b) && mask[c + o] && mask[c - o];
 }
 
 /* Whether cell k is a ridge: no lower than both neighbours across it in
@@ -159,7 +156,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     qc__near_grid ng;
     unsigned char *mask = NULL;
     ridge *rg = NULL;
-    size_t cells, k, nr = 0, i;
+    size_t cells, k, nr = 0, i, j;
     qc_bbox box = qc_region_bbox(region);
     int rc, have_ix = 0;
 
@@ -173,11 +170,12 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     rc = qc__gap_transform(ctx, &g);
     if (rc < 0)
         goto out;
-    for (k = 0; k < cells; k++) /* ridges marked in the mask (2), tested once */
-        if (mask[k] && is_ridge(&g, mask, k % g.nx, k / g.nx)) {
-            mask[k] |= 2;
-            nr++;
-        }
+    for (j = 0; j < g.ny; j++) /* ridges marked in the mask (2), tested once */
+        for (i = 0, k = j * g.nx; i < g.nx; i++, k++)
+            if (mask[k] && is_ridge(&g, mask, i, j)) {
+                mask[k] |= 2;
+                nr++;
+            }
     rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
     if (rg == NULL) {
         rc = QC_ENOMEM;

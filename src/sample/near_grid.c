@@ -43,15 +43,18 @@ void qc__near_grid_free(qc_ctx *ctx, qc__near_grid *g)
     memset(g, 0, sizeof *g);
 }
 
+/* Cell coordinate floor(f) clamped to [0, n): truncation is floor from 1 up
+ * (no libm call on the query path). */
+static size_t clamp_cell(double f, size_t n)
+{
+    return f >= 1.0 ? (f < (double)n ? (size_t)f : n - 1) : 0;
+}
+
 /* The cell of p, clamped to the grid (points outside the box go to its rim). */
 static size_t cell_of(const qc__near_grid *g, qc_vec2 p, size_t *cx, size_t *cy)
 {
-    double fx = floor((p.x - g->x0) / g->cell), fy = floor((p.y - g->y0) / g->cell);
-
-    fx = fx < 0 ? 0 : (fx > (double)(g->gx - 1) ? (double)(g->gx - 1) : fx);
-    fy = fy < 0 ? 0 : (fy > (double)(g->gy - 1) ? (double)(g->gy - 1) : fy);
-    *cx = (size_t)fx;
-    *cy = (size_t)fy;
+    *cx = clamp_cell((p.x - g->x0) / g->cell, g->gx);
+    *cy = clamp_cell((p.y - g->y0) / g->cell, g->gy);
     return *cy * g->gx + *cx;
 }
 
