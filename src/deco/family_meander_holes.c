@@ -24,7 +24,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "family_meander.h"
+#include "family_meander_holes.h"
 #include "../measure/measure_internal.h"
 
 #define RES (1.0 / 8.0) /* the distance raster's cells, times d */
@@ -41,42 +41,20 @@
                            * 0.4 in, whose middle settles during the growth) are
                            * left as grown, each pass being global */
 #define BUMP_W 0.6   /* a bump spans this arc either side of its contact, times d */
-#define BUMP_MAX 0.25 /* and rises by at most this, times d */
 #define CONTACT 0.1  /* vertices this near the disc's rim touch it, times d */
 #define LOCAL_RES 0.125 /* the lattice judging a bump, times d ... */
 #define LOCAL_PAD 0.65  /* ... out to this beyond the disc, times d */
 #define LOCAL_NEAR 0.15 /* the near search's reach beyond the widest so far, times d */
-#define TURN_MIN 0.2 /* a bump makes no vertex turn tighter than this, times d */
 #define MOUTH 0.7 /* the mouths on the seams closed in: wider than this, times d
                    * (narrower ones, drawn in, hook at the seam) */
-#define TURN_ARC 0.25 /* ... measured through the points this far along, times d, */
-#define STRAIGHT 2.0  /* ... nor run straight for longer than this, times d ... */
-#define STRAIGHT_SPAN 8 /* ... judged this many vertices either side */
 #define TIER 0.04       /* a pass closes the discs within this of the widest, times d */
 #define GAIN 0.003      /* a move is kept if the widest gap round it shrank by this,
                          * a pass unless the widest disc grew by this, times d */
 
-typedef struct holes {
-    const qc_points *c;
-    int open;
-    double d;
-    const qc__sdf *s;
-    qc__seg_grid sg;
-    uint32_t *stamp; /* per vertex: the last disc that moved it, + 1 */
-    uint32_t *undo;  /* the vertices one bump moved ... */
-    qc_vec2 *was;    /* ... and where they were */
-    size_t nundo;
-} holes;
-
-static uint32_t next_seg(const void *ud, uint32_t k)
-{
-    const qc_points *c = ud;
-    return k + 1 == c->n ? 0 : k + 1;
-}
 
 /* The segment of c nearest q (its first vertex), searching the cells round
  * q out to reach; *dist its distance (HUGE_VAL: none within reach). */
-static size_t nearest(const holes *h, qc_vec2 q, double reach, double *dist)
+static size_t nearest(const qc__holes *h, qc_vec2 q, double reach, double *dist)
 {
     size_t cells[4], x, y, k, best = 0, ns = h->open ? h->c->n - 1 : h->c->n;
     double b2 = HUGE_VAL;
@@ -90,7 +68,7 @@ static size_t nearest(const holes *h, qc_vec2 q, double reach, double *dist)
                 double e;
                 if (i >= ns)
                     continue;
-                e = qc__seg_dist2(q, h->c->v[i], h->c->v[next_seg(h->c, (uint32_t)i)]);
+                e = qc__seg_dist2(q, h->c->v[i], h->c->v[qc__holes_next(h->c, (uint32_t)i)]);
                 if (e < b2 || (e == b2 && i < best)) {
                     b2 = e;
                     best = i;
@@ -101,7 +79,7 @@ static size_t nearest(const holes *h, qc_vec2 q, double reach, double *dist)
 }
 
 /* Whether a segment of c lies within r of q (the first found will do). */
-static int near_any(const holes *h, qc_vec2 q, double r)
+static int near_any(const qc__holes *h, qc_vec2 q, double r)
 {
     size_t cells[4], x, y, k, ns = h->open ? h->c->n - 1 : h->c->n;
     double r2 = r * r;
@@ -112,7 +90,7 @@ static int near_any(const holes *h, qc_vec2 q, double r)
             for (k = h->sg.start[y * h->sg.gx + x]; k < h->sg.start[y * h->sg.gx + x + 1]; k++) {
                 size_t i = h->sg.seg[k];
                 if (i < ns &&
-                    qc__seg_dist2(q, h->c->v[i], h->c->v[next_seg(h->c, (uint32_t)i)]) <= r2)
+                    qc__seg_dist2(q, h->c->v[i], h->c->v[qc__holes_next(h->c, (uint32_t)i)]) <= r2)
                     return 1;
             }
     return 0;
@@ -121,7 +99,7 @@ static int near_any(const holes *h, qc_vec2 q, double r)
 /* The disc at *q grown: *q moved (8 directions, steps from h down to
  * h/4) while its exact distance to the curve grows; returns the nearest
  * segment, *R the distance (the raster's peak is a cell off). */
-static size_t climb(const holes *h, qc_vec2 *q, double step, double guess, double *R)
+static size_t climb(const qc__holes *h, qc_vec2 *q, double step, double guess, double *R)
 {
     /* the raster's guess is a cell or so off: a search a little beyond
      * it, exact if it finds a segment within its reach */
@@ -217,7 +195,7 @@ static double behind(const qc__gap_grid *g, const unsigned char *mask, qc_vec2 p
  * point whose nearest segment in a small search is no further than the
  * widest so far cannot raise it; the others are searched in full, far
  * enough for the segments moves have carried out of their cells. */
-static double local_far(const holes *h, qc_vec2 q, double half, double stop)
+static double local_far(const qc__holes *h, qc_vec2 q, double half, double stop)
 {
     double step = LOCAL_RES * h->d, cap = h->d, best = 0.0;
     long i, j, ring, m = (long)(half / step);
@@ -244,164 +222,13 @@ static double local_far(const holes *h, qc_vec2 q, double half, double stop)
     return best;
 }
 
-/* Whether the segment from vertex i crosses another segment of c. */
-static int seg_crosses(const holes *h, const qc_points *c, size_t i)
-{
-    size_t ns = h->open ? c->n - 1 : c->n, cells[4], x, y, k, i1 = next_seg(c, (uint32_t)i);
-    qc_vec2 a = c->v[i], b = c->v[i1];
-    double pad = BUMP_MAX * h->d;
-
-    if (i >= ns)
-        return 0;
-    qc__seg_grid_cells(&h->sg, QC__V2(fmin(a.x, b.x) - pad, fmin(a.y, b.y) - pad),
-                       QC__V2(fmax(a.x, b.x) + pad, fmax(a.y, b.y) + pad), cells);
-    for (y = cells[1]; y <= cells[3]; y++)
-        for (x = cells[0]; x <= cells[2]; x++)
-            for (k = h->sg.start[y * h->sg.gx + x]; k < h->sg.start[y * h->sg.gx + x + 1]; k++) {
-                size_t j = h->sg.seg[k], j1;
-                if (j >= ns || j == i)
-                    continue;
-                j1 = next_seg(c, (uint32_t)j);
-                if (j1 == i || i1 == j)
-                    continue;
-                if (qc__segs_cross_proper(a, b, c->v[j], c->v[j1]))
-                    return 1;
-            }
-    return 0;
-}
-
-/* The point dist (mm) along c from vertex i, forwards (dir 1) or back;
- * an open curve's end if it comes first. */
-static qc_vec2 along(const holes *h, const qc_points *c, size_t i, double dist, int dir)
-{
-    size_t n = c->n, k;
-
-    for (k = 0; k < n; k++) {
-        size_t j = dir ? (i + 1 == n ? 0 : i + 1) : (i == 0 ? n - 1 : i - 1);
-        qc_vec2 p = c->v[i], q;
-        double len;
-        if (h->open && ((dir && i + 1 == n) || (!dir && i == 0)))
-            return p;
-        q = c->v[j];
-        len = qc_hypot(q.x - p.x, q.y - p.y);
-        if (len >= dist)
-            return QC__V2(p.x + (q.x - p.x) * dist / len, p.y + (q.y - p.y) * dist / len);
-        dist -= len;
-        i = j;
-    }
-    return c->v[i];
-}
-
-/* The radius of the circle through vertex i and the points TURN_ARC d
- * before and after it along c, as the tests measure turns (huge where
- * they are in line). */
-static double turn_at(const holes *h, const qc_points *c, size_t i)
-{
-    qc_vec2 a = along(h, c, i, TURN_ARC * h->d, 0), b = along(h, c, i, TURN_ARC * h->d, 1);
-    qc_vec2 at = c->v[i];
-    double ab = qc_hypot(at.x - a.x, at.y - a.y), bc = qc_hypot(b.x - at.x, b.y - at.y);
-    double ca = qc_hypot(a.x - b.x, a.y - b.y);
-    double cr = fabs((at.x - a.x) * (b.y - at.y) - (at.y - a.y) * (b.x - at.x));
-
-    return cr > 1e-12 * ab * bc * ca ? ab * bc * ca / (2.0 * cr) : HUGE_VAL;
-}
-
-/* The tightest turn (circumradius, mm) at the vertices the last move
- * moved and their neighbours, two either side. */
-static double tightest(const holes *h, const qc_points *c)
-{
-    size_t n = c->n, k;
-    double best = HUGE_VAL;
-
-    for (k = 0; k < h->nundo; k++) { /* the spline through i bends two spans either side */
-        size_t j, i = h->undo[k];
-        for (j = 0; j < 5 && j < n; j++) {
-            size_t at = (i + n + j - 2) % n;
-            best = fmin(best, turn_at(h, c, at));
-        }
-    }
-    return best;
-}
-
-/* The longest straight stretch through vertex i within STRAIGHT_SPAN
- * vertices either side (mm along the curve): a run whose vertices all lie
- * within d/20 of the chord between its ends, as the tests measure it. */
-static double straight_at(const holes *h, const qc_points *c, size_t i)
-{
-    size_t n = c->n, span = STRAIGHT_SPAN, a, b, k;
-    double best = 0.0, tol = h->d / 20.0;
-
-    if (n < 2 * span + 3)
-        return 0.0;
-    for (a = 0; a <= span; a++) /* the run from i - a to i + b (cyclic offsets) */
-        for (b = (a == 0 ? 1 : 0); b <= span; b++) {
-            size_t ia = (i + n - a) % n, ib = (i + b) % n;
-            qc_vec2 p = c->v[ia], q = c->v[ib];
-            double len = qc_hypot(q.x - p.x, q.y - p.y);
-            int ok = len > 0.0 && !(h->open && (i < a || i + b >= n));
-            for (k = 1; k < a + b && ok; k++) {
-                qc_vec2 v = c->v[(ia + k) % n];
-                ok = fabs((q.x - p.x) * (v.y - p.y) - (q.y - p.y) * (v.x - p.x)) <= tol * len;
-            }
-            if (ok)
-                best = fmax(best, len);
-        }
-    return best;
-}
-
-/* The longest straight stretch through the vertices the last move moved. */
-static double straightest(const holes *h, const qc_points *c)
-{
-    double best = 0.0;
-    size_t k;
-
-    for (k = 0; k < h->nundo; k++)
-        best = fmax(best, straight_at(h, c, h->undo[k]));
-    return best;
-}
-
-/* Whether the last move made the curve turn tighter than TURN_MIN d
- * where it turned less tightly before, or run straight for longer than
- * STRAIGHT d where it ran straight for less (compared with the moved
- * vertices put back for a moment). */
-static int turns_tighter(holes *h, qc_points *c)
-{
-    double now = tightest(h, c), before, run = straightest(h, c), run_was;
-    size_t k;
-
-    if (!(now < TURN_MIN * h->d) && !(run > STRAIGHT * h->d))
-        return 0;
-    for (k = 0; k < h->nundo; k++) { /* swap: as it was */
-        qc_vec2 t = c->v[h->undo[k]];
-        c->v[h->undo[k]] = h->was[k];
-        h->was[k] = t;
-    }
-    before = tightest(h, c);
-    run_was = straightest(h, c);
-    for (k = 0; k < h->nundo; k++) { /* and back */
-        qc_vec2 t = c->v[h->undo[k]];
-        c->v[h->undo[k]] = h->was[k];
-        h->was[k] = t;
-    }
-    return (now < TURN_MIN * h->d && now < before) || (run > STRAIGHT * h->d && run > run_was);
-}
-
-/* Puts back what the last bump moved. */
-static void unbump(holes *h, qc_points *c)
-{
-    size_t k;
-
-    for (k = 0; k < h->nundo; k++)
-        c->v[h->undo[k]] = h->was[k];
-    h->nundo = 0;
-}
 
 /* Raises a bump of the curve at vertex v0 towards q: the vertices within
  * BUMP_W d along the curve either side move by rise, less further along
  * (the line behind stays: the curve grows into the hole). 0, undone, if
  * it would carry a line near a seam away from it, too near it, or make
  * the curve cross itself. */
-static int bump(holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
+static int bump(qc__holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
 {
     size_t n = c->n, side, k, j;
     qc_vec2 u = QC__V2(q.x - c->v[v0].x, q.y - c->v[v0].y);
@@ -427,7 +254,7 @@ static int bump(holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
                 was = qc__sdf_at(h->s, p);
                 now = qc__sdf_at(h->s, m);
                 if ((was < RIM * h->d && now > was) || now < SEAM * h->d) {
-                    unbump(h, c);
+                    qc__holes_undo(h, c);
                     return 0;
                 }
                 h->undo[h->nundo] = (uint32_t)j;
@@ -442,13 +269,13 @@ static int bump(holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
     }
     for (k = 0; k < h->nundo; k++) {
         size_t i = h->undo[k];
-        if (seg_crosses(h, c, i) || seg_crosses(h, c, i == 0 ? n - 1 : i - 1)) {
-            unbump(h, c);
+        if (qc__holes_crosses_at(h, c, i) || qc__holes_crosses_at(h, c, i == 0 ? n - 1 : i - 1)) {
+            qc__holes_undo(h, c);
             return 0;
         }
     }
-    if (turns_tighter(h, c)) {
-        unbump(h, c);
+    if (qc__holes_turns_tighter(h, c)) {
+        qc__holes_undo(h, c);
         return 0;
     }
     return 1;
@@ -457,7 +284,7 @@ static int bump(holes *h, qc_points *c, size_t v0, qc_vec2 q, double rise)
 /* Tries a bump from each side (up to four, 60 degrees apart or more) the
  * disc at q (radius R) touches and keeps the one that narrows the widest
  * gap round it most, if any does. */
-static int try_bumps(holes *h, qc_points *c, qc_vec2 q, double R)
+static int try_bumps(qc__holes *h, qc_points *c, qc_vec2 q, double R)
 {
     size_t cells[4], x, y, e, pick[4], np = 0, k, best = (size_t)-1;
     double reach = R + CONTACT * h->d, half = R + LOCAL_PAD * h->d, rise;
@@ -499,7 +326,7 @@ static int try_bumps(holes *h, qc_points *c, qc_vec2 q, double R)
         if (!bump(h, c, pick[k], q, rise))
             continue;
         after = local_far(h, q, half, least);
-        unbump(h, c);
+        qc__holes_undo(h, c);
         if (after < least) {
             least = after;
             best = k;
@@ -516,7 +343,7 @@ static int try_bumps(holes *h, qc_points *c, qc_vec2 q, double R)
 /* Draws the vertices round the disc at q (radius R) in towards q by up
  * to shift, each as far as the space behind it allows; stamp marks them
  * for disc number k. */
-static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsigned char *mask,
+static void close_in(qc__holes *h, qc_points *c, const qc__gap_grid *g, const unsigned char *mask,
                      qc_vec2 q, double R, double shift, uint32_t k)
 {
     double reach = R + BAND * h->d, pad = 0.25 * h->d, band = BAND * h->d;
@@ -559,7 +386,7 @@ static void close_in(holes *h, qc_points *c, const qc__gap_grid *g, const unsign
  * than the goal and than *worst less TIER are closed in (*moved: how many),
  * and the mouths on the seams wider than MOUTH and than the widest mouth
  * less TIER. */
-static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, int act,
+static int pass(qc_ctx *ctx, const qc_region *region, qc__holes *h, qc_points *c, int act,
                 double *worst, size_t *moved)
 {
     qc__gap_grid g;
@@ -578,7 +405,7 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
         return rc;
     cells = g.nx * g.ny;
     for (i = 0; i < ns; i++)
-        qc__gap_seed_segment(&g, c->v[i], c->v[next_seg(c, (uint32_t)i)]);
+        qc__gap_seed_segment(&g, c->v[i], c->v[qc__holes_next(c, (uint32_t)i)]);
     rc = qc__gap_transform(ctx, &g);
     floor2 = (GOAL * h->d / g.h - 1.5) * (GOAL * h->d / g.h - 1.5);
     for (i = 0; rc == QC_OK && i < cells; i++) { /* the peaks: no neighbour greater */
@@ -615,7 +442,7 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
             memset(h->stamp, 0, c->n * sizeof *h->stamp);
     }
     if (rc == QC_OK && np > 0)
-        rc = qc__seg_grid_build(ctx, &h->sg, c->v, ns, next_seg, c, h->d, 4.0);
+        rc = qc__seg_grid_build(ctx, &h->sg, c->v, ns, qc__holes_next, c, h->d, 4.0);
     /* the raster errs by up to a cell: every peak within two of the greatest;
      * the mouths on the seams are a tier of their own, so that a wide one
      * does not hold back the holes inside (nor they it) */
@@ -650,9 +477,9 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
             double before = local_far(h, q, R + LOCAL_PAD * h->d, HUGE_VAL);
             h->nundo = 0;
             close_in(h, c, &g, mask, q, R, fmin(SHIFT_MAX * h->d, R - AIM * h->d), (uint32_t)k);
-            if (turns_tighter(h, c) ||
+            if (qc__holes_turns_tighter(h, c) ||
                 !(local_far(h, q, R + LOCAL_PAD * h->d, before - GAIN * h->d) < before - GAIN * h->d)) {
-                unbump(h, c);
+                qc__holes_undo(h, c);
                 continue;
             }
             h->nundo = 0;
@@ -676,7 +503,7 @@ static int pass(qc_ctx *ctx, const qc_region *region, holes *h, qc_points *c, in
 int qc__meander_holes(qc_ctx *ctx, const qc_region *region, const qc__sdf *s, double d,
                       int open, qc_points *c)
 {
-    holes h;
+    qc__holes h;
     qc_points prev = {0}, cur = {0}, t;
     size_t p, moved = 1, crossings = 0;
     double was = HUGE_VAL, now = 0.0;
