@@ -176,9 +176,8 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
     qc_order_free(ctx, &res->order);
     cli_machine_stitch_params(&g->mach, &sp);
     sp.tie_stitches = g->tie;
-    if (qc_stitch_plan(ctx, &res->path, region, &sp, plan) < 0)
+    if (qc_stitch_plan_taking(ctx, &res->path, region, &sp, plan) < 0)
         return cli_fail(ctx, "stitch plan", ctx->status);
-    qc_path_free(ctx, &res->path);
     return CLI_OK;
 }
 

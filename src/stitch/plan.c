@@ -340,8 +340,10 @@ static int build(qc_ctx *ctx, qc_points *pts, const qc_order *ends,
     return rc;
 }
 
-int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
-                   const qc_stitch_params *params, qc_plan *out)
+/* qc_stitch_plan; taken, when not NULL, is path, freed once flattened. */
+static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
+                       const qc_region *clip_region, const qc_stitch_params *params,
+                       qc_plan *out)
 {
     qc_points pts = {0}, cpts = {0};
     qc_order ends = {0}, cends = {0};
@@ -357,6 +359,7 @@ int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_regio
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
     rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
+    qc_path_free(ctx, taken);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
     if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
         rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);
@@ -376,5 +379,20 @@ int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_regio
                           ? " inside the clip region" : "");
     if (rc != QC_OK)
         qc_plan_free(ctx, out);
+    return rc;
+}
+
+int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
+                   const qc_stitch_params *params, qc_plan *out)
+{
+    return stitch_plan(ctx, path, NULL, clip_region, params, out);
+}
+
+int qc_stitch_plan_taking(qc_ctx *ctx, qc_path *path, const qc_region *clip_region,
+                          const qc_stitch_params *params, qc_plan *out)
+{
+    int rc = stitch_plan(ctx, path, path, clip_region, params, out);
+
+    qc_path_free(ctx, path); /* also when refused before the flattening */
     return rc;
 }
