@@ -169,9 +169,14 @@ static int make_plan(qc_ctx *ctx, const gen_opts *g, const qc_region *region,
     } else if (qc_generate(ctx, region, &g->pat.params, given, motifs, res) < 0)
         return cli_fail(ctx, "generate", ctx->status);
     cli_timer_mark(timer, "plan");
+    /* from here on only res's figures are read: each copy of the pattern
+     * goes as soon as the next is made (the peak at 10^6 points) */
+    qc_points_free(ctx, &res->points);
+    qc_edges_free(ctx, &res->edges);
+    qc_order_free(ctx, &res->order);
     cli_machine_stitch_params(&g->mach, &sp);
     sp.tie_stitches = g->tie;
-    if (qc_stitch_plan(ctx, &res->path, region, &sp, plan) < 0)
+    if (qc_stitch_plan_taking(ctx, &res->path, region, &sp, plan) < 0)
         return cli_fail(ctx, "stitch plan", ctx->status);
     return CLI_OK;
 }

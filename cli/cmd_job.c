@@ -236,7 +236,7 @@ static int run_job(qc_ctx *ctx, job *j, const char *const *outputs, const int *f
         rc = job_outlines(ctx, j, moved, &outlines);
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = j->tie;
-    if (rc == CLI_OK && qc_stitch_plan(ctx, &all, NULL, &sp, &plan) < 0)
+    if (rc == CLI_OK && qc_stitch_plan_taking(ctx, &all, NULL, &sp, &plan) < 0)
         rc = cli_fail(ctx, "job", ctx->status);
     memset(&io, 0, sizeof io);
     io.svg_inches = strcmp(j->units, "in") == 0;

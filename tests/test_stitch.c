@@ -446,6 +446,78 @@ static void plan_should_reject_bad_params_and_survive_oom(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* qc_stitch_plan_taking: the same plan as qc_stitch_plan (the in-place
+ * plan of one untied piece, ties, splits, clipped pieces), the path freed
+ * and zeroed whatever the outcome, a lower peak (the path is gone before
+ * the merge), no block left behind when an allocation fails. */
+static void plan_taking_should_match_and_free_the_path(void)
+{
+    qc_path path = {0}, copy = {0};
+    qc_region reg = {0};
+    qc_vec2 band[4] = {{-1, -1}, {301, -1}, {301, 20}, {-1, 20}};
+    qc_stitch_params sp;
+    qc_plan want, got;
+    size_t i, k, base, peak_plain, peak_taking;
+    int c, rc;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(0, 0)));
+    for (i = 0; i < 30; i++) {
+        double x = 10.0 * (double)i;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &path, v2(x, 40), v2(x + 10, 40),
+                                                      v2(x + 10, 0)));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(x + 10.2, 0.1)));
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &reg, band, 4));
+    for (c = 0; c < 4; c++) {
+        memset(&sp, 0, sizeof sp);
+        sp.tie_stitches = c == 1 ? 3 : 0;
+        sp.max_segment = c == 2 ? 2.0 : 0.0;
+        sp.clip = c == 3;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_append(&ctx, &copy, &path, 0));
+        ta.peak_bytes = ta.live_bytes;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, &reg, &sp, &want));
+        peak_plain = ta.peak_bytes;
+        qc_plan_free(&ctx, &want);
+        ta.peak_bytes = ta.live_bytes;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan_taking(&ctx, &copy, &reg, &sp, &got));
+        peak_taking = ta.peak_bytes;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, &reg, &sp, &want));
+        TEST_ASSERT_TRUE(peak_taking < peak_plain);
+        TEST_ASSERT_TRUE(copy.pt == NULL && copy.cmd == NULL && copy.npt == 0);
+        TEST_ASSERT_TRUE(want.n > 100);
+        TEST_ASSERT_EQUAL_size_t(want.n, got.n);
+        TEST_ASSERT_EQUAL_MEMORY(want.p, got.p, want.n * sizeof *want.p);
+        TEST_ASSERT_EQUAL_MEMORY(want.flags, got.flags, want.n);
+        qc_plan_free(&ctx, &want);
+        qc_plan_free(&ctx, &got);
+    }
+    /* refused before the flattening: the path is freed all the same */
+    memset(&sp, 0, sizeof sp);
+    sp.tolerance = -1;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_append(&ctx, &copy, &path, 0));
+    TEST_ASSERT_EQUAL_INT(QC_ERANGE, qc_stitch_plan_taking(&ctx, &copy, NULL, &sp, &got));
+    TEST_ASSERT_TRUE(copy.pt == NULL && got.n == 0);
+    sp.tolerance = 0;
+    base = ta.live_blocks; /* the path and the region */
+    rc = QC_ENOMEM;
+    for (k = 1; rc == QC_ENOMEM && k < 200; k++) {
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_append(&ctx, &copy, &path, 0));
+        ta.fail_at = ta.allocs + k;
+        rc = qc_stitch_plan_taking(&ctx, &copy, NULL, &sp, &got);
+        ta.fail_at = 0;
+        TEST_ASSERT_TRUE(copy.pt == NULL);
+        if (rc == QC_ENOMEM)
+            TEST_ASSERT_EQUAL_size_t(0, got.n);
+        qc_plan_free(&ctx, &got);
+        TEST_ASSERT_EQUAL_size_t(base, ta.live_blocks);
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, rc);
+    TEST_ASSERT_FALSE(ta.size_mismatch);
+    qc_path_free(&ctx, &path);
+    qc_region_free(&ctx, &reg);
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 /* Junctions by a sort, for comparison: the least index of each place
  * visited again other than as a repeat of the point before. */
 static const qc_vec2 *sort_v;
@@ -545,6 +617,7 @@ int main(void)
     RUN_TEST(plan_should_clip_to_region);
     RUN_TEST(clip_should_keep_exactly_the_inside_length);
     RUN_TEST(plan_should_reject_bad_params_and_survive_oom);
+    RUN_TEST(plan_taking_should_match_and_free_the_path);
     RUN_TEST(junctions_should_be_those_a_sort_finds);
     return UNITY_END();
 }

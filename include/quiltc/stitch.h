@@ -59,6 +59,11 @@ typedef struct qc_stitch_params {
  */
 int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
                    const qc_stitch_params *params, qc_plan *out);
+/* qc_stitch_plan that frees *path (left zeroed, whatever the outcome) as
+ * soon as it is flattened, before the plan's own copies of the pattern are
+ * made: a caller done with the path lowers the peak (at 10^6 points). */
+int qc_stitch_plan_taking(qc_ctx *ctx, qc_path *path, const qc_region *clip_region,
+                          const qc_stitch_params *params, qc_plan *out);
 void qc_plan_free(qc_ctx *ctx, qc_plan *plan);
 /* Appends one point with its QC_ST_* flags. QC_OK, or QC_ENOMEM with the
  * plan unchanged. */

@@ -251,7 +251,46 @@ static size_t merge(qc__merge *mg, const qc_vec2 *v, size_t n, const resolved *r
     return qc__merge_piece(mg, v, n, r->min_seg, r->floor_len, r->keep);
 }
 
-static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
+/* A single piece's plan from the merge's kept points m, the rest of the
+ * scratch freed first. Without ties or splits the plan is m as it stands:
+ * it takes m's array and compacts it in place (emit_piece writes point k
+ * only after reading m[k] and adds nothing), so no second copy is made. */
+static int build_one(qc_ctx *ctx, qc__merge *mg, size_t cnt, double total, const resolved *r,
+                     qc_plan *out)
+{
+    qc_vec2 *m = mg->m, *fit;
+    size_t cap = mg->cap;
+    int rc;
+
+    mg->m = NULL;
+    qc__merge_free(ctx, mg);
+    if (r->ties > 0 || total != (double)cnt) {
+        rc = plan_grow(ctx, out, (size_t)total);
+        if (rc == QC_OK)
+            rc = emit_piece(ctx, out, m, cnt, r);
+        qc__free(ctx, m, cap * sizeof *m);
+        return rc;
+    }
+    fit = (qc_vec2 *)qc__realloc(ctx, m, cap * sizeof *m, cnt * sizeof *m); /* a shrink */
+    if (fit == NULL) {
+        qc__free(ctx, m, cap * sizeof *m);
+        return QC_ENOMEM;
+    }
+    out->flags = (unsigned char *)qc__alloc(ctx, cnt);
+    if (out->flags == NULL) {
+        qc__free(ctx, fit, cnt * sizeof *fit);
+        return QC_ENOMEM;
+    }
+    out->p = fit;
+    out->cap = cnt;
+    out->n = 0;
+    return emit_piece(ctx, out, fit, cnt, r);
+}
+
+/* build() with the flattened points its own: a single piece, once merged,
+ * needs neither them nor the merge's scratch beside the kept points, so
+ * they are freed before the plan is made (the peak of a large pattern). */
+static int build(qc_ctx *ctx, qc_points *pts, const qc_order *ends,
                  const resolved *r, qc_plan *out)
 {
     qc__merge mg;
@@ -282,6 +321,10 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
                         "raise the maximum segment",
                         total, (unsigned long)QC_MAX_PLAN_POINTS);
     }
+    if (ends->n == 1 && cnt >= 2 && out->cap == 0) {
+        qc_points_free(ctx, pts);
+        return build_one(ctx, &mg, cnt, total, r, out);
+    }
     if (out->cap == 0 && total >= 1) /* counted: no doubling, no copies */
         rc = plan_grow(ctx, out, (size_t)total);
     start = 0;
@@ -297,8 +340,10 @@ static int build(qc_ctx *ctx, const qc_points *pts, const qc_order *ends,
     return rc;
 }
 
-int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
-                   const qc_stitch_params *params, qc_plan *out)
+/* qc_stitch_plan; taken, when not NULL, is path, freed once flattened. */
+static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
+                       const qc_region *clip_region, const qc_stitch_params *params,
+                       qc_plan *out)
 {
     qc_points pts = {0}, cpts = {0};
     qc_order ends = {0}, cends = {0};
@@ -314,9 +359,11 @@ int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_regio
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
     rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
+    qc_path_free(ctx, taken);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
     if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
         rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);
+        qc_points_free(ctx, &pts); /* cpts holds what is sewn */
         if (rc == QC_OK)
             rc = build(ctx, &cpts, &cends, &r, out);
     } else if (rc == QC_OK) {
@@ -332,5 +379,20 @@ int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_regio
                           ? " inside the clip region" : "");
     if (rc != QC_OK)
         qc_plan_free(ctx, out);
+    return rc;
+}
+
+int qc_stitch_plan(qc_ctx *ctx, const qc_path *path, const qc_region *clip_region,
+                   const qc_stitch_params *params, qc_plan *out)
+{
+    return stitch_plan(ctx, path, NULL, clip_region, params, out);
+}
+
+int qc_stitch_plan_taking(qc_ctx *ctx, qc_path *path, const qc_region *clip_region,
+                          const qc_stitch_params *params, qc_plan *out)
+{
+    int rc = stitch_plan(ctx, path, path, clip_region, params, out);
+
+    qc_path_free(ctx, path); /* also when refused before the flattening */
     return rc;
 }
