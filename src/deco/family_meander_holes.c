@@ -381,6 +381,41 @@ static void close_in(qc__holes *h, qc_points *c, const qc__gap_grid *g, const un
             }
 }
 
+/* The raster's peaks above floor2 (squared cells; no neighbour greater),
+ * in *pk (*np of them, *pcap allocated), each marked a mouth on the seams
+ * when a neighbour lies outside. QC_OK or QC_ENOMEM. */
+static int find_peaks(qc_ctx *ctx, const qc__gap_grid *g, const unsigned char *mask,
+                      double floor2, peak **pk, size_t *np, size_t *pcap)
+{
+    size_t i, k, cells = g->nx * g->ny;
+    int rc = QC_OK;
+
+    for (i = 0; rc == QC_OK && i < cells; i++) {
+        size_t x = i % g->nx, y = i / g->nx;
+        int top = mask[i] && (double)g->f[i] > floor2 && g->f[i] < (float)QC__GAP_FAR;
+        int seam = 0;
+        for (k = 0; k < 9 && top; k++) {
+            long xx = (long)x + (long)(k % 3) - 1, yy = (long)y + (long)(k / 3) - 1;
+            size_t at;
+            if (k == 4 || xx < 0 || yy < 0 || xx >= (long)g->nx || yy >= (long)g->ny)
+                continue;
+            at = (size_t)yy * g->nx + (size_t)xx;
+            /* outside cells are far from the curve, never a peak's rival */
+            seam |= !mask[at];
+            top = !mask[at] || g->f[at] < g->f[i] || (g->f[at] == g->f[i] && at > i);
+        }
+        if (top) {
+            rc = QC__RESERVE(ctx, *pk, *pcap, *np + 1);
+            if (rc < 0)
+                break;
+            (*pk)[*np].f = g->f[i];
+            (*pk)[*np].seam = seam;
+            (*pk)[(*np)++].at = (uint32_t)i;
+        }
+    }
+    return rc;
+}
+
 /* One pass: *worst receives the widest disc's exact radius (the greatest
  * of the raster's first peaks, climbed) inside; with act, the discs wider
  * than the goal and than *worst less TIER are closed in (*moved: how many),
@@ -408,29 +443,8 @@ static int pass(qc_ctx *ctx, const qc_region *region, qc__holes *h, qc_points *c
         qc__gap_seed_segment(&g, c->v[i], c->v[qc__holes_next(c, (uint32_t)i)]);
     rc = qc__gap_transform(ctx, &g);
     floor2 = (GOAL * h->d / g.h - 1.5) * (GOAL * h->d / g.h - 1.5);
-    for (i = 0; rc == QC_OK && i < cells; i++) { /* the peaks: no neighbour greater */
-        size_t x = i % g.nx, y = i / g.nx;
-        int top = mask[i] && (double)g.f[i] > floor2 && g.f[i] < (float)QC__GAP_FAR;
-        int seam = 0;
-        for (k = 0; k < 9 && top; k++) {
-            long xx = (long)x + (long)(k % 3) - 1, yy = (long)y + (long)(k / 3) - 1;
-            size_t at;
-            if (k == 4 || xx < 0 || yy < 0 || xx >= (long)g.nx || yy >= (long)g.ny)
-                continue;
-            at = (size_t)yy * g.nx + (size_t)xx;
-            /* outside cells are far from the curve, never a peak's rival */
-            seam |= !mask[at];
-            top = !mask[at] || g.f[at] < g.f[i] || (g.f[at] == g.f[i] && at > i);
-        }
-        if (top) {
-            rc = QC__RESERVE(ctx, pk, pcap, np + 1);
-            if (rc < 0)
-                break;
-            pk[np].f = g.f[i];
-            pk[np].seam = seam;
-            pk[np++].at = (uint32_t)i;
-        }
-    }
+    if (rc == QC_OK)
+        rc = find_peaks(ctx, &g, mask, floor2, &pk, &np, &pcap);
     if (rc == QC_OK && np > 0) {
         qsort(pk, np, sizeof *pk, cmp_peak);
         h->stamp = qc__alloc_array(ctx, c->n, sizeof *h->stamp);
