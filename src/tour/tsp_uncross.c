@@ -301,7 +301,8 @@ static int grid_scan(uncross *u)
                         goto out;
                     pair[npair++] = (uint64_t)edge[j] << 32 | edge[k];
                 }
-    qsort(pair, npair, sizeof *pair, cmp_u64);
+    if (npair > 1) /* (qsort takes no null array, even of none) */
+        qsort(pair, npair, sizeof *pair, cmp_u64);
     for (i = 0; i < npair; i++) {
         uint32_t a = (uint32_t)(pair[i] >> 32);
         c = (uint32_t)pair[i];
