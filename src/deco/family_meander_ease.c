@@ -365,6 +365,30 @@ static size_t step_from(size_t n, int open, size_t i, int dir)
     return i + 1 == n ? (open ? SIZE_MAX : 0) : (open && i + 2 == n ? SIZE_MAX : i + 1);
 }
 
+/* Walks c from vertex i in direction dir (-1, 1) while the arc from i
+ * stays under reach, for ROUND_SIDE vertices at most: arcs[k] the arc to
+ * the k-th vertex passed, *end the last vertex reached (i if none); returns
+ * how many were passed. */
+static size_t walk_out(const qc_points *c, int open, size_t i, int dir, double reach,
+                       double *arcs, size_t *end)
+{
+    size_t k;
+    double arc = 0.0;
+
+    *end = i;
+    for (k = 0; k < ROUND_SIDE; k++) {
+        size_t j = step_from(c->n, open, i, dir);
+        if (j == SIZE_MAX)
+            break;
+        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
+        if (arc >= reach)
+            break;
+        arcs[k] = arc;
+        *end = i = j;
+    }
+    return k;
+}
+
 /* Rounds the run of tight vertices from first, count of them, outwards
  * where round_run() could not round it inwards (a hook that leaves a run
  * along a seam: cut, it bares the seam it covered): the run moves to[] as
@@ -376,7 +400,7 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
                      double turn, size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
 {
     size_t n = c->n, k, i = first, last = first, lo = first, before, after, moved = 0, m;
-    double mx = 0.0, my = 0.0, reach = ROUND_REACH * turn, arc;
+    double mx = 0.0, my = 0.0, reach = ROUND_REACH * turn;
     double dist[ROUND_OUT_MAX], back[ROUND_SIDE], fwd[ROUND_SIDE];
     uint32_t cover[2 * ROUND_OUT_MAX + 1];
     qc_vec2 at[2 * ROUND_OUT_MAX + 1];
@@ -390,26 +414,8 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
     }
     /* the stretch that moves: out to reach along c either side of the run,
      * each vertex's arc length from the run in dist[] */
-    for (arc = 0.0, before = 0, i = first; before < ROUND_SIDE; before++) {
-        size_t j = step_from(n, open, i, -1);
-        if (j == SIZE_MAX)
-            break;
-        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
-        if (arc >= reach)
-            break;
-        back[before] = arc;
-        lo = i = j;
-    }
-    for (arc = 0.0, after = 0, i = last; after < ROUND_SIDE; after++) {
-        size_t j = step_from(n, open, i, 1);
-        if (j == SIZE_MAX)
-            break;
-        arc += qc_hypot(c->v[j].x - c->v[i].x, c->v[j].y - c->v[i].y);
-        if (arc >= reach)
-            break;
-        fwd[after] = arc;
-        i = j;
-    }
+    before = walk_out(c, open, first, -1, reach, back, &lo);
+    after = walk_out(c, open, last, 1, reach, fwd, &i);
     m = before + count + after;
     if (m + 2 >= n || m > ROUND_OUT_MAX)
         return 0;
