@@ -81,21 +81,24 @@ static int sew(qc_ctx *ctx, const qc_points *c, const qc__sdf *s, const qc_regio
     return rc;
 }
 
-/* 1 if path, as qc_generate keeps it inside region, crosses itself, 0 if
- * not, or an error. */
-static int crosses_once_kept(qc_ctx *ctx, const qc_region *region, const qc_path *path)
+/* 1 if qc_generate's keep-inside pass would change path (a chord over a
+ * cusp rerouted round its tip: a V far tighter than the turn radius, and
+ * a long straight run) or path, so kept, crosses itself; 0 if not, or an
+ * error. */
+static int kept_differs(qc_ctx *ctx, const qc_region *region, const qc_path *path)
 {
     qc_path kept = {0};
     qc_points flat = {0};
-    size_t n = 0;
+    size_t n = 0, fixed = 0;
     int rc = qc_path_append(ctx, &kept, path, 0);
 
     if (rc == QC_OK)
-        rc = qc__path_keep_inside(ctx, region, "meander", &kept, NULL);
-    if (rc == QC_OK)
+        rc = qc__path_keep_inside(ctx, region, "meander", &kept, &fixed);
+    if (rc == QC_OK && fixed == 0)
         rc = qc_curve_flatten(ctx, &kept, CHECK_TOL, &flat, NULL);
-    if (rc == QC_OK)
+    if (rc == QC_OK && fixed == 0)
         rc = qc_path_self_crossings(ctx, flat.v, flat.n, 0, &n);
+    n += fixed;
     qc_path_free(ctx, &kept);
     qc_points_free(ctx, &flat);
     return rc < 0 ? rc : n > 0;
@@ -146,7 +149,9 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
     o.sdf = &s;
     o.open = tiled;
     /* seeded on the medial axis too; should qc_generate's keep-inside pass
-     * then make it cross itself (a chord over a cusp), seeded as before */
+     * then have to reroute it (a chord over a cusp: the heart's, seed 17,
+     * turned 0.15 d round the tip with a 2.45 d straight run) or make it
+     * cross itself, seeded as before */
     for (axis = 1; axis >= 0 && rc == QC_OK; axis--) {
         one.ncmd = one.npt = 0;
         rc = qc__meander_seed(ctx, region, &s, params, tiled ? ports : NULL, axis, &c);
@@ -172,7 +177,7 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
         if (rc == QC_OK && (tiled || !axis))
             break;
         if (rc == QC_OK) {
-            int crossed = crosses_once_kept(ctx, region, &one);
+            int crossed = kept_differs(ctx, region, &one);
             if (crossed < 0)
                 rc = crossed;
             else if (!crossed)
