@@ -30,9 +30,13 @@
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
-#define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, stay:
-                          * a tongue's tip, deep in a corner (the clearance is 0.22 d;
-                          * the tips reach.c draws lie 0.08 d off the seams) */
+#define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, are
+                          * rounded last: a tongue's tip, deep in a corner (the
+                          * clearance is 0.22 d; the tips reach.c draws lie 0.08 d
+                          * off the seams), inwards only if outwards fails */
+#define TIP_ACUTE 50.0   /* ... and inwards only near a corner sharper than this, degrees
+                          * (the blocks' tips keep their seams) ... */
+#define TIP_REACH 1.25   /* ... within this, times d */
 #define ROUND_REACH 2.0  /* rounded outwards: the curve this far either side of the
                           * run moves too, times the radius */
 #define ROUND_OUT_GAIN 1.5 /* ... back out by this times the run's mean move: the
@@ -269,22 +273,46 @@ static int bares_seam(const qc_points *c, int open, const vbins *b, const qc__sd
     return 0;
 }
 
+/* Whether a corner of the region sharper than TIP_ACUTE lies within reach of p. */
+static int near_acute(const qc__sdf *s, qc_vec2 p, double reach)
+{
+    const qc_region *r = s->region;
+    size_t i;
+
+    for (i = 0; i < r->nv; i++)
+        if (qc_hypot(r->v[i].x - p.x, r->v[i].y - p.y) < reach &&
+            qc_region_corner_angle(r, i) < TIP_ACUTE)
+            return 1;
+    return 0;
+}
+
 /* Moves the run of tight vertices from vertex first, count of them, each
  * part of the way to the middle of the points the radius before and after
  * it (to[]): all of them, or none where one would come within EASE_CLEAR d
  * of the boundary, bare a seam or cross the curve (a corner half rounded
- * turns tighter than before). Returns 1 if moved. */
+ * turns tighter than before). A run with a vertex within tip of the
+ * boundary (a tongue's tip) is left, but for acute > 0 where a corner
+ * sharper than TIP_ACUTE lies within acute of it: that one may bare the
+ * seam (the turn radius is a machine limit, the corner's fabric not).
+ * Returns 1 if moved. */
 static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, double inner,
-                     double tip, size_t first, size_t count, const qc_vec2 *to, qc_vec2 *was)
+                     double tip, double acute, size_t first, size_t count, const qc_vec2 *to,
+                     qc_vec2 *was)
 {
     size_t n = c->n, k, i = first;
+    int at_tip = 0;
 
-    for (k = 0; k < count; k++, i = i + 1 == n ? 0 : i + 1) {
+    for (k = 0; k < count && !at_tip; k++, i = i + 1 == n ? 0 : i + 1)
+        at_tip = qc__sdf_exact(s, c->v[i], NULL) < tip;
+    if (at_tip && !(acute > 0.0 && near_acute(s, c->v[first], acute)))
+        return 0;
+    for (k = 0, i = first; k < count; k++, i = i + 1 == n ? 0 : i + 1) {
         size_t ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
         qc_vec2 m = to[i];
         was[k] = c->v[i];
-        if (qc__sdf_exact(s, was[k], NULL) < tip || !qc__meander_seg_inside(s, c->v[ia], m, inner) ||
-            !qc__meander_seg_inside(s, m, c->v[ib], inner) || bares_seam(c, open, b, s, i, m))
+        if (!qc__meander_seg_inside(s, c->v[ia], m, inner) ||
+            !qc__meander_seg_inside(s, m, c->v[ib], inner) ||
+            (!at_tip && bares_seam(c, open, b, s, i, m)))
             break;
         c->v[i] = m;
         if (seg_crosses(c, open, b, i, m, ia, i) || seg_crosses(c, open, b, i, m, i, ib)) {
@@ -560,11 +588,14 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
                 j = j + 1 == n ? 0 : j + 1;
             }
             if (count > 0) {
-                int ok = round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, i, count,
-                                   r.to, r.was);
+                int ok = round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, 0.0, i,
+                                   count, r.to, r.was);
                 if (!ok)
                     ok = round_out(c, open, &bins, s, EASE_CLEAR * d, turn, i, count, r.to,
                                    r.was);
+                if (!ok)
+                    ok = round_run(c, open, &bins, s, EASE_CLEAR * d, ROUND_TIP * d, TIP_REACH * d, i,
+                                   count, r.to, r.was);
                 moved += (size_t)ok;
             } else {
                 j = j + 1 == n ? 0 : j + 1;
