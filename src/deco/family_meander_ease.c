@@ -25,7 +25,7 @@
 #define EASE_BELOW 0.95  /* eased: turning tighter than this times the radius
                           * (a tongue's tip turns at the radius itself) */
 #define WAVE_RUN 1.5     /* runs longer than this, times d, are waved first ... */
-#define WAVE_AGAIN 1.8   /* ... and these once more after the rounding */
+#define WAVE_AGAIN 1.5   /* ... and these once more after the rounding */
 #define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
