@@ -177,10 +177,10 @@ int qc_deco_meander(qc_ctx *ctx, const qc_region *region, const qc_params *param
         if (rc == QC_OK && (tiled || !axis))
             break;
         if (rc == QC_OK) {
-            int crossed = kept_differs(ctx, region, &one);
-            if (crossed < 0)
-                rc = crossed;
-            else if (!crossed)
+            int differs = kept_differs(ctx, region, &one);
+            if (differs < 0)
+                rc = differs;
+            else if (!differs)
                 break;
         }
     }
