@@ -116,33 +116,67 @@ void qc__rings_prune_islands(qc__rings *r, size_t first, double h)
     r->pts.n = w;
 }
 
-static uint32_t succ_of(const void *ud, uint32_t i)
+/* The level's segments a -> succ[a] filed by the cells of about cell mm
+ * their boxes meet: key[i] the cell (row by row over the box of p), seg[i]
+ * the segment, sorted by cell and then segment. Only the cells a ring
+ * passes through hold entries, so a long ring round a big block costs its
+ * length, not its box's area. *m receives the entry count. */
+static int file_segments(qc_ctx *ctx, const qc_vec2 *p, const uint32_t *succ, size_t n,
+                         double cell, uint64_t **key, uint32_t **seg, size_t *m)
 {
-    return ((const uint32_t *)ud)[i];
+    qc__seg_grid g; /* only its geometry: the cells of each box */
+    qc_bbox box = qc__points_bbox(p, n);
+    size_t i, k, x, y, c[4], cap = 0;
+
+    memset(&g, 0, sizeof g);
+    g.cell = cell;
+    g.x0 = box.min.x;
+    g.y0 = box.min.y;
+    g.gx = (size_t)((box.max.x - box.min.x) / cell) + 1;
+    g.gy = (size_t)((box.max.y - box.min.y) / cell) + 1;
+    for (i = 0; i < n; i++) {
+        qc__seg_grid_cells(&g, p[i], p[succ[i]], c);
+        cap += (c[2] - c[0] + 1) * (c[3] - c[1] + 1);
+    }
+    *m = cap;
+    *key = qc__alloc_array(ctx, cap, sizeof **key);
+    *seg = qc__alloc_array(ctx, cap, sizeof **seg);
+    if (*key == NULL || *seg == NULL)
+        return QC_ENOMEM;
+    for (i = 0, k = 0; i < n; i++) {
+        qc__seg_grid_cells(&g, p[i], p[succ[i]], c);
+        for (y = c[1]; y <= c[3]; y++)
+            for (x = c[0]; x <= c[2]; x++) {
+                (*key)[k] = (uint64_t)y * g.gx + x;
+                (*seg)[k++] = (uint32_t)i;
+            }
+    }
+    return qc__radix_sort(ctx, *key, *seg, cap, 0); /* stable: segments stay in order */
 }
 
 /* The level's vertices from b0 on joined by succ (indices relative to
  * b0): finds the pairs of segments (a, succ[a]), (c, succ[c]) that cross
- * properly, binned in a grid of about cell mm, and for each pair whose
- * ends no earlier pair touched, exchanges succ[a] and succ[c] (mark[]
- * bit 0: touched in this pass, bit 1: ever). *found counts the crossings
- * seen. */
+ * properly, filed by cells of about cell mm, and for each pair whose ends
+ * no earlier pair touched, exchanges succ[a] and succ[c] (mark[] bit 0:
+ * touched in this pass, bit 1: ever). *found counts the crossings seen. */
 static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n, double cell,
                         unsigned char *mark, size_t *found)
 {
-    qc__seg_grid g;
-    size_t k, i, ncell;
+    uint64_t *key = NULL;
+    uint32_t *seg = NULL;
+    size_t m = 0, b, e, k, q, i;
+    int rc;
 
     *found = 0;
-    QC__TRY(qc__seg_grid_build(ctx, &g, p, n, succ_of, succ, cell, 2.0));
-    ncell = g.gx * g.gy;
     for (i = 0; i < n; i++)
         mark[i] &= 2; /* keep "ever swapped" */
-    for (i = 0; i < ncell; i++) /* every pair in a cell */
-        for (k = g.start[i]; k < g.start[i + 1]; k++) {
-            size_t q;
-            for (q = k + 1; q < g.start[i + 1]; q++) {
-                uint32_t a = g.seg[k], c = g.seg[q], an = succ[a], cn = succ[c];
+    rc = file_segments(ctx, p, succ, n, cell, &key, &seg, &m);
+    for (b = 0; b < m && rc == QC_OK; b = e) { /* every pair in a cell */
+        for (e = b + 1; e < m && key[e] == key[b]; e++)
+            ;
+        for (k = b; k < e; k++)
+            for (q = k + 1; q < e; q++) {
+                uint32_t a = seg[k], c = seg[q], an = succ[a], cn = succ[c];
                 if (c == an || a == cn || a == c || !seg_cross(p[a], p[an], p[c], p[cn]))
                     continue;
                 ++*found;
@@ -152,9 +186,10 @@ static int uncross_pass(qc_ctx *ctx, const qc_vec2 *p, uint32_t *succ, size_t n,
                 succ[a] = cn; /* a -> cn and c -> an: uncrossed, directions kept */
                 succ[c] = an;
             }
-        }
-    qc__seg_grid_free(ctx, &g);
-    return QC_OK;
+    }
+    qc__free(ctx, key, m * sizeof *key);
+    qc__free(ctx, seg, m * sizeof *seg);
+    return rc;
 }
 
 /* Where a level set is thinner than the grid (a neck near a saddle, a

@@ -262,7 +262,7 @@ double qc__sdf_step(const qc_region *region, double h)
 int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
 {
     unsigned char *mask = NULL;
-    size_t n = 0, k, e;
+    size_t n = 0, k, e, i, j;
     int rc = QC_ENOMEM;
 
     memset(out, 0, sizeof *out);
@@ -303,13 +303,14 @@ int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
     rc = qc__raster_inside(ctx, region, out->x0, out->y0, h, out->nx, out->ny, mask);
     if (rc < 0)
         goto out;
-    for (k = 0; k < n; k++) {
-        double t = 0.0;
+    for (k = 0, j = 0; j < out->ny; j++)
+        for (i = 0; i < out->nx; i++, k++) { /* row by row: no division per node */
+            double t = 0.0;
 
-        descend(out, node_at(out, k % out->nx, k / out->nx), &out->seg[k], &out->v[k], &t);
-        out->v[k] = mask[k] ? sqrt(out->v[k]) : -sqrt(out->v[k]);
-        out->flat[k] = t > 0.0 && t < 1.0;
-    }
+            descend(out, node_at(out, i, j), &out->seg[k], &out->v[k], &t);
+            out->v[k] = mask[k] ? sqrt(out->v[k]) : -sqrt(out->v[k]);
+            out->flat[k] = t > 0.0 && t < 1.0;
+        }
 out:
     qc__free(ctx, mask, n);
     if (rc < 0) {
