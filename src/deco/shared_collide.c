@@ -74,20 +74,22 @@ void qc__cgrid_free(qc_ctx *ctx, qc__cgrid *g)
     memset(g, 0, sizeof *g);
 }
 
+/* The column (y 0) or row (y 1) of coordinate v, clamped to the grid. */
+static uint32_t cell_of(const qc__cgrid *g, double v, int y)
+{
+    double c = (v - (y ? g->y0 : g->x0)) / g->cell;
+    double lim = y ? g->ny - 1 : g->nx - 1;
+
+    /* truncation is floor here: negatives clamp to 0 first */
+    return !(c >= 0) ? 0 : c > lim ? (uint32_t)lim : (uint32_t)c;
+}
+
 static void cell_range(const qc__cgrid *g, const qc_bbox *b, uint32_t r[4])
 {
-    double c[4];
-    int k;
-
-    c[0] = (b->min.x - g->x0) / g->cell;
-    c[1] = (b->min.y - g->y0) / g->cell;
-    c[2] = (b->max.x - g->x0) / g->cell;
-    c[3] = (b->max.y - g->y0) / g->cell;
-    for (k = 0; k < 4; k++) {
-        double lim = (k & 1) ? g->ny - 1 : g->nx - 1;
-        /* truncation is floor here: negatives clamp to 0 first */
-        r[k] = !(c[k] >= 0) ? 0 : c[k] > lim ? (uint32_t)lim : (uint32_t)c[k];
-    }
+    r[0] = cell_of(g, b->min.x, 0);
+    r[1] = cell_of(g, b->min.y, 1);
+    r[2] = cell_of(g, b->max.x, 0);
+    r[3] = cell_of(g, b->max.y, 1);
 }
 
 /* Room for need elements, growing by a quarter past the owner's
@@ -205,17 +207,25 @@ int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
     size_t k;
 
     uint32_t r[CHAIN_WINDOW + 1][4], x, y; /* r[k % (CHAIN_WINDOW + 1)]: segment k's */
+    uint32_t cx, cy; /* point k's cell */
 
     if (n < 2 || n > 65535)
         return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
     QC__TRY(item_room(ctx, g, n));
+    cx = cell_of(g, pts[0].x, 0);
+    cy = cell_of(g, pts[0].y, 1);
     for (k = 0; k + 1 < n; k++) {
         uint32_t *rk = r[k % (CHAIN_WINDOW + 1)];
         size_t before = k < CHAIN_WINDOW ? k : CHAIN_WINDOW, i;
-        qc_bbox sb;
+        uint32_t nx = cell_of(g, pts[k + 1].x, 0), ny = cell_of(g, pts[k + 1].y, 1);
 
-        poly_box(pts + k, 2, &sb);
-        cell_range(g, &sb, rk);
+        /* the segment box's cell range, cell_of being monotone: its ends' */
+        rk[0] = cx < nx ? cx : nx;
+        rk[1] = cy < ny ? cy : ny;
+        rk[2] = cx < nx ? nx : cx;
+        rk[3] = cy < ny ? ny : cy;
+        cx = nx;
+        cy = ny;
         for (y = rk[1]; y <= rk[3]; y++)
             for (x = rk[0]; x <= rk[2]; x++) {
                 int filed = 0;
