@@ -15,19 +15,21 @@
 
 static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 {
+    /* in locals: through b, every store might change p, so every load repeats */
+    double x0 = p[0].x, y0 = p[0].y, x1 = x0, y1 = y0;
     size_t i;
 
-    b->min = b->max = p[0];
     for (i = 1; i < n; i++) {
-        if (p[i].x < b->min.x)
-            b->min.x = p[i].x;
-        if (p[i].y < b->min.y)
-            b->min.y = p[i].y;
-        if (p[i].x > b->max.x)
-            b->max.x = p[i].x;
-        if (p[i].y > b->max.y)
-            b->max.y = p[i].y;
+        double x = p[i].x, y = p[i].y;
+        x0 = x < x0 ? x : x0;
+        y0 = y < y0 ? y : y0;
+        x1 = x > x1 ? x : x1;
+        y1 = y > y1 ? y : y1;
     }
+    b->min.x = x0;
+    b->min.y = y0;
+    b->max.x = x1;
+    b->max.y = y1;
 }
 
 static int boxes_apart(const qc_bbox *a, const qc_bbox *b, double eps)
