@@ -274,6 +274,7 @@ typedef struct edges {
     int have_e, have_n;
     double ex[EDGE_CACHE], ey[EDGE_CACHE], el[EDGE_CACHE];
     double ax[EDGE_CACHE], ay[EDGE_CACHE], len[EDGE_CACHE], lo[EDGE_CACHE], hi[EDGE_CACHE];
+    unsigned char have_lh[EDGE_CACHE]; /* lo[i], hi[i] worked out (separated_by) */
 } edges;
 
 static void edges_init(edges *e, const qc_vec2 *p, size_t n)
@@ -302,8 +303,8 @@ static edges *edge_vectors(edges *e)
     return e;
 }
 
-/* e's normals and extents, worked out if need be: e, or NULL. */
-static const edges *edge_normals(edges *e)
+/* e's normals, worked out if need be (its extents on first use): e, or NULL. */
+static edges *edge_normals(edges *e)
 {
     size_t i, n;
 
@@ -315,49 +316,93 @@ static const edges *edge_normals(edges *e)
         e->ax[i] = ax;
         e->ay[i] = ay;
         e->len[i] = len;
-        if (len >= 1e-15)
-            project(e->p, n, ax, ay, &e->lo[i], &e->hi[i]);
+        e->have_lh[i] = 0;
     }
     e->have_n = 1;
     return e;
 }
 
-/* Whether an edge normal of a separates a from b (eps in mm); ea: a's
- * edge data or NULL. */
+/* Whether b's projections d on (ax, ay) all lie above top, or all have
+ * d + e below bottom: with top = ahi + e and bottom = alo, whether
+ * ahi + e < blo or bhi + e < alo for b's extent [blo, bhi] (one of the d,
+ * and rounding is monotone), without the whole extent: most pairs met
+ * straddle, which the first few vertices show. */
+static int all_beyond(const qc_vec2 *b, size_t nb, double ax, double ay, double top,
+                      double bottom, double e)
+{
+    int above = 1, below = 1;
+    size_t i;
+
+    for (i = 0; i < nb; i++) {
+        double d = b[i].x * ax + b[i].y * ay;
+        above &= top < d;
+        below &= d + e < bottom;
+        if (!(above | below))
+            return 0;
+    }
+    return 1;
+}
+
+/* Whether b straddles a on a's axis i (ax, ay), e >= 0, so that the axis
+ * cannot separate them, by a's extent [alo, ahi] bounded without working
+ * it out: ahi is at least the projection of a's vertex i, alo at most
+ * that of the vertex across; a vertex of b below the one (+ e) and one
+ * whose projection + e reaches the other fail both of all_beyond's tests. */
+static int straddles(const qc_vec2 *a, size_t na, size_t i, const qc_vec2 *b, size_t nb,
+                     double ax, double ay, double e)
+{
+    qc_vec2 p = a[i], q = a[(i + na / 2) % na];
+    double top = p.x * ax + p.y * ay + e, low = q.x * ax + q.y * ay;
+    int under = 0, over = 0;
+    size_t k;
+
+    for (k = 0; k < nb; k++) {
+        double d = b[k].x * ax + b[k].y * ay;
+        under |= !(top < d);
+        over |= !(d + e < low);
+        if (under & over)
+            return 1;
+    }
+    return 0;
+}
+
+/* Whether an edge normal of a separates a from b (eps >= 0, in mm): on
+ * some axis ahi + e < blo or bhi + e < alo, e = eps |axis|; ea: a's edge
+ * data or NULL. */
 static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps,
                         edges *ea)
 {
     size_t i, ne = na == 2 ? 1 : na;
-    const edges *c = edge_normals(ea);
+    edges *c = edge_normals(ea);
 
     for (i = 0; i < ne; i++) {
-        double ax, ay, len, alo, ahi, blo, bhi, e = 0;
+        double ax, ay, len, alo, ahi, e;
         if (c != NULL) {
             ax = c->ax[i];
             ay = c->ay[i];
             len = c->len[i];
-            if (len < 1e-15)
-                continue;
-            alo = c->lo[i];
-            ahi = c->hi[i];
-            e = eps * len;
         } else {
             qc_vec2 p = a[i], q = a[(i + 1) % na];
             ax = q.y - p.y;
             ay = p.x - q.x;
+            len = sqrt(ax * ax + ay * ay);
+        }
+        if (len < 1e-15)
+            continue;
+        e = eps * len;
+        if (straddles(a, na, i, b, nb, ax, ay, e))
+            continue;
+        if (c != NULL && !c->have_lh[i]) {
+            project(a, na, ax, ay, &c->lo[i], &c->hi[i]);
+            c->have_lh[i] = 1;
+        }
+        if (c != NULL) {
+            alo = c->lo[i];
+            ahi = c->hi[i];
+        } else {
             project(a, na, ax, ay, &alo, &ahi);
         }
-        project(b, nb, ax, ay, &blo, &bhi);
-        /* e >= 0: projections that overlap settle it without the length */
-        if (!(ahi < blo || bhi < alo))
-            continue;
-        if (c == NULL) {
-            len = sqrt(ax * ax + ay * ay);
-            if (len < 1e-15)
-                continue;
-            e = eps * len;
-        }
-        if (ahi + e < blo || bhi + e < alo)
+        if (all_beyond(b, nb, ax, ay, ahi + e, alo, e))
             return 1;
     }
     return 0;
@@ -371,7 +416,7 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
 {
     edges *pe = edge_vectors(pcache);
     double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl;
-    double lo, hi, c;
+    double c;
     size_t i;
 
     for (i = 0; i < n; i++) {
@@ -399,10 +444,9 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
     sl = sqrt(dx * dx + dy * dy);
     if (sl < 1e-15)
         return 0;
-    /* the segment's own normal */
-    project(p, n, -dy, dx, &lo, &hi);
+    /* the segment's own normal: hi + e < c or c + e < lo */
     c = -dy * s[0].x + dx * s[0].y;
-    return hi + eps * sl < c || c + eps * sl < lo;
+    return all_beyond(p, n, -dy, dx, c + eps * sl, c, eps * sl);
 }
 
 /* How deep inside a polygon a point must be to settle an overlap: far
