@@ -293,7 +293,7 @@ static edges *edge_vectors(edges *e)
     if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
         return NULL;
     for (i = 0, n = e->n; !e->have_e && i < n; i++) {
-        qc_vec2 a = e->p[i], b = e->p[(i + 1) % n];
+        qc_vec2 a = e->p[i], b = e->p[i + 1 == n ? 0 : i + 1];
         double ex = b.x - a.x, ey = b.y - a.y;
         e->ex[i] = ex;
         e->ey[i] = ey;
@@ -311,7 +311,7 @@ static edges *edge_normals(edges *e)
     if (e == NULL || e->n < 3 || e->n > EDGE_CACHE)
         return NULL;
     for (i = 0, n = e->n; !e->have_n && i < n; i++) {
-        qc_vec2 p = e->p[i], q = e->p[(i + 1) % n];
+        qc_vec2 p = e->p[i], q = e->p[i + 1 == n ? 0 : i + 1];
         double ax = q.y - p.y, ay = p.x - q.x, len = sqrt(ax * ax + ay * ay);
         e->ax[i] = ax;
         e->ay[i] = ay;
@@ -351,7 +351,7 @@ static int all_beyond(const qc_vec2 *b, size_t nb, double ax, double ay, double 
 static int straddles(const qc_vec2 *a, size_t na, size_t i, const qc_vec2 *b, size_t nb,
                      double ax, double ay, double e)
 {
-    qc_vec2 p = a[i], q = a[(i + na / 2) % na];
+    qc_vec2 p = a[i], q = a[i + na / 2 < na ? i + na / 2 : i + na / 2 - na];
     double top = p.x * ax + p.y * ay + e, low = q.x * ax + q.y * ay;
     int under = 0, over = 0;
     size_t k;
@@ -382,7 +382,7 @@ static int separated_by(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb
             ay = c->ay[i];
             len = c->len[i];
         } else {
-            qc_vec2 p = a[i], q = a[(i + 1) % na];
+            qc_vec2 p = a[i], q = a[i + 1 == na ? 0 : i + 1];
             ax = q.y - p.y;
             ay = p.x - q.x;
             len = sqrt(ax * ax + ay * ay);
@@ -426,7 +426,7 @@ static int seg_poly_apart(const qc_vec2 *s, const qc_vec2 *p, size_t n, double e
             ex = pe->ex[i];
             ey = pe->ey[i];
         } else {
-            qc_vec2 b = p[(i + 1) % n];
+            qc_vec2 b = p[i + 1 == n ? 0 : i + 1];
             ex = b.x - a.x;
             ey = b.y - a.y;
         }
