@@ -142,6 +142,124 @@ static void convex_touch_should_separate_and_detect(void)
     TEST_ASSERT_FALSE(qc__convex_touch(b, 3, seg, 2, 0));
 }
 
+/* The separating-axis test in full, every projection worked out (as
+ * shared_collide.c did before its shortcuts): the answers its
+ * certificate and early exits must keep. */
+static void ref_project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo, double *hi)
+{
+    size_t i;
+    *lo = *hi = p[0].x * ax + p[0].y * ay;
+    for (i = 1; i < n; i++) {
+        double d = p[i].x * ax + p[i].y * ay;
+        *lo = d < *lo ? d : *lo;
+        *hi = d > *hi ? d : *hi;
+    }
+}
+
+static int ref_separated(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    size_t i;
+    for (i = 0; i < na; i++) {
+        qc_vec2 p = a[i], q = a[(i + 1) % na];
+        double ax = q.y - p.y, ay = p.x - q.x, alo, ahi, blo, bhi, len, e;
+        ref_project(a, na, ax, ay, &alo, &ahi);
+        ref_project(b, nb, ax, ay, &blo, &bhi);
+        len = sqrt(ax * ax + ay * ay);
+        if (len < 1e-15)
+            continue;
+        e = eps * len;
+        if (ahi + e < blo || bhi + e < alo)
+            return 1;
+    }
+    return 0;
+}
+
+static int ref_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    double ax0 = 1e300, ay0 = 1e300, ax1 = -1e300, ay1 = -1e300;
+    double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
+    size_t i;
+    for (i = 0; i < na; i++) {
+        ax0 = fmin(ax0, a[i].x), ay0 = fmin(ay0, a[i].y);
+        ax1 = fmax(ax1, a[i].x), ay1 = fmax(ay1, a[i].y);
+    }
+    for (i = 0; i < nb; i++) {
+        bx0 = fmin(bx0, b[i].x), by0 = fmin(by0, b[i].y);
+        bx1 = fmax(bx1, b[i].x), by1 = fmax(by1, b[i].y);
+    }
+    if (ax1 + eps < bx0 || bx1 + eps < ax0 || ay1 + eps < by0 || by1 + eps < ay0)
+        return 0;
+    return !ref_separated(a, na, b, nb, eps) && !ref_separated(b, nb, a, na, eps);
+}
+
+/* A random convex CCW polygon: n points on a circle, angles sorted. */
+static size_t random_convex(qc_rng *rng, qc_vec2 c, double r, qc_vec2 *out)
+{
+    size_t n = 3 + (size_t)qc_rng_below(rng, 18), i, j;
+    double ang[24];
+    for (i = 0; i < n; i++) {
+        double t = qc_rng_unit(rng) * 2 * QC_PI;
+        for (j = i; j > 0 && ang[j - 1] > t; j--)
+            ang[j] = ang[j - 1];
+        ang[j] = t;
+    }
+    for (i = 0; i < n; i++) {
+        out[i].x = c.x + r * cos(ang[i]);
+        out[i].y = c.y + r * sin(ang[i]);
+    }
+    return n;
+}
+
+/* b: a mirrored across its edge k's line and moved gap along the edge's
+ * outward normal (reversed: CCW again), so the two meet edge to edge. */
+static void mirror_across(const qc_vec2 *a, size_t n, size_t k, double gap, qc_vec2 *b)
+{
+    qc_vec2 p = a[k], q = a[(k + 1) % n];
+    double ex = q.x - p.x, ey = q.y - p.y, l = sqrt(ex * ex + ey * ey), nx = ey / l,
+           ny = -ex / l;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double d = (a[i].x - p.x) * nx + (a[i].y - p.y) * ny;
+        b[n - 1 - i].x = a[i].x - 2 * d * nx + gap * nx;
+        b[n - 1 - i].y = a[i].y - 2 * d * ny + gap * ny;
+    }
+}
+
+static void convex_touch_should_agree_with_the_full_sat(void)
+{
+    static const double gaps[] = {0, 1e-10, -1e-10, 5e-10, 2e-9, -2e-9, 1e-6, -1e-6, 0.05};
+    qc_rng rng;
+    qc_vec2 a[24], b[24];
+    int touch = 0, apart = 0, k;
+
+    qc_rng_seed(&rng, 21);
+    for (k = 0; k < 20000; k++) {
+        qc_vec2 ca = {300 + qc_rng_unit(&rng), 200 + qc_rng_unit(&rng)}, cb;
+        double ra = 1 + 9 * qc_rng_unit(&rng), rb = 1 + 9 * qc_rng_unit(&rng);
+        double eps = (k & 1) ? 1e-9 : 0, t = qc_rng_unit(&rng) * 2 * QC_PI;
+        size_t na = random_convex(&rng, ca, ra, a), nb;
+        int want;
+
+        if (k % 3 == 0) { /* edge to edge, within rounding of the eps margin */
+            nb = na;
+            mirror_across(a, na, (size_t)qc_rng_below(&rng, na),
+                          gaps[qc_rng_below(&rng, sizeof gaps / sizeof gaps[0])], b);
+        } else {
+            double f = 0.2 + 0.9 * qc_rng_unit(&rng);
+            cb.x = ca.x + (ra + rb) * f * cos(t);
+            cb.y = ca.y + (ra + rb) * f * sin(t);
+            nb = random_convex(&rng, cb, rb, b);
+        }
+        want = ref_touch(a, na, b, nb, eps);
+        touch += want;
+        apart += !want;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, qc__convex_touch(a, na, b, nb, eps), "a, b");
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, qc__convex_touch(b, nb, a, na, eps), "b, a");
+    }
+    TEST_ASSERT_GREATER_THAN_INT(3000, touch); /* both answers, many times */
+    TEST_ASSERT_GREATER_THAN_INT(3000, apart);
+}
+
 static void from_path_should_read_attachment_and_legs(void)
 {
     qc_motif_set set = {0};
@@ -216,6 +334,7 @@ int main(void)
     RUN_TEST(builtin_should_refuse_unknown_names);
     RUN_TEST(hull_and_circle_should_handle_known_sets);
     RUN_TEST(convex_touch_should_separate_and_detect);
+    RUN_TEST(convex_touch_should_agree_with_the_full_sat);
     RUN_TEST(from_path_should_read_attachment_and_legs);
     RUN_TEST(builtin_should_free_everything_when_allocation_fails);
     return UNITY_END();
