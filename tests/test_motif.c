@@ -174,7 +174,8 @@ static int ref_separated(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t n
     return 0;
 }
 
-static int ref_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+/* Whether the boxes of a and b come within eps (qc__convex_touch's first test). */
+static int ref_boxes_meet(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
 {
     double ax0 = 1e300, ay0 = 1e300, ax1 = -1e300, ay1 = -1e300;
     double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
@@ -187,9 +188,13 @@ static int ref_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, d
         bx0 = fmin(bx0, b[i].x), by0 = fmin(by0, b[i].y);
         bx1 = fmax(bx1, b[i].x), by1 = fmax(by1, b[i].y);
     }
-    if (ax1 + eps < bx0 || bx1 + eps < ax0 || ay1 + eps < by0 || by1 + eps < ay0)
-        return 0;
-    return !ref_separated(a, na, b, nb, eps) && !ref_separated(b, nb, a, na, eps);
+    return !(ax1 + eps < bx0 || bx1 + eps < ax0 || ay1 + eps < by0 || by1 + eps < ay0);
+}
+
+static int ref_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    return ref_boxes_meet(a, na, b, nb, eps) && !ref_separated(a, na, b, nb, eps) &&
+           !ref_separated(b, nb, a, na, eps);
 }
 
 /* A random convex CCW polygon: n points on a circle, angles sorted. */
@@ -257,6 +262,73 @@ static void convex_touch_should_agree_with_the_full_sat(void)
         TEST_ASSERT_EQUAL_INT_MESSAGE(want, qc__convex_touch(b, nb, a, na, eps), "b, a");
     }
     TEST_ASSERT_GREATER_THAN_INT(3000, touch); /* both answers, many times */
+    TEST_ASSERT_GREATER_THAN_INT(3000, apart);
+}
+
+/* A segment against a convex CCW polygon as shared_collide.c tested it
+ * before its early exits: both ends beyond an edge, else the segment's
+ * own normal with the polygon's whole extent. */
+static int ref_seg_touch(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps)
+{
+    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl, lo, hi, c;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = p[i], b = p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y, el = sqrt(ex * ex + ey * ey);
+        double s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
+        double s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        if (s0 < -eps * el && s1 < -eps * el)
+            return 0;
+    }
+    sl = sqrt(dx * dx + dy * dy);
+    if (sl < 1e-15)
+        return 1;
+    ref_project(p, n, -dy, dx, &lo, &hi);
+    c = -dy * s[0].x + dx * s[0].y;
+    return !(hi + eps * sl < c || c + eps * sl < lo);
+}
+
+static void segment_touch_should_agree_with_the_full_test(void)
+{
+    qc_rng rng;
+    qc_vec2 a[24], s[2];
+    int touch = 0, apart = 0, k;
+
+    qc_rng_seed(&rng, 4);
+    for (k = 0; k < 20000; k++) {
+        qc_vec2 ca = {300 + qc_rng_unit(&rng), 200 + qc_rng_unit(&rng)};
+        double r = 1 + 9 * qc_rng_unit(&rng), eps = (k & 1) ? 1e-9 : 0;
+        double t = qc_rng_unit(&rng) * 2 * QC_PI, u = qc_rng_unit(&rng) * 2 * QC_PI;
+        double d = r * (0.5 + 0.7 * qc_rng_unit(&rng)), h = r * 2 * qc_rng_unit(&rng);
+        size_t n = random_convex(&rng, ca, r, a);
+        int want;
+
+        if (k % 3 == 0) { /* tangent to the circle at a vertex, just off it either side */
+            qc_vec2 v = a[qc_rng_below(&rng, n)];
+            double rx = (v.x - ca.x) / r, ry = (v.y - ca.y) / r;
+            double off = (qc_rng_unit(&rng) - 0.5) * 1e-8;
+            s[0].x = v.x + off * rx - h * ry;
+            s[0].y = v.y + off * ry + h * rx;
+            s[1].x = v.x + off * rx + h * ry;
+            s[1].y = v.y + off * ry - h * rx;
+            if (qc_rng_below(&rng, 2)) { /* the polygon on either side of its normal */
+                qc_vec2 w = s[0];
+                s[0] = s[1];
+                s[1] = w;
+            }
+        } else { /* a chord of a circle about the polygon's centre */
+            s[0].x = ca.x + d * cos(t) + h * cos(u);
+            s[0].y = ca.y + d * sin(t) + h * sin(u);
+            s[1].x = ca.x + d * cos(t) - h * cos(u);
+            s[1].y = ca.y + d * sin(t) - h * sin(u);
+        }
+        want = ref_boxes_meet(a, n, s, 2, eps) && ref_seg_touch(s, a, n, eps);
+        touch += want;
+        apart += !want;
+        TEST_ASSERT_EQUAL_INT(want, qc__convex_touch(a, n, s, 2, eps));
+        TEST_ASSERT_EQUAL_INT(want, qc__convex_touch(s, 2, a, n, eps));
+    }
+    TEST_ASSERT_GREATER_THAN_INT(3000, touch);
     TEST_ASSERT_GREATER_THAN_INT(3000, apart);
 }
 
@@ -335,6 +407,7 @@ int main(void)
     RUN_TEST(hull_and_circle_should_handle_known_sets);
     RUN_TEST(convex_touch_should_separate_and_detect);
     RUN_TEST(convex_touch_should_agree_with_the_full_sat);
+    RUN_TEST(segment_touch_should_agree_with_the_full_test);
     RUN_TEST(from_path_should_read_attachment_and_legs);
     RUN_TEST(builtin_should_free_everything_when_allocation_fails);
     return UNITY_END();
