@@ -142,6 +142,196 @@ static void convex_touch_should_separate_and_detect(void)
     TEST_ASSERT_FALSE(qc__convex_touch(b, 3, seg, 2, 0));
 }
 
+/* The separating-axis test in full, every projection worked out (as
+ * shared_collide.c did before its shortcuts): the answers its
+ * certificate and early exits must keep. */
+static void ref_project(const qc_vec2 *p, size_t n, double ax, double ay, double *lo, double *hi)
+{
+    size_t i;
+    *lo = *hi = p[0].x * ax + p[0].y * ay;
+    for (i = 1; i < n; i++) {
+        double d = p[i].x * ax + p[i].y * ay;
+        *lo = d < *lo ? d : *lo;
+        *hi = d > *hi ? d : *hi;
+    }
+}
+
+static int ref_separated(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    size_t i;
+    for (i = 0; i < na; i++) {
+        qc_vec2 p = a[i], q = a[(i + 1) % na];
+        double ax = q.y - p.y, ay = p.x - q.x, alo, ahi, blo, bhi, len, e;
+        ref_project(a, na, ax, ay, &alo, &ahi);
+        ref_project(b, nb, ax, ay, &blo, &bhi);
+        len = sqrt(ax * ax + ay * ay);
+        if (len < 1e-15)
+            continue;
+        e = eps * len;
+        if (ahi + e < blo || bhi + e < alo)
+            return 1;
+    }
+    return 0;
+}
+
+/* Whether the boxes of a and b come within eps (qc__convex_touch's first test). */
+static int ref_boxes_meet(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    double ax0 = 1e300, ay0 = 1e300, ax1 = -1e300, ay1 = -1e300;
+    double bx0 = 1e300, by0 = 1e300, bx1 = -1e300, by1 = -1e300;
+    size_t i;
+    for (i = 0; i < na; i++) {
+        ax0 = fmin(ax0, a[i].x), ay0 = fmin(ay0, a[i].y);
+        ax1 = fmax(ax1, a[i].x), ay1 = fmax(ay1, a[i].y);
+    }
+    for (i = 0; i < nb; i++) {
+        bx0 = fmin(bx0, b[i].x), by0 = fmin(by0, b[i].y);
+        bx1 = fmax(bx1, b[i].x), by1 = fmax(by1, b[i].y);
+    }
+    return !(ax1 + eps < bx0 || bx1 + eps < ax0 || ay1 + eps < by0 || by1 + eps < ay0);
+}
+
+static int ref_touch(const qc_vec2 *a, size_t na, const qc_vec2 *b, size_t nb, double eps)
+{
+    return ref_boxes_meet(a, na, b, nb, eps) && !ref_separated(a, na, b, nb, eps) &&
+           !ref_separated(b, nb, a, na, eps);
+}
+
+/* A random convex CCW polygon: n points on a circle, angles sorted. */
+static size_t random_convex(qc_rng *rng, qc_vec2 c, double r, qc_vec2 *out)
+{
+    size_t n = 3 + (size_t)qc_rng_below(rng, 18), i, j;
+    double ang[24];
+    for (i = 0; i < n; i++) {
+        double t = qc_rng_unit(rng) * 2 * QC_PI;
+        for (j = i; j > 0 && ang[j - 1] > t; j--)
+            ang[j] = ang[j - 1];
+        ang[j] = t;
+    }
+    for (i = 0; i < n; i++) {
+        out[i].x = c.x + r * cos(ang[i]);
+        out[i].y = c.y + r * sin(ang[i]);
+    }
+    return n;
+}
+
+/* b: a mirrored across its edge k's line and moved gap along the edge's
+ * outward normal (reversed: CCW again), so the two meet edge to edge. */
+static void mirror_across(const qc_vec2 *a, size_t n, size_t k, double gap, qc_vec2 *b)
+{
+    qc_vec2 p = a[k], q = a[(k + 1) % n];
+    double ex = q.x - p.x, ey = q.y - p.y, l = sqrt(ex * ex + ey * ey), nx = ey / l,
+           ny = -ex / l;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        double d = (a[i].x - p.x) * nx + (a[i].y - p.y) * ny;
+        b[n - 1 - i].x = a[i].x - 2 * d * nx + gap * nx;
+        b[n - 1 - i].y = a[i].y - 2 * d * ny + gap * ny;
+    }
+}
+
+static void convex_touch_should_agree_with_the_full_sat(void)
+{
+    static const double gaps[] = {0, 1e-10, -1e-10, 5e-10, 2e-9, -2e-9, 1e-6, -1e-6, 0.05};
+    qc_rng rng;
+    qc_vec2 a[24], b[24];
+    int touch = 0, apart = 0, k;
+
+    qc_rng_seed(&rng, 21);
+    for (k = 0; k < 20000; k++) {
+        qc_vec2 ca = {300 + qc_rng_unit(&rng), 200 + qc_rng_unit(&rng)}, cb;
+        double ra = 1 + 9 * qc_rng_unit(&rng), rb = 1 + 9 * qc_rng_unit(&rng);
+        double eps = (k & 1) ? 1e-9 : 0, t = qc_rng_unit(&rng) * 2 * QC_PI;
+        size_t na = random_convex(&rng, ca, ra, a), nb;
+        int want;
+
+        if (k % 3 == 0) { /* edge to edge, within rounding of the eps margin */
+            nb = na;
+            mirror_across(a, na, (size_t)qc_rng_below(&rng, na),
+                          gaps[qc_rng_below(&rng, sizeof gaps / sizeof gaps[0])], b);
+        } else {
+            double f = 0.2 + 0.9 * qc_rng_unit(&rng);
+            cb.x = ca.x + (ra + rb) * f * cos(t);
+            cb.y = ca.y + (ra + rb) * f * sin(t);
+            nb = random_convex(&rng, cb, rb, b);
+        }
+        want = ref_touch(a, na, b, nb, eps);
+        touch += want;
+        apart += !want;
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, qc__convex_touch(a, na, b, nb, eps), "a, b");
+        TEST_ASSERT_EQUAL_INT_MESSAGE(want, qc__convex_touch(b, nb, a, na, eps), "b, a");
+    }
+    TEST_ASSERT_GREATER_THAN_INT(3000, touch); /* both answers, many times */
+    TEST_ASSERT_GREATER_THAN_INT(3000, apart);
+}
+
+/* A segment against a convex CCW polygon as shared_collide.c tested it
+ * before its early exits: both ends beyond an edge, else the segment's
+ * own normal with the polygon's whole extent. */
+static int ref_seg_touch(const qc_vec2 *s, const qc_vec2 *p, size_t n, double eps)
+{
+    double dx = s[1].x - s[0].x, dy = s[1].y - s[0].y, sl, lo, hi, c;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        qc_vec2 a = p[i], b = p[(i + 1) % n];
+        double ex = b.x - a.x, ey = b.y - a.y, el = sqrt(ex * ex + ey * ey);
+        double s0 = ex * (s[0].y - a.y) - ey * (s[0].x - a.x);
+        double s1 = ex * (s[1].y - a.y) - ey * (s[1].x - a.x);
+        if (s0 < -eps * el && s1 < -eps * el)
+            return 0;
+    }
+    sl = sqrt(dx * dx + dy * dy);
+    if (sl < 1e-15)
+        return 1;
+    ref_project(p, n, -dy, dx, &lo, &hi);
+    c = -dy * s[0].x + dx * s[0].y;
+    return !(hi + eps * sl < c || c + eps * sl < lo);
+}
+
+static void segment_touch_should_agree_with_the_full_test(void)
+{
+    qc_rng rng;
+    qc_vec2 a[24], s[2];
+    int touch = 0, apart = 0, k;
+
+    qc_rng_seed(&rng, 4);
+    for (k = 0; k < 20000; k++) {
+        qc_vec2 ca = {300 + qc_rng_unit(&rng), 200 + qc_rng_unit(&rng)};
+        double r = 1 + 9 * qc_rng_unit(&rng), eps = (k & 1) ? 1e-9 : 0;
+        double t = qc_rng_unit(&rng) * 2 * QC_PI, u = qc_rng_unit(&rng) * 2 * QC_PI;
+        double d = r * (0.5 + 0.7 * qc_rng_unit(&rng)), h = r * 2 * qc_rng_unit(&rng);
+        size_t n = random_convex(&rng, ca, r, a);
+        int want;
+
+        if (k % 3 == 0) { /* tangent to the circle at a vertex, just off it either side */
+            qc_vec2 v = a[qc_rng_below(&rng, n)];
+            double rx = (v.x - ca.x) / r, ry = (v.y - ca.y) / r;
+            double off = (qc_rng_unit(&rng) - 0.5) * 1e-8;
+            s[0].x = v.x + off * rx - h * ry;
+            s[0].y = v.y + off * ry + h * rx;
+            s[1].x = v.x + off * rx + h * ry;
+            s[1].y = v.y + off * ry - h * rx;
+            if (qc_rng_below(&rng, 2)) { /* the polygon on either side of its normal */
+                qc_vec2 w = s[0];
+                s[0] = s[1];
+                s[1] = w;
+            }
+        } else { /* a chord of a circle about the polygon's centre */
+            s[0].x = ca.x + d * cos(t) + h * cos(u);
+            s[0].y = ca.y + d * sin(t) + h * sin(u);
+            s[1].x = ca.x + d * cos(t) - h * cos(u);
+            s[1].y = ca.y + d * sin(t) - h * sin(u);
+        }
+        want = ref_boxes_meet(a, n, s, 2, eps) && ref_seg_touch(s, a, n, eps);
+        touch += want;
+        apart += !want;
+        TEST_ASSERT_EQUAL_INT(want, qc__convex_touch(a, n, s, 2, eps));
+        TEST_ASSERT_EQUAL_INT(want, qc__convex_touch(s, 2, a, n, eps));
+    }
+    TEST_ASSERT_GREATER_THAN_INT(3000, touch);
+    TEST_ASSERT_GREATER_THAN_INT(3000, apart);
+}
+
 static void from_path_should_read_attachment_and_legs(void)
 {
     qc_motif_set set = {0};
@@ -216,6 +406,8 @@ int main(void)
     RUN_TEST(builtin_should_refuse_unknown_names);
     RUN_TEST(hull_and_circle_should_handle_known_sets);
     RUN_TEST(convex_touch_should_separate_and_detect);
+    RUN_TEST(convex_touch_should_agree_with_the_full_sat);
+    RUN_TEST(segment_touch_should_agree_with_the_full_test);
     RUN_TEST(from_path_should_read_attachment_and_legs);
     RUN_TEST(builtin_should_free_everything_when_allocation_fails);
     return UNITY_END();
