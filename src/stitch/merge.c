@@ -42,13 +42,12 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
                         (unsigned long)longest);
     mg->slots = 2 * longest;
     mg->cells = longest / POINTS_PER_CELL + 1;
-    mg->m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *mg->m);
     mg->table = (uint32_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
     mg->start = (uint32_t *)qc__alloc_array(ctx, mg->cells + 1, sizeof *mg->start);
     mg->place = (uint32_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
     mg->gone = (unsigned char *)qc__alloc(ctx, longest);
     mg->cap = longest;
-    if (mg->m == NULL || mg->table == NULL || mg->start == NULL || mg->place == NULL ||
+    if (mg->table == NULL || mg->start == NULL || mg->place == NULL ||
         mg->gone == NULL) {
         qc__merge_free(ctx, mg);
         return qc__fail(ctx, QC_ENOMEM, "out of memory: merging a piece of %lu points",
@@ -59,7 +58,6 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
 
 void qc__merge_free(qc_ctx *ctx, qc__merge *mg)
 {
-    qc__free(ctx, mg->m, mg->cap * sizeof *mg->m);
     qc__free(ctx, mg->table, mg->slots * sizeof *mg->table);
     qc__free(ctx, mg->start, (mg->cells + 1) * sizeof *mg->start);
     qc__free(ctx, mg->place, mg->cap * sizeof *mg->place);
@@ -189,12 +187,16 @@ static double stray(const qc_vec2 *v, size_t lo, size_t hi, qc_vec2 a, qc_vec2 b
     return sqrt(d2);
 }
 
+/* m[k - 1], the kept point the merge may still move, is held in tail and
+ * stored only once a later point is kept: m may then run over v itself (m
+ * <= v), as what the merge reads of v is past m[k - 2] (stray reads from
+ * v[before + 1], and m[k - 2] is v[before] or earlier). */
 size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg,
-                       double floor_len, double keep)
+                       double floor_len, double keep, qc_vec2 *m)
 {
-    qc_vec2 *m = mg->m;
     const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
+    qc_vec2 tail; /* m[k - 1] */
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
     /* a step whose square exceeds this is at least min_seg long, whatever
      * the square root rounds to: most steps, without one (none when
@@ -205,37 +207,42 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         return 0;
     qc__merge_junctions(mg, v, n);
     memset(gone, 0, n);
-    m[k++] = v[0];
+    tail = v[0];
+    k = 1;
     for (i = 1; i < n; i++) {
         int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
         int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
-        double dx = v[i].x - m[k - 1].x, dy = v[i].y - m[k - 1].y, d, drop_here, drop_prev;
+        double dx = v[i].x - tail.x, dy = v[i].y - tail.y, d, drop_here, drop_prev;
 
-        d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(m[k - 1], v[i]);
+        d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(tail, v[i]);
         if (d == 0 && !last)
             continue;
         if (d >= min_seg || (i - at > MAX_MERGE_RUN && !last)) {
             before = at;
             at = i;
-            m[k++] = v[i];
+            m[k - 1] = tail;
+            tail = v[i];
+            k++;
             continue;
         }
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
          * moving m[k - 1] onto v[i]: the chord runs from m[k - 2] */
-        drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, m[k - 1], v[i + 1]);
+        drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, tail, v[i + 1]);
         drop_prev = k >= 2 && i - before <= MAX_MERGE_RUN
                     ? stray(v, before + 1, i, m[k - 2], v[i]) : HUGE_VAL;
         if (here_ok && drop_here <= keep)
             continue;
         if (prev_ok && drop_prev <= keep) {
-            m[k - 1] = v[i];
+            tail = v[i];
             at = i;
             continue;
         }
         if (d >= floor_len) { /* the path turns here: the short stitch stays */
             before = at;
             at = i;
-            m[k++] = v[i];
+            m[k - 1] = tail;
+            tail = v[i];
+            k++;
             continue;
         }
         /* too short to sew: merge all the same, sparing a junction; of two,
@@ -249,11 +256,14 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         if (here_ok)
             continue;
         if (k >= 2) {
-            m[k - 1] = v[i];
+            tail = v[i];
             at = i;
         } else if (d > 0) {
-            m[k++] = v[i]; /* a piece shorter than floor_len in all */
+            m[k - 1] = tail;
+            tail = v[i];
+            k++; /* a piece shorter than floor_len in all */
         }
     }
+    m[k - 1] = tail;
     return k;
 }
