@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "../curve/curve_internal.h"
 #include "quiltc/curve.h"
 #include "stitch_internal.h"
 
@@ -343,8 +344,10 @@ static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
             return qc__fail(ctx, QC_ERANGE,
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
-    rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
-    qc_path_free(ctx, taken);
+    if (taken != NULL) /* the path goes as the points come */
+        rc = qc__curve_flatten_taking(ctx, taken, r.tol, &pts, &ends);
+    else
+        rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
     if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
         rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);
