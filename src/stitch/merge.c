@@ -21,8 +21,8 @@
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
 /* The junction table is cut by a grid of cells over the piece's box, each
- * cell's places hashed within its own run of slots (two per point in the
- * cell). A table hashed over all of it misses the cache at every probe: at
+ * cell's places hashed within its own run of slots (cell_slots: one and a
+ * half per point of the cell). A table hashed over all of it misses the cache at every probe: at
  * 12 million points (a 10 m wanderer) that was 80% of the merge; places
  * near in space are near in the table, and the path walks through space. */
 #define POINTS_PER_CELL 4
@@ -40,12 +40,12 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
     if (longest > UINT32_MAX / 2 - 1) /* a slot holds (index + 1) * 2 + 1 */
         return qc__fail(ctx, QC_ELIMIT, "a piece of %lu points is too long to merge",
                         (unsigned long)longest);
-    mg->slots = 2 * longest;
     mg->cells = longest / POINTS_PER_CELL + 1;
+    mg->slots = longest + longest / 2 + mg->cells; /* cell_slots() over every cell */
     mg->table = (uint32_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
     mg->start = (uint32_t *)qc__alloc_array(ctx, mg->cells + 1, sizeof *mg->start);
     mg->place = (uint32_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
-    mg->gone = (unsigned char *)qc__alloc(ctx, longest);
+    mg->gone = (unsigned char *)qc__alloc(ctx, longest / 8 + 1);
     mg->cap = longest;
     if (mg->table == NULL || mg->start == NULL || mg->place == NULL ||
         mg->gone == NULL) {
@@ -61,8 +61,26 @@ void qc__merge_free(qc_ctx *ctx, qc__merge *mg)
     qc__free(ctx, mg->table, mg->slots * sizeof *mg->table);
     qc__free(ctx, mg->start, (mg->cells + 1) * sizeof *mg->start);
     qc__free(ctx, mg->place, mg->cap * sizeof *mg->place);
-    qc__free(ctx, mg->gone, mg->cap);
+    qc__free(ctx, mg->gone, mg->cap / 8 + 1);
     memset(mg, 0, sizeof *mg);
+}
+
+/* Slots of a cell of cnt points: one and a half per point (not two: the
+ * table is the largest scratch beside the points at the peak of a large
+ * plan), and at least one more than it has places, so a probe always ends. */
+static uint32_t cell_slots(uint32_t cnt)
+{
+    return cnt + cnt / 2 + 1;
+}
+
+static int is_gone(const unsigned char *gone, uint32_t place)
+{
+    return gone[place / 8] >> (place % 8) & 1;
+}
+
+static void set_gone(unsigned char *gone, uint32_t place)
+{
+    gone[place / 8] = (unsigned char)(gone[place / 8] | 1u << (place % 8));
 }
 
 static uint64_t bits_of(double x)
@@ -140,11 +158,11 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     size_t i, ncell = (size_t)g.gx * g.gy;
 
     memset(start, 0, (ncell + 1) * sizeof *start);
-    for (i = 0; i < n; i++) /* two slots per point of the cell */
-        start[cell_of(&g, v[i]) + 1] += 2;
+    for (i = 0; i < n; i++) /* the points of each cell, then its slots */
+        start[cell_of(&g, v[i]) + 1]++;
     for (i = 0; i < ncell; i++)
-        start[i + 1] += start[i];
-    memset(table, 0, 2 * n * sizeof *table);
+        start[i + 1] = start[i] + cell_slots(start[i + 1]);
+    memset(table, 0, start[ncell] * sizeof *table);
     for (i = 0; i < n; i++) {
         uint32_t c = cell_of(&g, v[i]), lo = start[c], size = start[c + 1] - lo;
         uint32_t h = lo + (uint32_t)(((uint64_t)place_hash(v[i]) * size) >> 32);
@@ -206,7 +224,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     if (n == 0)
         return 0;
     qc__merge_junctions(mg, v, n);
-    memset(gone, 0, n);
+    memset(gone, 0, n / 8 + 1);
     tail = v[0];
     k = 1;
     for (i = 1; i < n; i++) {
@@ -248,8 +266,9 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         /* too short to sew: merge all the same, sparing a junction; of two,
          * as an earlier pass did; else where it strays less */
         if (joints && !last) {
-            here_ok = gone[place[i]] || (!gone[place[at]] && (k < 2 || drop_here <= drop_prev));
-            gone[here_ok ? place[i] : place[at]] = 1;
+            here_ok = is_gone(gone, place[i]) ||
+                      (!is_gone(gone, place[at]) && (k < 2 || drop_here <= drop_prev));
+            set_gone(gone, here_ok ? place[i] : place[at]);
         } else if (here_ok == prev_ok) {
             here_ok = !last && drop_here <= drop_prev;
         }

@@ -17,11 +17,11 @@ QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
 /* Scratch for qc__merge_piece, sized for the longest piece. */
 typedef struct qc__merge {
     uint32_t *table;      /* a hash table of the piece's places (merge.c) */
-    size_t slots;         /* its size: two per point */
+    size_t slots;         /* its size: one and a half per point, one per cell */
     uint32_t *start;      /* per cell of a grid over the piece: its first slot */
     size_t cells;         /* cells at most */
     uint32_t *place;      /* per point: where the piece passes it again */
-    unsigned char *gone;  /* per place: a junction merged away */
+    unsigned char *gone;  /* a bit per place: a junction merged away */
     size_t cap;
 } qc__merge;
 
