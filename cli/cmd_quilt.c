@@ -197,7 +197,8 @@ static int load_plan(const quilt_opts *q, quilt_plan *plan)
     return rc;
 }
 
-static void print_stats(const qc_patches *ps, const qc_quilt_result *res,
+/* pieces: the sewn path's, counted before the plan took it */
+static void print_stats(const qc_patches *ps, const qc_quilt_result *res, size_t pieces,
                         const plan_rule *const *chosen, const qc_plan *plan, const cli_timer *t)
 {
     cJSON *o = cJSON_CreateObject(), *arr, *ms;
@@ -242,7 +243,7 @@ static void print_stats(const qc_patches *ps, const qc_quilt_result *res,
     cJSON_AddNumberToObject(o, "ditch_mm", res->ditch_mm);
     cJSON_AddNumberToObject(o, "link_mm", res->link_mm);
     cJSON_AddNumberToObject(o, "jumps", (double)est.jumps);
-    cJSON_AddNumberToObject(o, "pieces", (double)qc_path_pieces(&res->path));
+    cJSON_AddNumberToObject(o, "pieces", (double)pieces);
     cJSON_AddNumberToObject(o, "sewn_mm", est.sewn_mm);
     cJSON_AddNumberToObject(o, "stitch_points", (double)plan->n);
     cJSON_AddNumberToObject(o, "stitches", (double)est.stitches);
@@ -271,6 +272,7 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     qc_quilt_params qp;
     qc_io_opts io;
     cli_timer timer;
+    size_t pieces = 0;
     int rc = cli_pattern_finish(ctx, &q->pat);
 
     memset(&plan, 0, sizeof plan);
@@ -291,7 +293,9 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
     cli_timer_mark(&timer, "plan");
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = q->tie;
-    if (rc == CLI_OK && qc_stitch_plan(ctx, &top.res.path, NULL, &sp, &st) < 0)
+    pieces = qc_path_pieces(&top.res.path);
+    /* nothing else reads the path: it goes as it is flattened */
+    if (rc == CLI_OK && qc_stitch_plan_taking(ctx, &top.res.path, NULL, &sp, &st) < 0)
         rc = cli_fail(ctx, "stitch plan", ctx->status);
     cli_timer_mark(&timer, "write");
     memset(&io, 0, sizeof io);
@@ -304,7 +308,7 @@ static int run(qc_ctx *ctx, quilt_opts *q, const int *fmt)
         rc = cli_write_plans(ctx, q->out, fmt, q->nout, &st, &io);
     cli_timer_mark(&timer, NULL);
     if (rc == CLI_OK && q->stats)
-        print_stats(&top.ps, &top.res, top.chosen, &st, &timer);
+        print_stats(&top.ps, &top.res, pieces, top.chosen, &st, &timer);
     qc_plan_free(ctx, &st);
     qc_region_free(ctx, &drawn);
     cli_quilt_free(ctx, &top);

@@ -217,6 +217,39 @@ static void numbers_should_round_half_away_from_zero_and_format_exactly(void)
     qc_plan_free(&ctx, &plan);
 }
 
+/* Every digit count, both signs, against printf: the formatter writes two
+ * digits per step, so odd and even lengths and the padding of the
+ * fraction's leading zeros each take their own way through it. */
+static void numbers_should_format_as_printf_at_every_length(void)
+{
+    static const uint64_t pow10[7] = {1, 10, 100, 1000, 10000, 100000, 1000000};
+    uint64_t base = 1;
+    int e, d, s, k;
+
+    for (e = 0; e <= 18; e++, base *= 10) {
+        for (k = -1; k <= 1; k++) {
+            uint64_t u = base + (uint64_t)(int64_t)k;
+
+            for (s = 0; s < 2; s++) {
+                int64_t v = s ? -(int64_t)u : (int64_t)u;
+                char want[64], buf[64], *end = buf + sizeof buf - 1, *got;
+
+                *end = '\0';
+                sprintf(want, "%lld", (long long)v);
+                got = qc__fmt_int(end, v);
+                TEST_ASSERT_EQUAL_STRING(want, got);
+                for (d = 1; d <= 6; d++) {
+                    sprintf(want, "%s%llu.%0*llu", s && u != 0 ? "-" : "",
+                            (unsigned long long)(u / pow10[d]), d,
+                            (unsigned long long)(u % pow10[d]));
+                    got = qc__fmt_fixed(end, v, d, 0);
+                    TEST_ASSERT_EQUAL_STRING(want, got);
+                }
+            }
+        }
+    }
+}
+
 static void pat_should_refuse_negative_and_report_errors(void)
 {
     qc_plan plan = {0}, empty = {0};
@@ -576,6 +609,7 @@ int main(void)
     RUN_TEST(pat_should_match_golden_bytes);
     RUN_TEST(pat_should_use_the_exact_dialect);
     RUN_TEST(numbers_should_round_half_away_from_zero_and_format_exactly);
+    RUN_TEST(numbers_should_format_as_printf_at_every_length);
     RUN_TEST(pat_should_refuse_negative_and_report_errors);
     RUN_TEST(writers_should_report_write_failure);
     RUN_TEST(pat_should_round_trip_within_half_a_thousandth);

@@ -7,6 +7,7 @@
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
+#include "../src/curve/curve_internal.h"
 #include "../src/stitch/stitch_internal.h"
 
 static testalloc ta;
@@ -518,6 +519,63 @@ static void plan_taking_should_match_and_free_the_path(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* qc__curve_flatten_taking: the points and piece ends of qc_curve_flatten
+ * to the bit (pieces after MOVEs, two MOVEs in a row, a path that starts
+ * without one, lines and cubics), the path freed, and a lower peak than
+ * the path and its points together (the path shrinks behind the walk). */
+static void flatten_taking_should_match_the_forward_flatten(void)
+{
+    int shape;
+
+    for (shape = 0; shape < 3; shape++) {
+        qc_path path = {0}, copy = {0};
+        qc_points want = {0}, got = {0};
+        qc_order wend = {0}, gend = {0};
+        size_t i, before, peak;
+        qc_rng rng;
+
+        qc_rng_seed(&rng, 5 + (uint64_t)shape);
+        if (shape != 1) /* shape 1 starts at (0, 0), without a MOVE */
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(1, 2)));
+        for (i = 0; i < 3000; i++) {
+            double x = (double)qc_rng_below(&rng, 1000) / 7.0;
+            double y = (double)qc_rng_below(&rng, 1000) / 9.0;
+            uint64_t r = qc_rng_below(&rng, 40);
+
+            if (r == 0 || (shape == 2 && r < 3)) /* shape 2: MOVEs in a row too */
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, v2(x, y)));
+            else if (r < 10)
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, v2(x, y)));
+            else
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &path, v2(y, x),
+                                                              v2(x + 3, y - 2), v2(x, y)));
+        }
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, &path, 0.01, &want, &wend));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_append(&ctx, &copy, &path, 0));
+        before = ta.live_bytes;
+        ta.peak_bytes = before;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__curve_flatten_taking(&ctx, &copy, 0.01, &got, &gend));
+        peak = ta.peak_bytes;
+        TEST_ASSERT_TRUE(copy.pt == NULL && copy.cmd == NULL);
+        TEST_ASSERT_TRUE(want.n > 10 * path.npt / 3);
+        TEST_ASSERT_EQUAL_size_t(want.n, got.n);
+        TEST_ASSERT_EQUAL_MEMORY(want.v, got.v, want.n * sizeof *want.v);
+        TEST_ASSERT_TRUE(wend.n > 10);
+        TEST_ASSERT_EQUAL_size_t(wend.n, gend.n);
+        TEST_ASSERT_EQUAL_MEMORY(wend.i, gend.i, wend.n * sizeof *wend.i);
+        /* the path is most of what was live before: the peak stays under
+         * it and the points side by side */
+        TEST_ASSERT_TRUE(peak < before + got.cap * sizeof *got.v - path.npt * sizeof *path.pt / 2);
+        qc_points_free(&ctx, &want);
+        qc_points_free(&ctx, &got);
+        qc_order_free(&ctx, &wend);
+        qc_order_free(&ctx, &gend);
+        qc_path_free(&ctx, &path);
+        TEST_ASSERT_FALSE(ta.size_mismatch);
+        TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+    }
+}
+
 /* Junctions by a sort, for comparison: the least index of each place
  * visited again other than as a repeat of the point before. */
 static const qc_vec2 *sort_v;
@@ -618,6 +676,7 @@ int main(void)
     RUN_TEST(clip_should_keep_exactly_the_inside_length);
     RUN_TEST(plan_should_reject_bad_params_and_survive_oom);
     RUN_TEST(plan_taking_should_match_and_free_the_path);
+    RUN_TEST(flatten_taking_should_match_the_forward_flatten);
     RUN_TEST(junctions_should_be_those_a_sort_finds);
     return UNITY_END();
 }

@@ -361,7 +361,9 @@ int qcw_run(qcw_job *job, int tie_stitches)
     t1 = now_ms();
     memset(&sp, 0, sizeof sp);
     sp.tie_stitches = tie_stitches;
-    rc = qc_stitch_plan(&job->ctx, &job->result.path, NULL, &sp, &job->plan);
+    /* nothing reads the path once planned: it goes as it is flattened (the
+     * peak of a large preview) */
+    rc = qc_stitch_plan_taking(&job->ctx, &job->result.path, NULL, &sp, &job->plan);
     job->plan_ms = now_ms() - t1;
     job->total_ms = now_ms() - t0;
     if (rc < 0)

@@ -15,6 +15,22 @@ typedef int (*qc__curve_point_fn)(void *ud, qc_vec2 p, int start);
 QC__HIDDEN int qc__curve_walk(const qc_path *path, double tol,
                               qc__curve_point_fn fn, void *ud);
 
+/* Points a command takes of the path's point array, as the walk reads them. */
+#define QC__CURVE_CMD_POINTS(cmd) ((cmd) == QC_PATH_CUBIC ? 3u : 1u)
+
+/* The points of command c alone (qc__curve_walk's step): its points start
+ * at path->pt[k], the pen stands at cur; tol2 is the tolerance squared. */
+QC__HIDDEN int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur,
+                             double tol2, qc__curve_point_fn fn, void *ud);
+
+/* qc_curve_flatten's refusals: a tolerance out of range, a point not finite. */
+QC__HIDDEN int qc__curve_flatten_check(qc_ctx *ctx, const qc_path *path, double tol);
+
+/* qc_curve_flatten into empty out and ends for a path it frees, the path
+ * shrinking as the points grow (flatten_taking.c): the same points. */
+QC__HIDDEN int qc__curve_flatten_taking(qc_ctx *ctx, qc_path *path, double tol,
+                                        qc_points *out, qc_order *ends);
+
 /* Widens box to hold p; the first point (*any == 0) sets it. Comparisons,
  * not fmin/fmax (a call per point): a NaN coordinate gives way as in fmin. */
 static inline void qc__box_take(qc_bbox *box, int *any, qc_vec2 p)

@@ -47,6 +47,31 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2,
     return QC_OK;
 }
 
+int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur, double tol2,
+                  qc__curve_point_fn fn, void *ud)
+{
+    unsigned char cmd = path->cmd[c];
+    int rc;
+
+    if (c == 0 && cmd != QC_PATH_MOVE) {
+        rc = fn(ud, cur, 1);
+        if (rc < 0)
+            return rc;
+    }
+    if (cmd == QC_PATH_CUBIC) {
+        qc_vec2 q[4];
+
+        q[0] = cur;
+        q[1] = path->pt[k];
+        q[2] = path->pt[k + 1];
+        q[3] = path->pt[k + 2];
+        if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3]))
+            return flatten_cubic(q, tol2, fn, ud);
+        return fn(ud, q[3], 0); /* NaN would subdivide to the depth bound for nothing */
+    }
+    return fn(ud, path->pt[k], cmd == QC_PATH_MOVE);
+}
+
 int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
                    void *ud)
 {
@@ -56,32 +81,11 @@ int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
     int rc;
 
     for (c = 0; c < path->ncmd; c++) {
-        unsigned char cmd = path->cmd[c];
-
-        if (c == 0 && cmd != QC_PATH_MOVE) {
-            rc = fn(ud, cur, 1);
-            if (rc < 0)
-                return rc;
-        }
-        if (cmd == QC_PATH_CUBIC) {
-            qc_vec2 q[4];
-
-            q[0] = cur;
-            q[1] = path->pt[k];
-            q[2] = path->pt[k + 1];
-            q[3] = path->pt[k + 2];
-            if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3]))
-                rc = flatten_cubic(q, tol2, fn, ud);
-            else /* NaN would subdivide to the depth bound for nothing */
-                rc = fn(ud, q[3], 0);
-            cur = q[3];
-            k += 3;
-        } else {
-            cur = path->pt[k++];
-            rc = fn(ud, cur, cmd == QC_PATH_MOVE);
-        }
+        rc = qc__curve_cmd(path, c, k, cur, tol2, fn, ud);
         if (rc < 0)
             return rc;
+        k += QC__CURVE_CMD_POINTS(path->cmd[c]);
+        cur = path->pt[k - 1];
     }
     return QC_OK;
 }
@@ -105,12 +109,9 @@ static int collect(void *ud, qc_vec2 p, int start)
     return qc_points_push(o->ctx, o->pts, p);
 }
 
-int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
-                     qc_points *out, qc_order *piece_end)
+int qc__curve_flatten_check(qc_ctx *ctx, const qc_path *path, double tol)
 {
-    flat_out o;
-    size_t i, n0 = out->n, e0 = piece_end != NULL ? piece_end->n : 0;
-    int rc;
+    size_t i;
 
     if (!(tol > 0) || tol > 1e6)
         return qc__fail(ctx, QC_ERANGE,
@@ -119,6 +120,17 @@ int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
         if (!finite(path->pt[i]))
             return qc__fail(ctx, QC_ERANGE, "path point %lu (%g, %g) is not finite",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
+    return QC_OK;
+}
+
+int qc_curve_flatten(qc_ctx *ctx, const qc_path *path, double tol,
+                     qc_points *out, qc_order *piece_end)
+{
+    flat_out o;
+    size_t n0 = out->n, e0 = piece_end != NULL ? piece_end->n : 0;
+    int rc;
+
+    QC__TRY(qc__curve_flatten_check(ctx, path, tol));
     o.ctx = ctx;
     o.pts = out;
     o.ends = piece_end;

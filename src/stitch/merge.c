@@ -21,8 +21,8 @@
 
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
 /* The junction table is cut by a grid of cells over the piece's box, each
- * cell's places hashed within its own run of slots (two per point in the
- * cell). A table hashed over all of it misses the cache at every probe: at
+ * cell's places hashed within its own run of slots (cell_slots: one and a
+ * half per point of the cell). A table hashed over all of it misses the cache at every probe: at
  * 12 million points (a 10 m wanderer) that was 80% of the merge; places
  * near in space are near in the table, and the path walks through space. */
 #define POINTS_PER_CELL 4
@@ -40,15 +40,14 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
     if (longest > UINT32_MAX / 2 - 1) /* a slot holds (index + 1) * 2 + 1 */
         return qc__fail(ctx, QC_ELIMIT, "a piece of %lu points is too long to merge",
                         (unsigned long)longest);
-    mg->slots = 2 * longest;
     mg->cells = longest / POINTS_PER_CELL + 1;
-    mg->m = (qc_vec2 *)qc__alloc_array(ctx, longest, sizeof *mg->m);
+    mg->slots = longest + longest / 2 + mg->cells; /* cell_slots() over every cell */
     mg->table = (uint32_t *)qc__alloc_array(ctx, mg->slots, sizeof *mg->table);
     mg->start = (uint32_t *)qc__alloc_array(ctx, mg->cells + 1, sizeof *mg->start);
     mg->place = (uint32_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
-    mg->gone = (unsigned char *)qc__alloc(ctx, longest);
+    mg->gone = (unsigned char *)qc__alloc(ctx, longest / 8 + 1);
     mg->cap = longest;
-    if (mg->m == NULL || mg->table == NULL || mg->start == NULL || mg->place == NULL ||
+    if (mg->table == NULL || mg->start == NULL || mg->place == NULL ||
         mg->gone == NULL) {
         qc__merge_free(ctx, mg);
         return qc__fail(ctx, QC_ENOMEM, "out of memory: merging a piece of %lu points",
@@ -59,12 +58,29 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
 
 void qc__merge_free(qc_ctx *ctx, qc__merge *mg)
 {
-    qc__free(ctx, mg->m, mg->cap * sizeof *mg->m);
     qc__free(ctx, mg->table, mg->slots * sizeof *mg->table);
     qc__free(ctx, mg->start, (mg->cells + 1) * sizeof *mg->start);
     qc__free(ctx, mg->place, mg->cap * sizeof *mg->place);
-    qc__free(ctx, mg->gone, mg->cap);
+    qc__free(ctx, mg->gone, mg->cap / 8 + 1);
     memset(mg, 0, sizeof *mg);
+}
+
+/* Slots of a cell of cnt points: one and a half per point (not two: the
+ * table is the largest scratch beside the points at the peak of a large
+ * plan), and at least one more than it has places, so a probe always ends. */
+static uint32_t cell_slots(uint32_t cnt)
+{
+    return cnt + cnt / 2 + 1;
+}
+
+static int is_gone(const unsigned char *gone, uint32_t place)
+{
+    return gone[place / 8] >> (place % 8) & 1;
+}
+
+static void set_gone(unsigned char *gone, uint32_t place)
+{
+    gone[place / 8] = (unsigned char)(gone[place / 8] | 1u << (place % 8));
 }
 
 static uint64_t bits_of(double x)
@@ -142,11 +158,11 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     size_t i, ncell = (size_t)g.gx * g.gy;
 
     memset(start, 0, (ncell + 1) * sizeof *start);
-    for (i = 0; i < n; i++) /* two slots per point of the cell */
-        start[cell_of(&g, v[i]) + 1] += 2;
+    for (i = 0; i < n; i++) /* the points of each cell, then its slots */
+        start[cell_of(&g, v[i]) + 1]++;
     for (i = 0; i < ncell; i++)
-        start[i + 1] += start[i];
-    memset(table, 0, 2 * n * sizeof *table);
+        start[i + 1] = start[i] + cell_slots(start[i + 1]);
+    memset(table, 0, start[ncell] * sizeof *table);
     for (i = 0; i < n; i++) {
         uint32_t c = cell_of(&g, v[i]), lo = start[c], size = start[c + 1] - lo;
         uint32_t h = lo + (uint32_t)(((uint64_t)place_hash(v[i]) * size) >> 32);
@@ -189,12 +205,16 @@ static double stray(const qc_vec2 *v, size_t lo, size_t hi, qc_vec2 a, qc_vec2 b
     return sqrt(d2);
 }
 
+/* m[k - 1], the kept point the merge may still move, is held in tail and
+ * stored only once a later point is kept: m may then run over v itself (m
+ * <= v), as what the merge reads of v is past m[k - 2] (stray reads from
+ * v[before + 1], and m[k - 2] is v[before] or earlier). */
 size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg,
-                       double floor_len, double keep)
+                       double floor_len, double keep, qc_vec2 *m)
 {
-    qc_vec2 *m = mg->m;
     const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
+    qc_vec2 tail; /* m[k - 1] */
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
     /* a step whose square exceeds this is at least min_seg long, whatever
      * the square root rounds to: most steps, without one (none when
@@ -204,56 +224,65 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     if (n == 0)
         return 0;
     qc__merge_junctions(mg, v, n);
-    memset(gone, 0, n);
-    m[k++] = v[0];
+    memset(gone, 0, n / 8 + 1);
+    tail = v[0];
+    k = 1;
     for (i = 1; i < n; i++) {
         int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
         int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
-        double dx = v[i].x - m[k - 1].x, dy = v[i].y - m[k - 1].y, d, drop_here, drop_prev;
+        double dx = v[i].x - tail.x, dy = v[i].y - tail.y, d, drop_here, drop_prev;
 
-        d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(m[k - 1], v[i]);
+        d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(tail, v[i]);
         if (d == 0 && !last)
             continue;
         if (d >= min_seg || (i - at > MAX_MERGE_RUN && !last)) {
             before = at;
             at = i;
-            m[k++] = v[i];
+            m[k - 1] = tail;
+            tail = v[i];
+            k++;
             continue;
         }
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
          * moving m[k - 1] onto v[i]: the chord runs from m[k - 2] */
-        drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, m[k - 1], v[i + 1]);
+        drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, tail, v[i + 1]);
         drop_prev = k >= 2 && i - before <= MAX_MERGE_RUN
                     ? stray(v, before + 1, i, m[k - 2], v[i]) : HUGE_VAL;
         if (here_ok && drop_here <= keep)
             continue;
         if (prev_ok && drop_prev <= keep) {
-            m[k - 1] = v[i];
+            tail = v[i];
             at = i;
             continue;
         }
         if (d >= floor_len) { /* the path turns here: the short stitch stays */
             before = at;
             at = i;
-            m[k++] = v[i];
+            m[k - 1] = tail;
+            tail = v[i];
+            k++;
             continue;
         }
         /* too short to sew: merge all the same, sparing a junction; of two,
          * as an earlier pass did; else where it strays less */
         if (joints && !last) {
-            here_ok = gone[place[i]] || (!gone[place[at]] && (k < 2 || drop_here <= drop_prev));
-            gone[here_ok ? place[i] : place[at]] = 1;
+            here_ok = is_gone(gone, place[i]) ||
+                      (!is_gone(gone, place[at]) && (k < 2 || drop_here <= drop_prev));
+            set_gone(gone, here_ok ? place[i] : place[at]);
         } else if (here_ok == prev_ok) {
             here_ok = !last && drop_here <= drop_prev;
         }
         if (here_ok)
             continue;
         if (k >= 2) {
-            m[k - 1] = v[i];
+            tail = v[i];
             at = i;
         } else if (d > 0) {
-            m[k++] = v[i]; /* a piece shorter than floor_len in all */
+            m[k - 1] = tail;
+            tail = v[i];
+            k++; /* a piece shorter than floor_len in all */
         }
     }
+    m[k - 1] = tail;
     return k;
 }

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "../curve/curve_internal.h"
 #include "quiltc/curve.h"
 #include "stitch_internal.h"
 
@@ -246,58 +247,15 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
     return total;
 }
 
-static size_t merge(qc__merge *mg, const qc_vec2 *v, size_t n, const resolved *r)
-{
-    return qc__merge_piece(mg, v, n, r->min_seg, r->floor_len, r->keep);
-}
-
-/* A single piece's plan from the merge's kept points m, the rest of the
- * scratch freed first. Without ties or splits the plan is m as it stands:
- * it takes m's array and compacts it in place (emit_piece writes point k
- * only after reading m[k] and adds nothing), so no second copy is made. */
-static int build_one(qc_ctx *ctx, qc__merge *mg, size_t cnt, double total, const resolved *r,
-                     qc_plan *out)
-{
-    qc_vec2 *m = mg->m, *fit;
-    size_t cap = mg->cap;
-    int rc;
-
-    mg->m = NULL;
-    qc__merge_free(ctx, mg);
-    if (r->ties > 0 || total != (double)cnt) {
-        rc = plan_grow(ctx, out, (size_t)total);
-        if (rc == QC_OK)
-            rc = emit_piece(ctx, out, m, cnt, r);
-        qc__free(ctx, m, cap * sizeof *m);
-        return rc;
-    }
-    fit = (qc_vec2 *)qc__realloc(ctx, m, cap * sizeof *m, cnt * sizeof *m); /* a shrink */
-    if (fit == NULL) {
-        qc__free(ctx, m, cap * sizeof *m);
-        return QC_ENOMEM;
-    }
-    out->flags = (unsigned char *)qc__alloc(ctx, cnt);
-    if (out->flags == NULL) {
-        qc__free(ctx, fit, cnt * sizeof *fit);
-        return QC_ENOMEM;
-    }
-    out->p = fit;
-    out->cap = cnt;
-    out->n = 0;
-    return emit_piece(ctx, out, fit, cnt, r);
-}
-
-/* build() with the flattened points its own: a single piece, once merged,
- * needs neither them nor the merge's scratch beside the kept points, so
- * they are freed before the plan is made (the peak of a large pattern). */
-static int build(qc_ctx *ctx, qc_points *pts, const qc_order *ends,
-                 const resolved *r, qc_plan *out)
+/* The pieces of pts (ends) merged in place, each compacted to follow the
+ * one before (ends then marks the kept points), and the points the plan
+ * makes of them (*total). No second array beside the flattened points: at
+ * 10^6 pattern points they are 27 million, the peak of a large job. */
+static int merge_all(qc_ctx *ctx, qc_points *pts, qc_order *ends, const resolved *r,
+                     double *total)
 {
     qc__merge mg;
-    qc_vec2 *m;
-    size_t longest = 0, k, start = 0, cnt = 0;
-    double total = 0;
-    int rc = QC_OK;
+    size_t longest = 0, k, start = 0, kept = 0;
 
     for (k = 0; k < ends->n; k++) {
         if (ends->i[k] - start > longest)
@@ -305,38 +263,66 @@ static int build(qc_ctx *ctx, qc_points *pts, const qc_order *ends,
         start = ends->i[k];
     }
     QC__TRY(qc__merge_init(ctx, &mg, longest));
-    m = mg.m;
-    /* count first, so a split that would make too many points is refused
-     * before the plan grows */
+    *total = 0;
     for (k = 0, start = 0; k < ends->n; k++) {
-        cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
+        qc_vec2 *m = pts->v + kept;
+        size_t cnt = qc__merge_piece(&mg, pts->v + start, ends->i[k] - start, r->min_seg,
+                                     r->floor_len, r->keep, m);
+
         if (cnt >= 2)
-            total += piece_points(m, cnt, r);
+            *total += piece_points(m, cnt, r);
         start = ends->i[k];
+        kept += cnt;
+        ends->i[k] = (uint32_t)kept;
     }
-    if (total > QC_MAX_PLAN_POINTS) {
-        qc__merge_free(ctx, &mg);
+    pts->n = kept;
+    qc__merge_free(ctx, &mg);
+    qc__points_fit(ctx, pts);
+    return QC_OK;
+}
+
+/* A single piece's plan without ties or splits is its merged points as they
+ * stand: the plan takes their array (emit_piece writes point k only after
+ * reading m[k] and adds nothing), so no second copy is made. */
+static int take_points(qc_ctx *ctx, qc_points *pts, const resolved *r, qc_plan *out)
+{
+    size_t cnt = pts->n;
+
+    out->flags = (unsigned char *)qc__alloc(ctx, pts->cap);
+    if (out->flags == NULL)
+        return QC_ENOMEM;
+    out->p = pts->v;
+    out->cap = pts->cap;
+    out->n = 0;
+    memset(pts, 0, sizeof *pts);
+    return emit_piece(ctx, out, out->p, cnt, r);
+}
+
+/* The plan of the flattened pieces pts (ends), both merged in place. */
+static int build(qc_ctx *ctx, qc_points *pts, qc_order *ends, const resolved *r, qc_plan *out)
+{
+    size_t k, start = 0;
+    double total = 0;
+    int rc = QC_OK;
+
+    QC__TRY(merge_all(ctx, pts, ends, r, &total));
+    /* counted first, so a split that would make too many points is refused
+     * before the plan grows */
+    if (total > QC_MAX_PLAN_POINTS)
         return qc__fail(ctx, QC_ELIMIT,
                         "the stitch plan would have %.3g points, more than the limit of %lu; "
                         "raise the maximum segment",
                         total, (unsigned long)QC_MAX_PLAN_POINTS);
-    }
-    if (ends->n == 1 && cnt >= 2 && out->cap == 0) {
-        qc_points_free(ctx, pts);
-        return build_one(ctx, &mg, cnt, total, r, out);
-    }
+    if (ends->n == 1 && pts->n >= 2 && out->cap == 0 && r->ties == 0 &&
+        total == (double)pts->n)
+        return take_points(ctx, pts, r, out);
     if (out->cap == 0 && total >= 1) /* counted: no doubling, no copies */
         rc = plan_grow(ctx, out, (size_t)total);
-    start = 0;
     for (k = 0; k < ends->n && rc == QC_OK; k++) {
-        /* one piece (most patterns): m still holds it from the count */
-        if (ends->n > 1)
-            cnt = merge(&mg, pts->v + start, ends->i[k] - start, r);
-        if (cnt >= 2)
-            rc = emit_piece(ctx, out, m, cnt, r);
+        if (ends->i[k] - start >= 2)
+            rc = emit_piece(ctx, out, pts->v + start, ends->i[k] - start, r);
         start = ends->i[k];
     }
-    qc__merge_free(ctx, &mg);
     return rc;
 }
 
@@ -358,8 +344,10 @@ static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
             return qc__fail(ctx, QC_ERANGE,
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
-    rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
-    qc_path_free(ctx, taken);
+    if (taken != NULL) /* the path goes as the points come */
+        rc = qc__curve_flatten_taking(ctx, taken, r.tol, &pts, &ends);
+    else
+        rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
     if (rc == QC_OK && params != NULL && params->clip && clip_region != NULL) {
         rc = qc__clip_pieces(ctx, &pts, &ends, clip_region, &cpts, &cends);

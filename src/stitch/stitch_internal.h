@@ -16,13 +16,12 @@ QC__HIDDEN int qc__clip_pieces(qc_ctx *ctx, const qc_points *in,
 
 /* Scratch for qc__merge_piece, sized for the longest piece. */
 typedef struct qc__merge {
-    qc_vec2 *m;           /* the kept points */
     uint32_t *table;      /* a hash table of the piece's places (merge.c) */
-    size_t slots;         /* its size: two per point */
+    size_t slots;         /* its size: one and a half per point, one per cell */
     uint32_t *start;      /* per cell of a grid over the piece: its first slot */
     size_t cells;         /* cells at most */
     uint32_t *place;      /* per point: where the piece passes it again */
-    unsigned char *gone;  /* per place: a junction merged away */
+    unsigned char *gone;  /* a bit per place: a junction merged away */
     size_t cap;
 } qc__merge;
 
@@ -39,13 +38,14 @@ QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
  */
 QC__HIDDEN void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n);
 /*
- * Keeps in mg->m the points of v[0..n) (n <= the longest given to init)
- * that a plan sews, returning how many: steps shorter than min_seg merged
+ * Keeps in m the points of v[0..n) (n <= the longest given to init) that a
+ * plan sews, returning how many (m may be v, or run over v from before it:
+ * the merge compacts a piece in place): steps shorter than min_seg merged
  * where the path strays at most keep mm by it, short stitches kept where it
  * turns (unless under floor_len), points the piece passes twice kept in
  * place; the first and last points always stay (merge.c).
  */
 QC__HIDDEN size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg,
-                                  double floor_len, double keep);
+                                  double floor_len, double keep, qc_vec2 *m);
 
 #endif
