@@ -600,8 +600,9 @@ static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *
 
 /* Whether the circle tangent to j and k at radius R on side s fits (its
  * centre into *at): clearance_to(at, R, R, i, j, k) >= R, the same answer
- * in any order of the pebbles, so here from the gathered ones. */
-static int pair_fits(pack *P, const pair_near *pn, uint32_t i, uint32_t j, uint32_t k, double R,
+ * in any order of the pebbles, so here from the gathered ones, the last
+ * pebble in the way first (the bisection's next misses meet it again). */
+static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k, double R,
                      double s, qc_vec2 *at)
 {
     const qc__pebbles *pb = P->pb;
@@ -616,8 +617,11 @@ static int pair_fits(pack *P, const pair_near *pn, uint32_t i, uint32_t j, uint3
         double dx = at->x - pb->c[q].x, dy = at->y - pb->c[q].y, far = R + pb->r[q];
         if (far > 0 && dx * dx + dy * dy >= far * far)
             continue;
-        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R)
+        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R) {
+            pn->id[m] = pn->id[0];
+            pn->id[0] = q;
             return 0;
+        }
     }
     return !(R > 0) || !(qc__pbound_dist(P->b, *at, pb->k * R) / pb->k < R);
 }
