@@ -700,6 +700,61 @@ static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, 
     return lo;
 }
 
+/* Where the centre tangent to j and k on side s can be for every radius in
+ * [lo, hi], in the frame of pair_centre (along e from c_j; h across, on
+ * side s): along is linear in R and h^2 = a^2 - along^2 a convex quadratic
+ * (|r_j - r_k| < D), so a box [b0, b1] x [b2, b3] holds them all. 0 when
+ * the pebbles overlap that much (no box then). */
+static int pair_box(const qc__pebbles *pb, uint32_t j, uint32_t k, double lo, double hi,
+                    double *box)
+{
+    double D = dist(pb->c[j], pb->c[k]), rj = pb->r[j], rk = pb->r[k];
+    double beta = D > 0 ? (rj - rk) / D : 1, alpha, q0, q1, qmin, v;
+
+    if (!(fabs(beta) < 1))
+        return 0;
+    alpha = (D * D + (rj - rk) * (rj + rk)) / (2 * D);
+    q0 = (rj + lo) * (rj + lo) - (alpha + beta * lo) * (alpha + beta * lo);
+    q1 = (rj + hi) * (rj + hi) - (alpha + beta * hi) * (alpha + beta * hi);
+    v = (alpha * beta - rj) / (1 - beta * beta); /* the quadratic's vertex */
+    qmin = v > lo && v < hi ? (rj + v) * (rj + v) - (alpha + beta * v) * (alpha + beta * v)
+                            : fmin(q0, q1);
+    box[0] = fmin(alpha + beta * lo, alpha + beta * hi);
+    box[1] = fmax(alpha + beta * lo, alpha + beta * hi);
+    box[2] = sqrt(fmax(qmin, 0));
+    box[3] = sqrt(fmax(fmax(q0, q1), 0));
+    return 1;
+}
+
+/* Keeps of the gathered pebbles those that can be in the way of a circle
+ * tangent to j and k at a radius in [lo, hi]: the bisection's many asks
+ * then meet a few neighbours, not the whole reach. A pebble farther from
+ * the box of centres than hi (and a slack far above rounding) cannot be. */
+static void pair_narrow(const pack *P, pair_near *pn, uint32_t j, uint32_t k, double lo,
+                        double hi, double s)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 cj = pb->c[j], e;
+    double box[4], D = dist(cj, pb->c[k]);
+    double slack = 1e-3 * (D + pb->r[j] + pb->r[k] + 2 * hi);
+    size_t m, n = 0;
+
+    if (!pn->all || !pair_box(pb, j, k, lo, hi, box))
+        return;
+    e = QC__V2((pb->c[k].x - cj.x) / D, (pb->c[k].y - cj.y) / D);
+    for (m = 0; m < pn->n; m++) {
+        uint32_t q = pn->id[m];
+        double dx = pb->c[q].x - cj.x, dy = pb->c[q].y - cj.y;
+        double u = dx * e.x + dy * e.y, v = s * (dy * e.x - dx * e.y);
+        double du = fmax(fmax(box[0] - u, u - box[1]), 0);
+        double dv = fmax(fmax(box[2] - v, v - box[3]), 0);
+
+        if (sqrt(du * du + dv * dv) - pb->r[q] < hi + slack)
+            pn->id[n++] = q;
+    }
+    pn->n = n;
+}
+
 /* Step 2 by small steps and bisection: the general case. */
 static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, qc_vec2 *xout)
 {
@@ -710,6 +765,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
     pair_near pn;
 
     pair_gather(P, i, j, k, &pn);
+    pair_narrow(P, &pn, j, k, lo, pb->r_grow, s);
 
     while (lo < pb->r_grow) {
         hi = fmin(lo + step, pb->r_grow);
@@ -724,6 +780,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
             xlo = xhi;
             continue;
         }
+        pair_narrow(P, &pn, j, k, lo, hi, s);
         for (it = 0; it < 40; it++) {
             double mid = 0.5 * (lo + hi);
             qc_vec2 xm;
