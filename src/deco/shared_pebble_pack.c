@@ -572,10 +572,14 @@ static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, 
  * edge is farther from i's centre matters (a d of slack for rounding). The
  * search asks up to 40 bisection steps of these few instead of the grid;
  * all 0 when more than fit (the grid is asked then). */
+#define PAIR_SEGS 64 /* boundary segments a pair search keeps at hand */
+
 typedef struct pair_near {
     uint32_t id[PAIR_NEAR];
     size_t n;
     int all;
+    uint32_t seg[PAIR_SEGS]; /* when nseg <= PAIR_SEGS: every boundary */
+    size_t nseg;             /* segment the search's circles can reach */
 } pair_near;
 
 static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *pn)
@@ -586,6 +590,7 @@ static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *
 
     pn->n = 0;
     pn->all = 1;
+    pn->nseg = PAIR_SEGS + 1;
     cell_box(P, pb->c[i], reach + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, q) {
         if (q == i || q == j || q == k || dist(pb->c[i], pb->c[q]) - pb->r[q] > reach)
@@ -623,7 +628,11 @@ static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k,
             return 0;
         }
     }
-    return !(R > 0) || !(qc__pbound_dist(P->b, *at, pb->k * R) / pb->k < R);
+    if (!(R > 0))
+        return 1;
+    return !((pn->nseg <= PAIR_SEGS
+                  ? qc__pbound_dist_among(P->b, pn->seg, pn->nseg, *at, pb->k * R)
+                  : qc__pbound_dist(P->b, *at, pb->k * R)) / pb->k < R);
 }
 
 /*
@@ -726,6 +735,26 @@ static int pair_box(const qc__pebbles *pb, uint32_t j, uint32_t k, double lo, do
     return 1;
 }
 
+/* The boundary segments within reach of the box of centres (in the frame
+ * c_j, e, side s): its corners' bounding box grown by reach. */
+static void pair_segs(const pack *P, pair_near *pn, qc_vec2 cj, qc_vec2 e, double s,
+                      const double *box, double reach)
+{
+    double w[4] = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    int c;
+
+    for (c = 0; c < 4; c++) {
+        double u = box[c & 1], v = s * box[2 + (c >> 1)];
+        double x = cj.x + e.x * u - e.y * v, y = cj.y + e.y * u + e.x * v;
+
+        w[0] = fmin(w[0], x - reach);
+        w[1] = fmin(w[1], y - reach);
+        w[2] = fmax(w[2], x + reach);
+        w[3] = fmax(w[3], y + reach);
+    }
+    pn->nseg = qc__pbound_gather(P->b, w, pn->seg, PAIR_SEGS);
+}
+
 /* Keeps of the gathered pebbles those that can be in the way of a circle
  * tangent to j and k at a radius in [lo, hi]: the bisection's many asks
  * then meet a few neighbours, not the whole reach. A pebble farther from
@@ -739,9 +768,11 @@ static void pair_narrow(const pack *P, pair_near *pn, uint32_t j, uint32_t k, do
     double slack = 1e-3 * (D + pb->r[j] + pb->r[k] + 2 * hi);
     size_t m, n = 0;
 
+    pn->nseg = PAIR_SEGS + 1;
     if (!pn->all || !pair_box(pb, j, k, lo, hi, box))
         return;
     e = QC__V2((pb->c[k].x - cj.x) / D, (pb->c[k].y - cj.y) / D);
+    pair_segs(P, pn, cj, e, s, box, pb->k * hi + slack);
     for (m = 0; m < pn->n; m++) {
         uint32_t q = pn->id[m];
         double dx = pb->c[q].x - cj.x, dy = pb->c[q].y - cj.y;
