@@ -258,6 +258,29 @@ static void incircle_should_match_integer_arithmetic(void)
     }
 }
 
+/* Rectangles on a triangular lattice's rounded coordinates: exactly
+ * cocircular (0), and a corner one ulp out (negative) or in (positive):
+ * decided by the double-double stage or the expansions, never the filter. */
+static void incircle_should_be_exact_on_lattice_rectangles(void)
+{
+    const double h = 10 * 1.7320508075688772 / 2;
+    int i, j, w, wrong = 0;
+
+    for (i = 0; i < 12; i++)
+        for (j = 0; j < 12; j++)
+            for (w = 1; w <= 3; w++) {
+                double x0 = (i + 0.5 * j) * 10, y0 = j * h;
+                double x1 = x0 + w * 10 + 5, y1 = y0 + w * h;
+                qc_vec2 a = v2(x0, y0), b = v2(x1, y0), c = v2(x1, y1);
+
+                wrong += qc_incircle(a, b, c, v2(x0, y1)) != 0;
+                wrong += !(qc_incircle(a, b, c, v2(x0, nextafter(y1, 1e300))) < 0);
+                wrong += !(qc_incircle(a, b, c, v2(x0, nextafter(y1, 0))) > 0);
+                wrong += !(qc_incircle(b, a, c, v2(x0, nextafter(y1, 0))) < 0);
+            }
+    TEST_ASSERT_EQUAL_INT(0, wrong);
+}
+
 /* ---- Delaunay ---- */
 
 static void delaunay_should_triangulate_random_points(void)
@@ -659,6 +682,7 @@ int main(void)
     RUN_TEST(orient2d_should_match_integer_arithmetic);
     RUN_TEST(incircle_should_be_exact_near_cocircular);
     RUN_TEST(incircle_should_match_integer_arithmetic);
+    RUN_TEST(incircle_should_be_exact_on_lattice_rectangles);
     RUN_TEST(delaunay_should_triangulate_random_points);
     RUN_TEST(delaunay_should_triangulate_lattices);
     RUN_TEST(delaunay_should_triangulate_cocircular_points);

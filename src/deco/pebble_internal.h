@@ -20,6 +20,13 @@ QC__HIDDEN int qc__pbound_init(qc_ctx *ctx, qc__pbound *b, const qc_region *regi
 QC__HIDDEN void qc__pbound_free(qc_ctx *ctx, qc__pbound *b);
 /* Distance from x to the nearest edge, or reach when no edge is nearer. */
 QC__HIDDEN double qc__pbound_dist(qc__pbound *b, qc_vec2 x, double reach);
+/* The boundary segments under box (x0, y0, x1, y1), once each, into out:
+ * their count, cap + 1 when more than cap. qc__pbound_dist_among answers
+ * qc__pbound_dist(x, reach) from such a list (the same value when the box
+ * holds x's disc of radius reach). */
+QC__HIDDEN size_t qc__pbound_gather(qc__pbound *b, const double *box, uint32_t *out, size_t cap);
+QC__HIDDEN double qc__pbound_dist_among(const qc__pbound *b, const uint32_t *items, size_t n,
+                                        qc_vec2 x, double reach);
 /*
  * The circle (x0 + u s, r0 + s) grows with s >= 0 along the unit direction
  * u (its point x0 - u r0 stays put); the first s <= cap at which its

@@ -134,6 +134,40 @@ double qc__pbound_dist(qc__pbound *b, qc_vec2 x, double reach)
     return best2 < reach * reach ? sqrt(best2) : reach;
 }
 
+size_t qc__pbound_gather(qc__pbound *b, const double *box, uint32_t *out, size_t cap)
+{
+    qc__cgrid *g = &b->g;
+    size_t n = 0;
+    walk w;
+    uint32_t it;
+
+    if (g->nitem == 0)
+        return 0;
+    walk_start(g, &w, box[0], box[1], box[2], box[3]);
+    while ((it = walk_next(g, &w)) != UINT32_MAX) {
+        if (n == cap)
+            return cap + 1;
+        out[n++] = it;
+    }
+    return n;
+}
+
+double qc__pbound_dist_among(const qc__pbound *b, const uint32_t *items, size_t n, qc_vec2 x,
+                             double reach)
+{
+    const qc__cgrid *g = &b->g;
+    double best2 = reach * reach;
+    size_t m;
+
+    for (m = 0; m < n; m++) {
+        const qc_vec2 *v = g->v + g->item[items[m]].off;
+        double d2 = qc__seg_dist2(x, v[0], v[1]);
+        if (d2 < best2)
+            best2 = d2;
+    }
+    return best2 < reach * reach ? sqrt(best2) : reach;
+}
+
 /* First s >= 0 with |w + u s| = k (r0 + s) (w = x0 - e), or -1; the
  * circle at s = 0 keeps |w| >= k r0. */
 static double point_root(qc_vec2 w, qc_vec2 u, double r0, double k)

@@ -572,10 +572,14 @@ static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, 
  * edge is farther from i's centre matters (a d of slack for rounding). The
  * search asks up to 40 bisection steps of these few instead of the grid;
  * all 0 when more than fit (the grid is asked then). */
+#define PAIR_SEGS 64 /* boundary segments a pair search keeps at hand */
+
 typedef struct pair_near {
     uint32_t id[PAIR_NEAR];
     size_t n;
     int all;
+    uint32_t seg[PAIR_SEGS]; /* when nseg <= PAIR_SEGS: every boundary */
+    size_t nseg;             /* segment the search's circles can reach */
 } pair_near;
 
 static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *pn)
@@ -586,6 +590,7 @@ static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *
 
     pn->n = 0;
     pn->all = 1;
+    pn->nseg = PAIR_SEGS + 1;
     cell_box(P, pb->c[i], reach + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, q) {
         if (q == i || q == j || q == k || dist(pb->c[i], pb->c[q]) - pb->r[q] > reach)
@@ -600,8 +605,9 @@ static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *
 
 /* Whether the circle tangent to j and k at radius R on side s fits (its
  * centre into *at): clearance_to(at, R, R, i, j, k) >= R, the same answer
- * in any order of the pebbles, so here from the gathered ones. */
-static int pair_fits(pack *P, const pair_near *pn, uint32_t i, uint32_t j, uint32_t k, double R,
+ * in any order of the pebbles, so here from the gathered ones, the last
+ * pebble in the way first (the bisection's next misses meet it again). */
+static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k, double R,
                      double s, qc_vec2 *at)
 {
     const qc__pebbles *pb = P->pb;
@@ -616,10 +622,17 @@ static int pair_fits(pack *P, const pair_near *pn, uint32_t i, uint32_t j, uint3
         double dx = at->x - pb->c[q].x, dy = at->y - pb->c[q].y, far = R + pb->r[q];
         if (far > 0 && dx * dx + dy * dy >= far * far)
             continue;
-        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R)
+        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R) {
+            pn->id[m] = pn->id[0];
+            pn->id[0] = q;
             return 0;
+        }
     }
-    return !(R > 0) || !(qc__pbound_dist(P->b, *at, pb->k * R) / pb->k < R);
+    if (!(R > 0))
+        return 1;
+    return !((pn->nseg <= PAIR_SEGS
+                  ? qc__pbound_dist_among(P->b, pn->seg, pn->nseg, *at, pb->k * R)
+                  : qc__pbound_dist(P->b, *at, pb->k * R)) / pb->k < R);
 }
 
 /*
@@ -696,6 +709,83 @@ static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, 
     return lo;
 }
 
+/* Where the centre tangent to j and k on side s can be for every radius in
+ * [lo, hi], in the frame of pair_centre (along e from c_j; h across, on
+ * side s): along is linear in R and h^2 = a^2 - along^2 a convex quadratic
+ * (|r_j - r_k| < D), so a box [b0, b1] x [b2, b3] holds them all. 0 when
+ * the pebbles overlap that much (no box then). */
+static int pair_box(const qc__pebbles *pb, uint32_t j, uint32_t k, double lo, double hi,
+                    double *box)
+{
+    double D = dist(pb->c[j], pb->c[k]), rj = pb->r[j], rk = pb->r[k];
+    double beta = D > 0 ? (rj - rk) / D : 1, alpha, q0, q1, qmin, v;
+
+    if (!(fabs(beta) < 1))
+        return 0;
+    alpha = (D * D + (rj - rk) * (rj + rk)) / (2 * D);
+    q0 = (rj + lo) * (rj + lo) - (alpha + beta * lo) * (alpha + beta * lo);
+    q1 = (rj + hi) * (rj + hi) - (alpha + beta * hi) * (alpha + beta * hi);
+    v = (alpha * beta - rj) / (1 - beta * beta); /* the quadratic's vertex */
+    qmin = v > lo && v < hi ? (rj + v) * (rj + v) - (alpha + beta * v) * (alpha + beta * v)
+                            : fmin(q0, q1);
+    box[0] = fmin(alpha + beta * lo, alpha + beta * hi);
+    box[1] = fmax(alpha + beta * lo, alpha + beta * hi);
+    box[2] = sqrt(fmax(qmin, 0));
+    box[3] = sqrt(fmax(fmax(q0, q1), 0));
+    return 1;
+}
+
+/* The boundary segments within reach of the box of centres (in the frame
+ * c_j, e, side s): its corners' bounding box grown by reach. */
+static void pair_segs(const pack *P, pair_near *pn, qc_vec2 cj, qc_vec2 e, double s,
+                      const double *box, double reach)
+{
+    double w[4] = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    int c;
+
+    for (c = 0; c < 4; c++) {
+        double u = box[c & 1], v = s * box[2 + (c >> 1)];
+        double x = cj.x + e.x * u - e.y * v, y = cj.y + e.y * u + e.x * v;
+
+        w[0] = fmin(w[0], x - reach);
+        w[1] = fmin(w[1], y - reach);
+        w[2] = fmax(w[2], x + reach);
+        w[3] = fmax(w[3], y + reach);
+    }
+    pn->nseg = qc__pbound_gather(P->b, w, pn->seg, PAIR_SEGS);
+}
+
+/* Keeps of the gathered pebbles those that can be in the way of a circle
+ * tangent to j and k at a radius in [lo, hi]: the bisection's many asks
+ * then meet a few neighbours, not the whole reach. A pebble farther from
+ * the box of centres than hi (and a slack far above rounding) cannot be. */
+static void pair_narrow(const pack *P, pair_near *pn, uint32_t j, uint32_t k, double lo,
+                        double hi, double s)
+{
+    const qc__pebbles *pb = P->pb;
+    qc_vec2 cj = pb->c[j], e;
+    double box[4], D = dist(cj, pb->c[k]);
+    double slack = 1e-3 * (D + pb->r[j] + pb->r[k] + 2 * hi);
+    size_t m, n = 0;
+
+    pn->nseg = PAIR_SEGS + 1;
+    if (!pn->all || !pair_box(pb, j, k, lo, hi, box))
+        return;
+    e = QC__V2((pb->c[k].x - cj.x) / D, (pb->c[k].y - cj.y) / D);
+    pair_segs(P, pn, cj, e, s, box, pb->k * hi + slack);
+    for (m = 0; m < pn->n; m++) {
+        uint32_t q = pn->id[m];
+        double dx = pb->c[q].x - cj.x, dy = pb->c[q].y - cj.y;
+        double u = dx * e.x + dy * e.y, v = s * (dy * e.x - dx * e.y);
+        double du = fmax(fmax(box[0] - u, u - box[1]), 0);
+        double dv = fmax(fmax(box[2] - v, v - box[3]), 0);
+
+        if (sqrt(du * du + dv * dv) - pb->r[q] < hi + slack)
+            pn->id[n++] = q;
+    }
+    pn->n = n;
+}
+
 /* Step 2 by small steps and bisection: the general case. */
 static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, qc_vec2 *xout)
 {
@@ -706,6 +796,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
     pair_near pn;
 
     pair_gather(P, i, j, k, &pn);
+    pair_narrow(P, &pn, j, k, lo, pb->r_grow, s);
 
     while (lo < pb->r_grow) {
         hi = fmin(lo + step, pb->r_grow);
@@ -720,6 +811,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
             xlo = xhi;
             continue;
         }
+        pair_narrow(P, &pn, j, k, lo, hi, s);
         for (it = 0; it < 40; it++) {
             double mid = 0.5 * (lo + hi);
             qc_vec2 xm;
