@@ -9,12 +9,14 @@
 #include "sample_internal.h"
 
 #define PAD 2 /* empty cells round the grid: is_far's 5x5 block always exists */
+#define COVER_SUB 2.0
 
 typedef struct pgrid {
     double x0, y0, cell, d2;
     size_t nx, ny, w; /* cells across and down, and a row's length with the pad */
     qc_vec2 *cells;   /* (nx + 2 PAD) by (ny + 2 PAD), PAD rows and columns first */
     qc_vec2 *at;      /* cell (0, 0); a cell's point, or {HUGE_VAL, HUGE_VAL} when empty */
+    qc__cover cover;  /* squares of a COVER_SUB-th of a cell no candidate can take */
 } pgrid;
 
 /* The offset from at of cell (cx, cy) of the grid's nx by ny. */
@@ -63,9 +65,19 @@ static int inside_box(const qc__rindex *ix, qc_vec2 p)
            p.y <= ix->box.max.y;
 }
 
+/* Whether p may join the sample: in the box, on no marked square (the
+ * cheap look that turns most candidates down), d from every point, and
+ * admitted by the region at margin. */
+static inline int takes(const qc__rindex *ix, const pgrid *g, qc_vec2 p, double margin)
+{
+    return inside_box(ix, p) && !qc__cover_holds(&g->cover, p) && is_far(g, p) &&
+           qc__rindex_admits(ix, p, margin);
+}
+
 static int add_point(qc_ctx *ctx, pgrid *g, qc_points *pts, qc_order *active, qc_vec2 p)
 {
     g->at[cell_index(g, p)] = p;
+    qc__cover_mark(&g->cover, p);
     QC__TRY(qc_order_push(ctx, active, (uint32_t)pts->n));
     return qc_points_push(ctx, pts, p);
 }
@@ -103,7 +115,7 @@ static int grow(qc_ctx *ctx, const qc__rindex *ix, pgrid *g, double d, double ma
 
             p.x = c.x + r * u.x;
             p.y = c.y + r * u.y;
-            if (inside_box(ix, p) && is_far(g, p) && qc__rindex_admits(ix, p, margin)) {
+            if (takes(ix, g, p, margin)) {
                 QC__TRY(add_point(ctx, g, pts, active, p));
                 placed = 1;
             }
@@ -134,11 +146,16 @@ static int pgrid_init(qc_ctx *ctx, pgrid *g, const qc__rindex *ix, double d)
     for (c = 0; c < total; c++)
         g->cells[c] = QC__V2(HUGE_VAL, HUGE_VAL);
     g->at = g->cells + cell_at(g, PAD, PAD);
+    if (qc__cover_init(ctx, &g->cover, ix->box, d, g->cell / COVER_SUB) < 0) {
+        qc__free(ctx, g->cells, total * sizeof *g->cells);
+        return QC_ENOMEM;
+    }
     return QC_OK;
 }
 
 static void pgrid_free(qc_ctx *ctx, pgrid *g)
 {
+    qc__cover_free(ctx, &g->cover);
     qc__free(ctx, g->cells, g->w * (g->ny + 2 * PAD) * sizeof *g->cells);
 }
 
@@ -162,7 +179,7 @@ int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margi
                 continue;
             p.x = g.x0 + ((double)cx + 0.5) * g.cell;
             p.y = g.y0 + ((double)cy + 0.5) * g.cell;
-            if (inside_box(ix, p) && is_far(&g, p) && qc__rindex_admits(ix, p, margin)) {
+            if (takes(ix, &g, p, margin)) {
                 rc = add_point(ctx, &g, &pts, &active, p);
                 if (rc == QC_OK)
                     rc = grow(ctx, ix, &g, d, margin, k, &rng, &pts, &active);

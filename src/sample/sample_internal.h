@@ -13,6 +13,28 @@ QC__HIDDEN int qc__sample_lattice(qc_ctx *ctx, const qc__rindex *ix, int kind, d
 QC__HIDDEN int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margin,
                                   uint64_t seed, int k, qc_points *out);
 
+/* Squares no Poisson candidate can take: each lies wholly nearer than d
+ * to a placed point (cover.c). */
+typedef struct qc__cover {
+    double x0, y0, side, reach, lim; /* lim = reach^2, reach d less a slack */
+    size_t nx, ny;
+    unsigned char *dead; /* nx by ny, 1 where marked */
+} qc__cover;
+
+QC__HIDDEN int qc__cover_init(qc_ctx *ctx, qc__cover *c, qc_bbox box, double d, double side);
+QC__HIDDEN void qc__cover_free(qc_ctx *ctx, qc__cover *c);
+/* Marks the squares wholly within reach of q (a point just placed). */
+QC__HIDDEN void qc__cover_mark(qc__cover *c, qc_vec2 q);
+
+/* Whether p (inside the box) lies in a marked square: then a point lies
+ * nearer than d to it. */
+static inline int qc__cover_holds(const qc__cover *c, qc_vec2 p)
+{
+    size_t i = (size_t)((p.x - c->x0) / c->side), j = (size_t)((p.y - c->y0) / c->side);
+
+    return c->dead[(j < c->ny ? j : c->ny - 1) * c->nx + (i < c->nx ? i : c->nx - 1)];
+}
+
 /* Adds points on the medial axis of region (the ridge of the boundary
  * distance, on a d / 4 raster), deepest in a corner first, each at least
  * margin inside and 0.8 d from every point of out: so sharp points, corners
