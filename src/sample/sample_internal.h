@@ -69,6 +69,23 @@ QC__HIDDEN int qc__near_grid_push_clear(qc_ctx *ctx, qc__near_grid *g, qc_points
 QC__HIDDEN int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0,
                                        const qc_points *cand, double r);
 
+/* Seed cells of an nx by ny raster filed in square buckets of b cells
+ * (seed_buckets.c). */
+typedef struct qc__seed_buckets {
+    long b, bx, by;
+    uint32_t *start; /* bucket q's seeds: xy[2 * start[q] .. 2 * start[q + 1]) */
+    long *xy;        /* the seeds' cells, column and row */
+    size_t n;
+} qc__seed_buckets;
+
+/* Files the n cells (row-major indices) in buckets of b cells. */
+QC__HIDDEN int qc__seed_buckets_build(qc_ctx *ctx, size_t nx, size_t ny, const size_t *cell,
+                                      size_t n, long b, qc__seed_buckets *sb);
+QC__HIDDEN void qc__seed_buckets_free(qc_ctx *ctx, qc__seed_buckets *sb);
+/* Cell (i, j)'s squared distance to the nearest seed, cells, capped at
+ * QC__GAP_FAR: the value qc__gap_transform gives it (integers, exact). */
+QC__HIDDEN double qc__seed_dist2(const qc__seed_buckets *sb, long i, long j);
+
 /*
  * A row of points along the contour offset inside every ring (holes too):
  * offset mm from the boundary, at most a quarter of the local width there
