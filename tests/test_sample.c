@@ -159,6 +159,45 @@ static void test_poisson_is_spaced_and_maximal_in_every_part(void)
     qc_region_free(&ctx, &r);
 }
 
+/* The Poisson cover marks a square only when it lies wholly nearer than d
+ * to the point placed (so the sampler's shortcut never turns down a spot
+ * the distance test would take), and marks every square well inside the
+ * disk: near the origin and far from it (where rounding is coarser). */
+static void test_cover_marks_squares_wholly_inside_the_disk(void)
+{
+    static const double base[2] = {0.0, 1e5};
+    const double d = 7.0;
+    int b, t;
+
+    for (b = 0; b < 2; b++)
+        for (t = 0; t < 20; t++) {
+            qc_bbox box = {{base[b], base[b]}, {base[b] + 60.0, base[b] + 50.0}};
+            qc__cover c;
+            qc_vec2 q = v2(base[b] + 1.0 + 2.9 * t, base[b] + 0.5 + 2.45 * t);
+            size_t i, j, marked = 0;
+
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__cover_init(&ctx, &c, box, d, d / 2.8284));
+            qc__cover_mark(&c, q);
+            for (j = 0; j < c.ny; j++)
+                for (i = 0; i < c.nx; i++) {
+                    double x0 = c.x0 + (double)i * c.side, y0 = c.y0 + (double)j * c.side;
+                    double fx = fmax(fabs(x0 - q.x), fabs(x0 + c.side - q.x));
+                    double fy = fmax(fabs(y0 - q.y), fabs(y0 + c.side - q.y));
+                    int in_box = x0 + c.side <= box.max.x && y0 + c.side <= box.max.y;
+                    if (c.dead[j * c.nx + i]) {
+                        TEST_ASSERT_LESS_THAN_DOUBLE(d, hypot(fx, fy));
+                        TEST_ASSERT_TRUE(qc__cover_holds(&c, v2(x0 + 0.5 * c.side,
+                                                                y0 + 0.5 * c.side)));
+                        marked++;
+                    } else if (in_box) {
+                        TEST_ASSERT_GREATER_THAN_DOUBLE(d - 1e-4, hypot(fx, fy));
+                    }
+                }
+            TEST_ASSERT_GREATER_THAN_UINT(0, (unsigned)marked);
+            qc__cover_free(&ctx, &c);
+        }
+}
+
 /* The holes pass leaves no place well inside farther than the gap from
  * every point (give or take its d / 8 raster): after a sparse start (many
  * holes: one transform of the raster) and after a Poisson fill (a few:
@@ -300,6 +339,7 @@ int main(void)
     RUN_TEST(test_tessellations_have_their_neighbourhoods);
     RUN_TEST(test_samples_avoid_holes_and_keep_the_margin);
     RUN_TEST(test_poisson_is_spaced_and_maximal_in_every_part);
+    RUN_TEST(test_cover_marks_squares_wholly_inside_the_disk);
     RUN_TEST(test_fill_holes_leaves_no_place_beyond_the_gap);
     RUN_TEST(test_same_seed_same_points_other_seed_other_points);
     RUN_TEST(test_bad_requests_are_refused_before_allocating);

@@ -81,97 +81,6 @@ static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
     return QC_OK;
 }
 
-/* The seeds (the cells of the points) filed in square buckets of b cells,
- * so a hole cell's nearest seed is looked for among the few seeds round it
- * rather than cell by cell. */
-typedef struct seed_buckets {
-    long b, bx, by;
-    uint32_t *start; /* bucket q's seeds: xy[2 * start[q] .. 2 * start[q + 1]) */
-    long *xy;        /* the seeds' cells, column and row */
-    size_t n;
-} seed_buckets;
-
-static void seed_buckets_free(qc_ctx *ctx, seed_buckets *sb)
-{
-    qc__free(ctx, sb->start, ((size_t)(sb->bx * sb->by) + 1) * sizeof *sb->start);
-    qc__free(ctx, sb->xy, 2 * (sb->n ? sb->n : 1) * sizeof *sb->xy);
-}
-
-static int seed_buckets_build(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts, long b,
-                              seed_buckets *sb)
-{
-    size_t k, nb;
-
-    sb->b = b;
-    sb->bx = ((long)g->nx + b - 1) / b;
-    sb->by = ((long)g->ny + b - 1) / b;
-    sb->n = pts->n;
-    nb = (size_t)(sb->bx * sb->by);
-    sb->start = qc__alloc_array(ctx, nb + 1, sizeof *sb->start);
-    sb->xy = qc__alloc_array(ctx, 2 * (sb->n ? sb->n : 1), sizeof *sb->xy);
-    if (sb->start == NULL || sb->xy == NULL) {
-        seed_buckets_free(ctx, sb);
-        return QC_ENOMEM;
-    }
-    memset(sb->start, 0, (nb + 1) * sizeof *sb->start);
-    for (k = 0; k < pts->n; k++) { /* counted, */
-        size_t c = seed_cell(g, pts->v[k]);
-        if (c != SIZE_MAX)
-            sb->start[(long)(c / g->nx) / b * sb->bx + (long)(c % g->nx) / b + 1]++;
-    }
-    for (k = 0; k < nb; k++) /* summed, */
-        sb->start[k + 1] += sb->start[k];
-    for (k = 0; k < pts->n; k++) { /* filed (start[q] runs one bucket ahead meanwhile) */
-        size_t c = seed_cell(g, pts->v[k]);
-        long x, y;
-        uint32_t at;
-        if (c == SIZE_MAX)
-            continue;
-        x = (long)(c % g->nx);
-        y = (long)(c / g->nx);
-        at = sb->start[y / b * sb->bx + x / b]++;
-        sb->xy[2 * at] = x;
-        sb->xy[2 * at + 1] = y;
-    }
-    for (k = nb; k > 0; k--)
-        sb->start[k] = sb->start[k - 1];
-    sb->start[0] = 0;
-    return QC_OK;
-}
-
-/* Cell (i, j)'s squared distance to the nearest seed, cells, looking in
- * square rings of buckets outward until no nearer seed can lie beyond (a
- * seed outside rings 0..R lies more than R b cells away): the value a
- * distance transform gives it (integers, exact). */
-static double seed_dist2(const seed_buckets *sb, long i, long j)
-{
-    long bi = i / sb->b, bj = j / sb->b, r, x, y;
-    double best = (double)(float)QC__GAP_FAR;
-
-    for (r = 0; r <= sb->bx || r <= sb->by; r++) {
-        double reach = (double)((r - 1) * sb->b);
-        if (r > 0 && reach * reach >= best)
-            break;
-        for (y = bj - r; y <= bj + r; y++) {
-            long step = (y == bj - r || y == bj + r) ? 1 : 2 * r;
-            if (y < 0 || y >= sb->by)
-                continue;
-            for (x = bi - r; x <= bi + r; x += step > 0 ? step : 1) {
-                uint32_t s, e;
-                if (x < 0 || x >= sb->bx)
-                    continue;
-                for (s = sb->start[y * sb->bx + x], e = sb->start[y * sb->bx + x + 1]; s < e;
-                     s++) {
-                    double dx = (double)(sb->xy[2 * s] - i), dy = (double)(sb->xy[2 * s + 1] - j);
-                    double d2 = dx * dx + dy * dy;
-                    best = d2 < best ? d2 : best;
-                }
-            }
-        }
-    }
-    return best;
-}
-
 static int cmp_hole(const void *pa, const void *pb) /* farthest first */
 {
     const hole *a = pa, *b = pb;
@@ -206,19 +115,28 @@ static size_t count_holes(const unsigned char *mask, size_t cells, size_t most)
 static int few_holes(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
                      const unsigned char *mask, double lim, hole *hs, size_t *nout)
 {
-    size_t k, n = 0, cells = g->nx * g->ny;
-    seed_buckets sb;
+    size_t k, n = 0, ns = 0, cells = g->nx * g->ny;
+    size_t *seed = qc__alloc_array(ctx, pts->n ? pts->n : 1, sizeof *seed);
+    qc__seed_buckets sb;
+    int rc;
 
-    QC__TRY(seed_buckets_build(ctx, g, pts, 2 * (long)ceil(sqrt(lim)) + 1, &sb));
+    if (seed == NULL)
+        return QC_ENOMEM;
+    for (k = 0; k < pts->n; k++) /* the points' cells, those on the raster */
+        if ((seed[ns] = seed_cell(g, pts->v[k])) != SIZE_MAX)
+            ns++;
+    rc = qc__seed_buckets_build(ctx, g->nx, g->ny, seed, ns, 2 * (long)ceil(sqrt(lim)) + 1, &sb);
+    qc__free(ctx, seed, (pts->n ? pts->n : 1) * sizeof *seed);
+    QC__TRY(rc);
     for (k = next_hole(mask, 0, cells); k < cells; k = next_hole(mask, k + 1, cells)) {
-        float f = (float)seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
+        float f = (float)qc__seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
         if ((double)f > lim) {
             hs[n].f = f;
             hs[n].at = (uint32_t)k;
             n++;
         }
     }
-    seed_buckets_free(ctx, &sb);
+    qc__seed_buckets_free(ctx, &sb);
     *nout = n;
     return QC_OK;
 }

@@ -148,15 +148,67 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
     return QC_OK;
 }
 
+/* The cells whose centre lies nearer than SEED_GAP * d (less a slack far
+ * above rounding) to a point of pts get 1 in blocked: no seed can go there,
+ * whatever is added meanwhile (points are only ever added). */
+static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
+                       unsigned char *blocked)
+{
+    double slack = 1e-9 * d + 1e-12 * (fabs(g->x0) + fabs(g->y0) + (double)g->nx * g->h +
+                                       (double)g->ny * g->h);
+    double reach = SEED_GAP * d - slack, r2 = reach * reach;
+    size_t n;
+
+    if (!(reach > 0.0))
+        return;
+    for (n = 0; n < pts->n; n++) {
+        qc_vec2 q = pts->v[n];
+        double j0 = ceil((q.y - reach - g->y0) / g->h - 0.5);
+        double j1 = floor((q.y + reach - g->y0) / g->h - 0.5);
+        long j = j0 > 0.0 ? (long)j0 : 0, jend = j1 < (double)g->ny - 1 ? (long)j1 : (long)g->ny - 1;
+
+        for (; j <= jend; j++) {
+            double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r, a, b;
+            long i0, i1;
+            if (!(rest > 0.0))
+                continue;
+            r = sqrt(rest);
+            a = ceil((q.x - r - g->x0) / g->h - 0.5);
+            b = floor((q.x + r - g->x0) / g->h - 0.5);
+            i0 = a > 0.0 ? (long)a : 0;
+            i1 = b < (double)g->nx - 1 ? (long)b : (long)g->nx - 1;
+            if (i0 <= i1)
+                memset(blocked + (size_t)j * g->nx + (size_t)i0, 1, (size_t)(i1 - i0 + 1));
+        }
+    }
+}
+
+/* Marks in mask (2) the ridge cells no point blocks, their count to *nr
+ * (every other ridge cell lies within SEED_GAP * d of a point, so would get
+ * no seed: not tested). */
+static void find_ridges(const qc__gap_grid *g, unsigned char *mask, const unsigned char *blocked,
+                        size_t *nr)
+{
+    size_t i, j, k;
+
+    *nr = 0;
+    for (j = 0; j < g->ny; j++)
+        for (i = 0, k = j * g->nx; i < g->nx; i++, k++)
+            if (mask[k] && !blocked[k] && is_ridge(g, mask, i, j)) {
+                mask[k] |= 2;
+                (*nr)++;
+            }
+}
+
 int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double margin,
                       qc_points *out)
 {
     qc__gap_grid g;
     qc__rindex ix;
     qc__near_grid ng;
-    unsigned char *mask = NULL;
+    unsigned char *mask = NULL, *blocked = NULL;
     ridge *rg = NULL;
-    size_t cells, k, nr = 0, i, j;
+    size_t cells, k, nr = 0, i;
     qc_bbox box = qc_region_bbox(region);
     int rc, have_ix = 0;
 
@@ -168,14 +220,17 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
         goto out;
     qc__gap_seed_region(&g, region);
     rc = qc__gap_transform(ctx, &g);
+    if (rc == QC_OK && (blocked = qc__alloc(ctx, cells)) == NULL)
+        rc = QC_ENOMEM;
+    if (rc == QC_OK && (rc = qc__rindex_build(ctx, region, &ix)) == QC_OK)
+        have_ix = 1;
+    if (rc == QC_OK) /* first: the ridge cells near its points get no seed */
+        rc = corner_seeds(ctx, region, &ix, d, margin, out);
     if (rc < 0)
         goto out;
-    for (j = 0; j < g.ny; j++) /* ridges marked in the mask (2), tested once */
-        for (i = 0, k = j * g.nx; i < g.nx; i++, k++)
-            if (mask[k] && is_ridge(&g, mask, i, j)) {
-                mask[k] |= 2;
-                nr++;
-            }
+    memset(blocked, 0, cells);
+    block_near(&g, out, d, blocked);
+    find_ridges(&g, mask, blocked, &nr);
     rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
     if (rg == NULL) {
         rc = QC_ENOMEM;
@@ -189,12 +244,7 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
             nr++;
         }
     qsort(rg, nr, sizeof *rg, cmp_ridge); /* deepest in a corner first */
-    if ((rc = qc__rindex_build(ctx, region, &ix)) == QC_OK)
-        have_ix = 1;
-    if (rc == QC_OK)
-        rc = corner_seeds(ctx, region, &ix, d, margin, out);
-    if (rc == QC_OK)
-        rc = qc__near_grid_init(ctx, &ng, box, d);
+    rc = qc__near_grid_init(ctx, &ng, box, d);
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nr && rc == QC_OK; k++) {
@@ -207,6 +257,7 @@ out:
     qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
+    qc__free(ctx, blocked, cells);
     qc__free(ctx, mask, cells);
     return rc;
 }

@@ -13,6 +13,28 @@ QC__HIDDEN int qc__sample_lattice(qc_ctx *ctx, const qc__rindex *ix, int kind, d
 QC__HIDDEN int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margin,
                                   uint64_t seed, int k, qc_points *out);
 
+/* Squares no Poisson candidate can take: each lies wholly nearer than d
+ * to a placed point (cover.c). */
+typedef struct qc__cover {
+    double x0, y0, side, reach, lim; /* lim = reach^2, reach d less a slack */
+    size_t nx, ny;
+    unsigned char *dead; /* nx by ny, 1 where marked */
+} qc__cover;
+
+QC__HIDDEN int qc__cover_init(qc_ctx *ctx, qc__cover *c, qc_bbox box, double d, double side);
+QC__HIDDEN void qc__cover_free(qc_ctx *ctx, qc__cover *c);
+/* Marks the squares wholly within reach of q (a point just placed). */
+QC__HIDDEN void qc__cover_mark(qc__cover *c, qc_vec2 q);
+
+/* Whether p (inside the box) lies in a marked square: then a point lies
+ * nearer than d to it. */
+static inline int qc__cover_holds(const qc__cover *c, qc_vec2 p)
+{
+    size_t i = (size_t)((p.x - c->x0) / c->side), j = (size_t)((p.y - c->y0) / c->side);
+
+    return c->dead[(j < c->ny ? j : c->ny - 1) * c->nx + (i < c->nx ? i : c->nx - 1)];
+}
+
 /* Adds points on the medial axis of region (the ridge of the boundary
  * distance, on a d / 4 raster), deepest in a corner first, each at least
  * margin inside and 0.8 d from every point of out: so sharp points, corners
@@ -46,6 +68,23 @@ QC__HIDDEN int qc__near_grid_push_clear(qc_ctx *ctx, qc__near_grid *g, qc_points
  * out[ref0, out->n) (the ones appended are not compared with each other). */
 QC__HIDDEN int qc__points_append_clear(qc_ctx *ctx, qc_points *out, size_t ref0,
                                        const qc_points *cand, double r);
+
+/* Seed cells of an nx by ny raster filed in square buckets of b cells
+ * (seed_buckets.c). */
+typedef struct qc__seed_buckets {
+    long b, bx, by;
+    uint32_t *start; /* bucket q's seeds: xy[2 * start[q] .. 2 * start[q + 1]) */
+    long *xy;        /* the seeds' cells, column and row */
+    size_t n;
+} qc__seed_buckets;
+
+/* Files the n cells (row-major indices) in buckets of b cells. */
+QC__HIDDEN int qc__seed_buckets_build(qc_ctx *ctx, size_t nx, size_t ny, const size_t *cell,
+                                      size_t n, long b, qc__seed_buckets *sb);
+QC__HIDDEN void qc__seed_buckets_free(qc_ctx *ctx, qc__seed_buckets *sb);
+/* Cell (i, j)'s squared distance to the nearest seed, cells, capped at
+ * QC__GAP_FAR: the value qc__gap_transform gives it (integers, exact). */
+QC__HIDDEN double qc__seed_dist2(const qc__seed_buckets *sb, long i, long j);
 
 /*
  * A row of points along the contour offset inside every ring (holes too):

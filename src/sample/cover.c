@@ -1,0 +1,79 @@
+/*
+ * Where a Poisson candidate cannot go: a raster of small squares, each
+ * marked once it lies wholly within one placed point's disk of radius d,
+ * so a candidate in a marked square is turned down without the distance
+ * tests (most candidates round a point fall in its neighbours' disks).
+ * Marks are conservative: a square is marked only when its farthest corner
+ * lies nearer than d less a slack far above rounding, so a marked square
+ * holds no point that the exact test would let through.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "sample_internal.h"
+
+int qc__cover_init(qc_ctx *ctx, qc__cover *c, qc_bbox box, double d, double side)
+{
+    double slack = 1e-9 * d + 1e-12 * (fabs(box.min.x) + fabs(box.min.y) + fabs(box.max.x) +
+                                       fabs(box.max.y));
+
+    memset(c, 0, sizeof *c);
+    c->x0 = box.min.x;
+    c->y0 = box.min.y;
+    c->side = side;
+    c->reach = d > slack ? d - slack : 0.0;
+    c->lim = c->reach * c->reach;
+    c->nx = (size_t)((box.max.x - box.min.x) / side) + 1;
+    c->ny = (size_t)((box.max.y - box.min.y) / side) + 1;
+    c->dead = qc__alloc(ctx, c->nx * c->ny);
+    if (c->dead == NULL)
+        return QC_ENOMEM;
+    memset(c->dead, 0, c->nx * c->ny);
+    return QC_OK;
+}
+
+void qc__cover_free(qc_ctx *ctx, qc__cover *c)
+{
+    qc__free(ctx, c->dead, c->nx * c->ny);
+}
+
+static double larger(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+/* The squares of row j whose farthest corner from q lies within reach:
+ * the span the row's height leaves, each square checked on its corners. */
+static void mark_row(qc__cover *c, qc_vec2 q, long j)
+{
+    double ylo = c->y0 + (double)j * c->side, yhi = ylo + c->side;
+    double fy = larger(q.y - ylo, yhi - q.y), fy2 = fy * fy, rest = c->lim - fy2, r, a, b;
+    long i, i1;
+    unsigned char *row = c->dead + (size_t)j * c->nx;
+
+    if (!(rest > 0.0))
+        return;
+    r = sqrt(rest);
+    a = ceil((q.x - r - c->x0) / c->side);
+    b = floor((q.x + r - c->x0) / c->side) - 1.0;
+    i = a > 0.0 ? (long)a : 0;
+    i1 = b < (double)c->nx - 1.0 ? (long)b : (long)c->nx - 1;
+    for (; i <= i1; i++) {
+        double xlo = c->x0 + (double)i * c->side, xhi = xlo + c->side;
+        double fx = larger(q.x - xlo, xhi - q.x);
+        if (fx * fx + fy2 < c->lim)
+            row[i] = 1;
+    }
+}
+
+void qc__cover_mark(qc__cover *c, qc_vec2 q)
+{
+    double j0 = floor((q.y - c->reach - c->y0) / c->side);
+    double j1 = floor((q.y + c->reach - c->y0) / c->side);
+    long j = j0 > 0.0 ? (long)j0 : 0, jend = j1 < (double)c->ny - 1.0 ? (long)j1 : (long)c->ny - 1;
+
+    if (!(c->reach > 0.0))
+        return;
+    for (; j <= jend; j++)
+        mark_row(c, q, j);
+}
