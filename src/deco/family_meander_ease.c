@@ -69,10 +69,8 @@ typedef struct vbins {
 
 static size_t vcell(const vbins *b, qc_vec2 p, size_t *cx, size_t *cy)
 {
-    double fx = floor((p.x - b->x0) / b->h), fy = floor((p.y - b->y0) / b->h);
-
-    *cx = fx <= 0.0 ? 0 : fx >= (double)(b->gx - 1) ? b->gx - 1 : (size_t)fx;
-    *cy = fy <= 0.0 ? 0 : fy >= (double)(b->gy - 1) ? b->gy - 1 : (size_t)fy;
+    *cx = qc__meander_cell((p.x - b->x0) / b->h, b->gx);
+    *cy = qc__meander_cell((p.y - b->y0) / b->h, b->gy);
     return *cy * b->gx + *cx;
 }
 

@@ -102,9 +102,8 @@ static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 
 static size_t cell_index(const grow *g, qc_vec2 p)
 {
-    double fx = floor((p.x - g->x0) / g->h), fy = floor((p.y - g->y0) / g->h);
-    size_t i = fx <= 0.0 ? 0 : fx >= (double)(g->gx - 1) ? g->gx - 1 : (size_t)fx;
-    size_t j = fy <= 0.0 ? 0 : fy >= (double)(g->gy - 1) ? g->gy - 1 : (size_t)fy;
+    size_t i = qc__meander_cell((p.x - g->x0) / g->h, g->gx);
+    size_t j = qc__meander_cell((p.y - g->y0) / g->h, g->gy);
 
     return j * g->gx + i;
 }
