@@ -69,10 +69,8 @@ typedef struct vbins {
 
 static size_t vcell(const vbins *b, qc_vec2 p, size_t *cx, size_t *cy)
 {
-    double fx = floor((p.x - b->x0) / b->h), fy = floor((p.y - b->y0) / b->h);
-
-    *cx = fx <= 0.0 ? 0 : fx >= (double)(b->gx - 1) ? b->gx - 1 : (size_t)fx;
-    *cy = fy <= 0.0 ? 0 : fy >= (double)(b->gy - 1) ? b->gy - 1 : (size_t)fy;
+    *cx = qc__meander_cell((p.x - b->x0) / b->h, b->gx);
+    *cy = qc__meander_cell((p.y - b->y0) / b->h, b->gy);
     return *cy * b->gx + *cx;
 }
 
@@ -235,6 +233,19 @@ static double seg_dist(qc_vec2 q, qc_vec2 a, qc_vec2 b)
     return qc_hypot(a.x + t * ux - q.x, a.y + t * uy - q.y);
 }
 
+/* Whether segment ab passes within SEAM_MM of q. A segment whose box is
+ * twice that away in x or y is not measured: its distance, rounding and
+ * all, is over SEAM_MM (the same answers, fewer roots). */
+static int near_seam(qc_vec2 q, qc_vec2 a, qc_vec2 b)
+{
+    double m = 2.0 * SEAM_MM, x0 = q.x - m, x1 = q.x + m, y0 = q.y - m, y1 = q.y + m;
+
+    if ((a.x < x0 && b.x < x0) || (a.x > x1 && b.x > x1) || (a.y < y0 && b.y < y0) ||
+        (a.y > y1 && b.y > y1))
+        return 0;
+    return seg_dist(q, a, b) <= SEAM_MM;
+}
+
 /* Whether moving vertex i of c to m leaves a piece of seam near it further
  * than SEAM_MM from the curve that was within it: the seam is sampled
  * along the tangent at the boundary point nearest the vertex, against the
@@ -256,8 +267,8 @@ static int bares_seam(const qc_points *c, int open, const vbins *b, const qc__sd
         int covered;
         if (qc_hypot(q.x - p.x, q.y - p.y) > SEAM_MM || qc__sdf_exact(s, q, NULL) < -SEAM_OFF)
             continue; /* p did not cover it, or past a corner: no seam */
-        covered = seg_dist(q, m, c->v[ib]) <= SEAM_MM ||
-                  (!(open && i == 0) && seg_dist(q, c->v[ia], m) <= SEAM_MM);
+        covered = near_seam(q, m, c->v[ib]) ||
+                  (!(open && i == 0) && near_seam(q, c->v[ia], m));
         vcell(b, q, &cx, &cy);
         for (y = cy ? cy - 1 : 0; !covered && y <= cy + 1 && y < b->gy; y++)
             for (x = cx ? cx - 1 : 0; !covered && x <= cx + 1 && x < b->gx; x++)
@@ -265,7 +276,7 @@ static int bares_seam(const qc_points *c, int open, const vbins *b, const qc__sd
                     size_t j = b->idx[e], j1 = j + 1 == n ? 0 : j + 1;
                     if (j == i || j1 == i || (open && j1 == 0))
                         continue;
-                    covered = seg_dist(q, c->v[j], c->v[j1]) <= SEAM_MM;
+                    covered = near_seam(q, c->v[j], c->v[j1]);
                 }
         if (!covered)
             return 1;
@@ -356,9 +367,9 @@ static int seam_covered(const qc_points *c, int open, const vbins *b, qc_vec2 q)
         for (x = cx ? cx - 1 : 0; x <= cx + 1 && x < b->gx; x++)
             for (e = b->start[y * b->gx + x]; e < b->start[y * b->gx + x + 1]; e++) {
                 size_t j = b->idx[e], j1 = j + 1 == n ? 0 : j + 1, j0 = j == 0 ? n - 1 : j - 1;
-                if (!(open && j1 == 0) && seg_dist(q, c->v[j], c->v[j1]) <= SEAM_MM)
+                if (!(open && j1 == 0) && near_seam(q, c->v[j], c->v[j1]))
                     return 1;
-                if (!(open && j == 0) && seg_dist(q, c->v[j0], c->v[j]) <= SEAM_MM)
+                if (!(open && j == 0) && near_seam(q, c->v[j0], c->v[j]))
                     return 1;
             }
     return 0;

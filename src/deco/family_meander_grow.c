@@ -102,9 +102,8 @@ static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 
 static size_t cell_index(const grow *g, qc_vec2 p)
 {
-    double fx = floor((p.x - g->x0) / g->h), fy = floor((p.y - g->y0) / g->h);
-    size_t i = fx <= 0.0 ? 0 : fx >= (double)(g->gx - 1) ? g->gx - 1 : (size_t)fx;
-    size_t j = fy <= 0.0 ? 0 : fy >= (double)(g->gy - 1) ? g->gy - 1 : (size_t)fy;
+    size_t i = qc__meander_cell((p.x - g->x0) / g->h, g->gx);
+    size_t j = qc__meander_cell((p.y - g->y0) / g->h, g->gy);
 
     return j * g->gx + i;
 }
@@ -315,6 +314,31 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
     sc[a] = ca;
 }
 
+/* Cell c (at cx, cy), not settled, against itself and its four forward
+ * neighbours: the neighbours' slots are contiguous (c + 1 right after
+ * c; the row below's three cells in a run), so a vertex meets them in two
+ * runs instead of five. Each sum still takes its terms in the same order
+ * as cell by cell (a's own run: c, then c + 1, then the row below left to
+ * right; a neighbour's vertex: from c's vertices in slot order), so the
+ * forces are the same to the bit. */
+static void repel_cell(grow *g, size_t c, size_t cx, size_t cy, double R, double R2)
+{
+    size_t a, end = g->start[c + 1];
+    size_t right = cx + 1 < g->gx ? g->start[c + 2] : end;
+    size_t lo = 0, hi = 0;
+
+    if (cy + 1 < g->gy) {
+        size_t below = c + g->gx;
+        lo = g->start[cx > 0 ? below - 1 : below];
+        hi = g->start[(cx + 1 < g->gx ? below + 1 : below) + 1];
+    }
+    for (a = g->start[c]; a < end; a++)
+        repel_run(g, a, a + 1, right, R, R2);
+    if (lo < hi)
+        for (a = g->start[c]; a < end; a++)
+            repel_run(g, a, lo, hi, R, R2);
+}
+
 /* Every vertex's summed repulsion from the vertices within R of it (as
  * unit vectors weighted 1 - r / R) into g->f, and the close flags: each
  * pair once, cell by cell against the cell itself and four of its
@@ -341,16 +365,18 @@ static void repulsion(grow *g, double R)
         for (cx = 0; cx < g->gx; cx++) {
             size_t c = cy * g->gx + cx;
             int still = settled(g, c);
-            if (!still) /* a frozen tile's vertices need no push among themselves */
-                for (a = g->start[c]; a < g->start[c + 1]; a++)
-                    repel_run(g, a, a + 1, g->start[c + 1], R, R2);
+            if (!still) {
+                repel_cell(g, c, cx, cy, R, R2);
+                continue;
+            }
+            /* a frozen tile's vertices need no push among themselves */
             for (t = 0; t < 4; t++) {
                 long x = (long)cx + nb[t][0], y = (long)cy + nb[t][1];
                 size_t cc;
                 if (x < 0 || (size_t)x >= g->gx || (size_t)y >= g->gy)
                     continue;
                 cc = (size_t)y * g->gx + (size_t)x;
-                if (still && settled(g, cc))
+                if (settled(g, cc))
                     continue;
                 for (a = g->start[c]; a < g->start[c + 1]; a++)
                     repel_run(g, a, g->start[cc], g->start[cc + 1], R, R2);
