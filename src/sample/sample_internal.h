@@ -107,7 +107,9 @@ QC__HIDDEN int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, doubl
  * QC__ROW_NONE) a row along the seams with the fill kept clear of it, then
  * corner and medial seeds, then (with a row) points in the holes left
  * (to_seams.c). The row's step suits the skeleton: QC__ROW_TREE (a spanning
- * tree chains it) or QC__ROW_TOUR. Appends; on error out is as on entry.
+ * tree chains it) or QC__ROW_TOUR. Appends; on error out has its entry
+ * count again. Corner seeds drop the points crowding them, those on entry
+ * too, so qc_generate passes out empty.
  */
 enum { QC__ROW_NONE = 0, QC__ROW_TREE, QC__ROW_TOUR };
 QC__HIDDEN int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region,

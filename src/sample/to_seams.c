@@ -33,8 +33,12 @@ int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_pa
     int rc;
 
     if (row == QC__ROW_NONE) {
-        QC__TRY(qc_sample(ctx, region, sp, out));
-        return qc__sample_medial(ctx, region, d, m, out);
+        rc = qc_sample(ctx, region, sp, out);
+        if (rc == QC_OK)
+            rc = qc__sample_medial(ctx, region, d, m, out);
+        if (rc < 0)
+            out->n = n0;
+        return rc;
     }
     /* the fill first: qc_sample checks the request against the limits */
     fill_sp.margin = fmax(m, (ROW_OFFSET + ROW_CLEAR) * d);
