@@ -132,6 +132,16 @@ typedef struct qc__seg_grid {
 QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p, size_t n,
                                   qc__seg_next next, const void *ud, double cell,
                                   double cells_per_seg);
+/* The cell of grid coordinate t (in cells) on a row of n: floor(t) clamped
+ * to [0, n - 1], NaN to 0. Truncation is floor for t >= 1, so binning loops
+ * make no libm call per coordinate. */
+static inline size_t qc__grid_cell(double t, size_t n)
+{
+    if (!(t >= 1.0))
+        return 0;
+    return t < (double)(n - 1) ? (size_t)t : n - 1;
+}
+
 /* The cells (x0, y0, x1, y1, inclusive) the box of ab meets, clamped. */
 QC__HIDDEN void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4]);
 QC__HIDDEN void qc__seg_grid_free(qc_ctx *ctx, qc__seg_grid *g);

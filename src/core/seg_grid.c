@@ -8,15 +8,9 @@
 
 #include "internal.h"
 
-/* floor() is a libm call per coordinate in the binning loop; for f >= 1
- * truncation is floor, and f < 1 (or NaN) is cell 0 either way. */
 static size_t clamp_cell(double v, double lo, double cell, size_t count)
 {
-    double f = (v - lo) / cell, m = (double)(count - 1);
-
-    if (!(f >= 1.0))
-        return 0;
-    return (size_t)(f < m ? f : m);
+    return qc__grid_cell((v - lo) / cell, count);
 }
 
 void qc__seg_grid_cells(const qc__seg_grid *g, qc_vec2 a, qc_vec2 b, size_t c[4])

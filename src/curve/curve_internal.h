@@ -15,6 +15,16 @@ typedef int (*qc__curve_point_fn)(void *ud, qc_vec2 p, int start);
 QC__HIDDEN int qc__curve_walk(const qc_path *path, double tol,
                               qc__curve_point_fn fn, void *ud);
 
+/* The control points of the cubic command whose points start at
+ * path->pt[k], the pen standing at cur. */
+static inline void qc__curve_cubic(const qc_path *path, size_t k, qc_vec2 cur, qc_vec2 q[4])
+{
+    q[0] = cur;
+    q[1] = path->pt[k];
+    q[2] = path->pt[k + 1];
+    q[3] = path->pt[k + 2];
+}
+
 /* Points a command takes of the path's point array, as the walk reads them. */
 #define QC__CURVE_CMD_POINTS(cmd) ((cmd) == QC_PATH_CUBIC ? 3u : 1u)
 

@@ -61,10 +61,7 @@ int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur, double t
     if (cmd == QC_PATH_CUBIC) {
         qc_vec2 q[4];
 
-        q[0] = cur;
-        q[1] = path->pt[k];
-        q[2] = path->pt[k + 1];
-        q[3] = path->pt[k + 2];
+        qc__curve_cubic(path, k, cur, q);
         if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3]))
             return flatten_cubic(q, tol2, fn, ud);
         return fn(ud, q[3], 0); /* NaN would subdivide to the depth bound for nothing */

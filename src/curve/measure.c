@@ -176,10 +176,7 @@ void qc_curve_measure(const qc_path *path, double tol, double *length, qc_bbox *
         if (cmd == QC_PATH_CUBIC) {
             qc_vec2 q[4];
 
-            q[0] = cur;
-            q[1] = path->pt[k];
-            q[2] = path->pt[k + 1];
-            q[3] = path->pt[k + 2];
+            qc__curve_cubic(path, k, cur, q);
             qc__box_take(&m.box, &m.any, q[3]);
             if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3])) {
                 m.len += cubic_length(q, 1e-3 * tol);

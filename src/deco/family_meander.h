@@ -19,13 +19,6 @@ typedef struct qc__grow_opts {
     const qc__sdf *sdf; /* the region's distance field */
 } qc__grow_opts;
 
-/* The cell of grid coordinate t (in cells) on a row of n: floor(t) clamped
- * to [0, n - 1]; truncation is floor for t > 0, so no floor() per point. */
-static inline size_t qc__meander_cell(double t, size_t n)
-{
-    return t >= (double)(n - 1) ? n - 1 : t > 0.0 ? (size_t)t : 0;
-}
-
 /*
  * Evolves the closed curve c (points in order, closing implicitly; or open,
  * ends pinned, with o->open) inside

@@ -69,8 +69,8 @@ typedef struct vbins {
 
 static size_t vcell(const vbins *b, qc_vec2 p, size_t *cx, size_t *cy)
 {
-    *cx = qc__meander_cell((p.x - b->x0) / b->h, b->gx);
-    *cy = qc__meander_cell((p.y - b->y0) / b->h, b->gy);
+    *cx = qc__grid_cell((p.x - b->x0) / b->h, b->gx);
+    *cy = qc__grid_cell((p.y - b->y0) / b->h, b->gy);
     return *cy * b->gx + *cx;
 }
 

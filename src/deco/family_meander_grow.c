@@ -102,8 +102,8 @@ static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 
 static size_t cell_index(const grow *g, qc_vec2 p)
 {
-    size_t i = qc__meander_cell((p.x - g->x0) / g->h, g->gx);
-    size_t j = qc__meander_cell((p.y - g->y0) / g->h, g->gy);
+    size_t i = qc__grid_cell((p.x - g->x0) / g->h, g->gx);
+    size_t j = qc__grid_cell((p.y - g->y0) / g->h, g->gy);
 
     return j * g->gx + i;
 }

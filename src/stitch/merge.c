@@ -22,9 +22,10 @@
 #define MAX_MERGE_RUN 64 /* points merged into one stitch at most (bounds the work) */
 /* The junction table is cut by a grid of cells over the piece's box, each
  * cell's places hashed within its own run of slots (cell_slots: one and a
- * half per point of the cell). A table hashed over all of it misses the cache at every probe: at
- * 12 million points (a 10 m wanderer) that was 80% of the merge; places
- * near in space are near in the table, and the path walks through space. */
+ * half per point of the cell). A table hashed over all of it misses the
+ * cache at every probe: at 12 million points (a 10 m wanderer) that was 80%
+ * of the merge; places near in space are near in the table, and the path
+ * walks through space. */
 #define POINTS_PER_CELL 4
 
 typedef struct grid {
@@ -205,6 +206,15 @@ static double stray(const qc_vec2 *v, size_t lo, size_t hi, qc_vec2 a, qc_vec2 b
     return sqrt(d2);
 }
 
+/* Stores the tail as m[*k - 1], the kept point now settled, and makes p the
+ * tail: the next kept point, which the merge may still move. */
+static void keep_tail(qc_vec2 *m, size_t *k, qc_vec2 *tail, qc_vec2 p)
+{
+    m[*k - 1] = *tail;
+    *tail = p;
+    ++*k;
+}
+
 /* m[k - 1], the kept point the merge may still move, is held in tail and
  * stored only once a later point is kept: m may then run over v itself (m
  * <= v), as what the merge reads of v is past m[k - 2] (stray reads from
@@ -238,9 +248,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         if (d >= min_seg || (i - at > MAX_MERGE_RUN && !last)) {
             before = at;
             at = i;
-            m[k - 1] = tail;
-            tail = v[i];
-            k++;
+            keep_tail(m, &k, &tail, v[i]);
             continue;
         }
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
@@ -258,9 +266,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         if (d >= floor_len) { /* the path turns here: the short stitch stays */
             before = at;
             at = i;
-            m[k - 1] = tail;
-            tail = v[i];
-            k++;
+            keep_tail(m, &k, &tail, v[i]);
             continue;
         }
         /* too short to sew: merge all the same, sparing a junction; of two,
@@ -278,9 +284,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
             tail = v[i];
             at = i;
         } else if (d > 0) {
-            m[k - 1] = tail;
-            tail = v[i];
-            k++; /* a piece shorter than floor_len in all */
+            keep_tail(m, &k, &tail, v[i]); /* a piece shorter than floor_len in all */
         }
     }
     m[k - 1] = tail;
