@@ -41,6 +41,7 @@ struct qcw_job {
     size_t *chosen;       /* per patch: its rule + 1, 0 for the defaults */
     qc_quilt_result quilt;
     int sewn;             /* plan and region hold the top's line and outlines */
+    size_t top_pieces;    /* the top's line's pieces, counted before the plan took it */
     struct qcw_text *warnings; /* the last SVG read's warnings, JSON strings */
 };
 

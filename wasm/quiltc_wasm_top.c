@@ -3,7 +3,7 @@
  * (cli/quilt_sew.c, cli/cmd_quilt.c) over the same core calls, so a top
  * sewn here gives the CLI's bytes: patches read, overlaps refused, a rule
  * per patch (qc_patch_matches, first fit), qc_quilt, the outlines and the
- * line moved to the origin (qc_quilt_to_origin), qc_stitch_plan.
+ * line moved to the origin (qc_quilt_to_origin), qc_stitch_plan_taking.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -263,7 +263,10 @@ int qcw_quilt(qcw_job *job, int join, int tie_stitches)
         qc_quilt_to_origin(&job->quilt, &job->region);
         memset(&sp, 0, sizeof sp);
         sp.tie_stitches = tie_stitches;
-        rc = qc_stitch_plan(&job->ctx, &job->quilt.path, NULL, &sp, &job->plan);
+        job->top_pieces = qc_path_pieces(&job->quilt.path);
+        /* the plan takes the line: at a king-size top the path and its
+         * flattened stitches are never both whole in the page's memory */
+        rc = qc_stitch_plan_taking(&job->ctx, &job->quilt.path, NULL, &sp, &job->plan);
     }
     free(jobs);
     free(rp);
@@ -343,7 +346,7 @@ const char *qcw_quilt_stats_json(qcw_job *job)
                    "\"link_mm\":%.3f,\"jumps\":%lu,\"pieces\":%lu,\"sewn_mm\":%.3f,"
                    "\"stitch_points\":%lu,\"stitches\":%lu,\"thread_mm\":%.1f,\"sew_seconds\":%.1f}",
              (unsigned long)quilted, (unsigned long)(r->npatch - quilted), total, r->ditch_mm,
-             r->link_mm, (unsigned long)est.jumps, (unsigned long)qc_path_pieces(&r->path),
+             r->link_mm, (unsigned long)est.jumps, (unsigned long)job->top_pieces,
              est.sewn_mm, (unsigned long)job->plan.n, (unsigned long)est.stitches, est.thread_mm,
              est.seconds);
     return qcw__finish_json(job, &out);
