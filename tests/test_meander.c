@@ -76,17 +76,15 @@ static double make_shape(int kind, qc_region *r)
 
 /* ---- measures ---- */
 
-/* The path flattened and resampled every step mm along its length. */
-static void resample(const qc_path *path, double step, qc_points *out)
+/* The polyline v[0..n) resampled every step mm along its length, onto out. */
+static void resample_points(const qc_vec2 *v, size_t n, double step, qc_points *out)
 {
-    qc_points flat = {0};
     double carry = 0.0;
     size_t i;
 
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, NULL));
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, out, flat.v[0]));
-    for (i = 1; i < flat.n; i++) {
-        qc_vec2 a = flat.v[i - 1], b = flat.v[i];
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_points_push(&ctx, out, v[0]));
+    for (i = 1; i < n; i++) {
+        qc_vec2 a = v[i - 1], b = v[i];
         double len = qc_hypot(b.x - a.x, b.y - a.y), t = step - carry;
 
         for (; t <= len; t += step)
@@ -94,6 +92,15 @@ static void resample(const qc_path *path, double step, qc_points *out)
                                                                    a.y + (b.y - a.y) * t / len)));
         carry = len - (t - step);
     }
+}
+
+/* The path flattened and resampled every step mm along its length. */
+static void resample(const qc_path *path, double step, qc_points *out)
+{
+    qc_points flat = {0};
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, NULL));
+    resample_points(flat.v, flat.n, step, out);
     qc_points_free(&ctx, &flat);
 }
 
@@ -219,16 +226,14 @@ static double farthest_fabric(const qc_region *r, const qc_points *fine, double 
     return worst / d;
 }
 
-/* Smallest circumradius of samples 0.1 in apart along the path. */
-static double tightest_turn(const qc_path *path)
+/* Smallest circumradius of three consecutive samples of s. */
+static double turn_of_samples(const qc_points *s)
 {
-    qc_points s = {0};
     double best = HUGE_VAL;
     size_t i;
 
-    resample(path, 0.1 * IN, &s);
-    for (i = 2; i < s.n; i++) {
-        qc_vec2 a = s.v[i - 2], b = s.v[i - 1], c = s.v[i];
+    for (i = 2; i < s->n; i++) {
+        qc_vec2 a = s->v[i - 2], b = s->v[i - 1], c = s->v[i];
         double cr = fabs((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x));
         double l = qc_hypot(b.x - a.x, b.y - a.y) * qc_hypot(c.x - b.x, c.y - b.y) *
                    qc_hypot(a.x - c.x, a.y - c.y);
@@ -238,7 +243,28 @@ static double tightest_turn(const qc_path *path)
                 printf("  tight %.2f mm at (%.1f, %.1f)\n", best, b.x, b.y);
         }
     }
+    return best;
+}
+
+/* Smallest circumradius of samples 0.1 in apart along each sewn piece of
+ * the path (the jump between two pieces is not sewn). */
+static double tightest_turn(const qc_path *path)
+{
+    qc_points s = {0}, flat = {0};
+    qc_order ends = {0};
+    double best = HUGE_VAL;
+    size_t k;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, &ends));
+    for (k = 0; k < ends.n; k++) {
+        size_t from = k ? ends.i[k - 1] : 0;
+        s.n = 0;
+        resample_points(flat.v + from, ends.i[k] - from, 0.1 * IN, &s);
+        best = fmin(best, turn_of_samples(&s));
+    }
     qc_points_free(&ctx, &s);
+    qc_points_free(&ctx, &flat);
+    qc_order_free(&ctx, &ends);
     return best;
 }
 
@@ -277,12 +303,16 @@ static measures measure(const qc_region *r, const qc_path *path, double d)
 
     memset(&m, 0, sizeof m);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc_curve_flatten(&ctx, path, 0.01, &flat, &ends));
-    /* crossings within each sewn piece (the jump between pieces is not sewn) */
+    /* crossings and straight runs within each sewn piece (the jump between
+     * pieces is not sewn) */
     for (i = 0; i < ends.n; i++) {
         size_t from = i ? ends.i[i - 1] : 0, c = 0;
 
         TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_self_crossings(&ctx, flat.v + from, ends.i[i] - from, 0, &c));
         m.crossings += c;
+        s.n = 0;
+        resample_points(flat.v + from, ends.i[i] - from, d / 20.0, &s);
+        m.straight = fmax(m.straight, longest_straight(&s, d));
     }
     qc_order_free(&ctx, &ends);
     resample(path, 0.1, &fine);
@@ -295,8 +325,6 @@ static measures measure(const qc_region *r, const qc_path *path, double d)
     m.seq = area / len;
     m.evenness = gap / (0.5 * m.seq);
     m.turn = tightest_turn(path);
-    resample(path, d / 20.0, &s);
-    m.straight = longest_straight(&s, d);
     qc_points_free(&ctx, &fine);
     qc_points_free(&ctx, &s);
     qc_points_free(&ctx, &flat);
@@ -380,7 +408,8 @@ static void meander_should_meet_the_goals_on_every_shape(void)
              * their tips turn d/4 or wider: at a 36 degree apex a tip turning
              * d/4 0.22 d off both seams ends about 1.2 d from it) */
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].farthest <= (acute ? 1.22 : 0.71), msg);
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.58, msg);
+            /* evenness 1.35-1.55 today: the star point (seed 1) the widest */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].evenness <= 1.56, msg);
             /* turn, issue 17's goal d/4: 0.15-0.24 d before the rounding pass
              * (family_meander_ease.c), 0.14-0.32 d while the hooks leaving a
              * seam were left (rounded inwards they bared it); the tongues'
@@ -390,17 +419,19 @@ static void meander_should_meet_the_goals_on_every_shape(void)
              * 0.15 d while a chord over it was rerouted round its tip (now
              * seeded as before instead). Now 0.244-0.33 d everywhere (0.244-0.25
              * d: a hair under d/4 where the sampling phase meets the arc) but
-             * the two pieces, 0.22 d: where the curve meets the jump between
-             * them, which is not sewn */
+             * the two pieces, 0.22 d (seed 17), within a piece: measured on
+             * each sewn piece, not across the jump between them (0.236 d
+             * there for seed 1, 0.26 d without it) */
             TEST_ASSERT_TRUE_MESSAGE(m[k][s].turn >= (k == S_PIECES ? 0.21 : 0.24) * dd[k], msg);
             /* straight, issue 17's goal 2 d: 2.3-3.45 d before the waves
              * (family_meander_wave.c), 1.55-2.45 d with one wave pass, 1.45-2.0
              * d with a second after the rounding but the border (2.2 d: a run
              * along the seam of 1.5-1.8 d, left) and the heart's cusp (2.45 d,
              * rerouted round its tip); 1.5-2.0 d everywhere now the second
-             * pass waves runs over 1.5 d too. (The pieces' figure is the jump
-             * between them: generate sews each piece on its own.) */
-            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= (k == S_PIECES ? 12.0 : 2.0 + 1e-9), msg);
+             * pass waves runs over 1.5 d too; the two pieces 1.55 d, each
+             * measured on its own (10.15 d across the jump between them,
+             * which is not sewn) */
+            TEST_ASSERT_TRUE_MESSAGE(m[k][s].straight <= 2.0 + 1e-9, msg);
         }
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
@@ -922,6 +953,55 @@ static void meander_should_round_the_hooks_at_its_seams_outwards(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Issue 17's turn goal, d/4 (a machine limit), at every spacing from 1/4
+ * to 3/4 in, not only the one each shape is quilted at; every shape, seed
+ * 1, no crossing and inside. Met at 1/4 in (0.28-0.31 d) and nearly at
+ * 0.4 in (0.236-0.30 d), not beyond: 0.12-0.18 d at 0.6 in, 0.10-0.13 d
+ * at 0.75 in. The turns are sampled every 0.1 in, d/4 at 0.4 in but d/6
+ * and d/7.5 at 0.6 and 0.75 in, while the rounding (qc__meander_round)
+ * measures each turn over d/4 of curve: a hook or notch shorter than that,
+ * by a seam or at a tongue's tip, passes it. Rounding over shorter arcs
+ * too (in the rounding or after it), resampling the curve evenly or on
+ * its spline before it, and a stricter judge of the holes' bumps each
+ * left these 0.10-0.20 d and cost farthest fabric or evenness at the
+ * shapes' own spacings. The bounds are today's, a hair under. */
+static void meander_should_hold_its_turns_at_every_spacing(void)
+{
+    static const double spacing[] = {0.25, 0.4, 0.6, 0.75}, bound[] = {0.27, 0.23, 0.12, 0.10};
+    double worst = HUGE_VAL;
+    char worst_msg[160] = "";
+    size_t s;
+    int k;
+
+    for (s = 0; s < sizeof spacing / sizeof spacing[0]; s++)
+        for (k = 0; k < S_COUNT; k++) {
+            qc_region r;
+            qc_result res;
+            measures m;
+            char msg[160];
+            double d = spacing[s] * IN;
+
+            make_shape(k, &r);
+            TEST_ASSERT_EQUAL_INT(QC_OK, run(&r, d, 1, NULL, 0, &res));
+            m = measure(&r, &res.path, d);
+            snprintf(msg, sizeof msg, "%s d %.2f in: turn %.3f d, farthest %.3f d, evenness %.3f, "
+                     "straight %.2f d", shape_name[k], spacing[s], m.turn / d, m.farthest,
+                     m.evenness, m.straight);
+            printf("%s\n", msg);
+            TEST_ASSERT_EQUAL_size_t_MESSAGE(0, m.crossings, msg);
+            TEST_ASSERT_TRUE_MESSAGE(m.outside < (k == S_PIECES ? 1.0 : 0.02) * IN, msg);
+            if (m.turn / d - bound[s] < worst) { /* the row nearest its bound */
+                worst = m.turn / d - bound[s];
+                memcpy(worst_msg, msg, sizeof msg);
+            }
+            qc_result_free(&ctx, &res);
+            qc_region_free(&ctx, &r);
+        }
+    printf("turns over every spacing, nearest its bound: %s\n", worst_msg);
+    TEST_ASSERT_TRUE_MESSAGE(worst >= 0.0, worst_msg);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -938,5 +1018,6 @@ int main(void)
     RUN_TEST(meander_should_fail_cleanly_out_of_memory);
     RUN_TEST(meander_should_close_the_holes_of_a_block_for_every_seed);
     RUN_TEST(meander_should_round_the_hooks_at_its_seams_outwards);
+    RUN_TEST(meander_should_hold_its_turns_at_every_spacing);
     return UNITY_END();
 }
