@@ -28,6 +28,7 @@
 #define WAVE_AGAIN 1.5   /* ... and these once more after the rounding */
 #define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
+#define EASY_TURN 0.7    /* cos of a turn (45 degrees) surely wider than ROUND_BELOW */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
 #define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, are
@@ -204,8 +205,19 @@ static qc_vec2 along(const qc_points *c, const double *seg, int open, size_t i, 
  * corner the circle the spline could at best round it to). */
 static int turns_tight(const qc_points *c, const double *seg, int open, size_t i, double turn)
 {
-    if (open && (i == 0 || i + 1 == c->n))
+    size_t n = c->n, ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
+
+    if (open && (i == 0 || i + 1 == n))
         return 0;
+    if (seg[ia] >= turn && seg[i] >= turn) {
+        /* the points the radius either side lie on i's own segments: the
+         * circle through them and i is turn / (2 cos(half the angle at i))
+         * across, 1.3 radii or more where the curve turns by less than
+         * EASY_TURN (the answer as measured, without measuring) */
+        qc_vec2 a = c->v[ia], p = c->v[i], b = c->v[ib];
+        if ((p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) > EASY_TURN * seg[ia] * seg[i])
+            return 0;
+    }
     return circumradius(along(c, seg, open, i, -1, turn), c->v[i],
                         along(c, seg, open, i, 1, turn)) < ROUND_BELOW * turn;
 }
