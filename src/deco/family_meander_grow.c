@@ -622,12 +622,17 @@ static size_t undo_crossings(grow *g)
     size_t n = g->n, i, undone = 0;
 
     for (i = 0; i < n; i++) {
-        size_t i1 = i + 1 == n ? 0 : i + 1, c = g->cell[i], cx = c % g->gx, cy = c / g->gx;
-        size_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < g->gx ? cx + 1 : cx;
-        size_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < g->gy ? cy + 1 : cy, x, y, k;
+        size_t i1 = i + 1 == n ? 0 : i + 1, c, cx, cy, x0, x1, y0, y1, x, y, k;
 
         if ((!g->close[i] && !g->close[i1]) || (g->open && i1 == 0) || g->still[i] == 2)
             continue;
+        c = g->cell[i];
+        cx = c % g->gx;
+        cy = c / g->gx;
+        x0 = cx > 0 ? cx - 1 : 0;
+        x1 = cx + 1 < g->gx ? cx + 1 : cx;
+        y0 = cy > 0 ? cy - 1 : 0;
+        y1 = cy + 1 < g->gy ? cy + 1 : cy;
         for (y = y0; y <= y1; y++)
             for (x = x0; x <= x1; x++) {
                 size_t cc = y * g->gx + x;
