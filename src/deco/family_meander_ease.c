@@ -80,9 +80,10 @@ static int vbins_build(qc_ctx *ctx, vbins *b, const qc_points *c, double h)
     qc_vec2 lo = c->v[0], hi = c->v[0];
     size_t i, nc, cx, cy;
 
-    for (i = 1; i < c->n; i++) {
-        lo.x = fmin(lo.x, c->v[i].x), lo.y = fmin(lo.y, c->v[i].y);
-        hi.x = fmax(hi.x, c->v[i].x), hi.y = fmax(hi.y, c->v[i].y);
+    for (i = 1; i < c->n; i++) { /* (no NaN: compared, not fmin's call) */
+        qc_vec2 p = c->v[i];
+        lo.x = p.x < lo.x ? p.x : lo.x, lo.y = p.y < lo.y ? p.y : lo.y;
+        hi.x = p.x > hi.x ? p.x : hi.x, hi.y = p.y > hi.y ? p.y : hi.y;
     }
     while ((hi.x - lo.x) / h * ((hi.y - lo.y) / h) > 4.0 * (double)c->n + 64.0)
         h *= 1.5;
