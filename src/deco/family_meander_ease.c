@@ -373,20 +373,15 @@ static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
 }
 
 /* Seam point k (-OUT_SAMPLES..OUT_SAMPLES) near p: along the tangent at
- * the boundary point nearest p, drawn back onto the boundary; 0 if p is
- * further than SEAM_MM from it. */
-static int seam_sample(const qc__sdf *s, qc_vec2 p, int k, qc_vec2 *q)
+ * the boundary point f nearest p (g the distance field's gradient at p),
+ * drawn back onto the boundary. */
+static qc_vec2 seam_sample(const qc__sdf *s, qc_vec2 f, qc_vec2 g, int k)
 {
-    qc_vec2 g, f;
-    double v = qc__sdf_exact(s, p, &g), step = SEAM_MM / SEAM_SAMPLES;
+    double step = SEAM_MM / SEAM_SAMPLES, v;
+    qc_vec2 q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
 
-    if (v > SEAM_MM)
-        return 0;
-    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
-    *q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
-    v = qc__sdf_exact(s, *q, &g);
-    *q = QC__V2(q->x - v * g.x, q->y - v * g.y);
-    return 1;
+    v = qc__sdf_exact(s, q, &g);
+    return QC__V2(q.x - v * g.x, q.y - v * g.y);
 }
 
 /* Whether a segment of c (binned in b) passes within SEAM_MM of q. */
@@ -412,11 +407,15 @@ static uint32_t seam_cover(const qc_points *c, int open, const vbins *b, const q
                            qc_vec2 p)
 {
     uint32_t bits = 0;
-    qc_vec2 q;
+    qc_vec2 g, f;
+    double v = qc__sdf_exact(s, p, &g);
     int k;
 
+    if (v > SEAM_MM)
+        return 0; /* no seam near */
+    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
     for (k = -OUT_SAMPLES; k <= OUT_SAMPLES; k++)
-        if (seam_sample(s, p, k, &q) && seam_covered(c, open, b, q))
+        if (seam_covered(c, open, b, seam_sample(s, f, g, k)))
             bits |= (uint32_t)1 << (k + OUT_SAMPLES);
     return bits;
 }
