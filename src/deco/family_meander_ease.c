@@ -28,6 +28,7 @@
 #define WAVE_AGAIN 1.5   /* ... and these once more after the rounding */
 #define ROUND_PASSES 10  /* rounds of rounding (tight runs move half way each) */
 #define ROUND_BELOW 1.0  /* rounded: turning tighter than this times the radius */
+#define EASY_TURN 0.7    /* cos of a turn (45 degrees) surely wider than ROUND_BELOW */
 #define ROUND_DENSE 0.5  /* segments at a tight turn split this short, times the radius */
 #define ROUND_STEP 0.5   /* share of the way to the middle of the stencil */
 #define ROUND_TIP 0.105  /* runs with a vertex this near the boundary, times d, are
@@ -79,9 +80,10 @@ static int vbins_build(qc_ctx *ctx, vbins *b, const qc_points *c, double h)
     qc_vec2 lo = c->v[0], hi = c->v[0];
     size_t i, nc, cx, cy;
 
-    for (i = 1; i < c->n; i++) {
-        lo.x = fmin(lo.x, c->v[i].x), lo.y = fmin(lo.y, c->v[i].y);
-        hi.x = fmax(hi.x, c->v[i].x), hi.y = fmax(hi.y, c->v[i].y);
+    for (i = 1; i < c->n; i++) { /* (no NaN: compared, not fmin's call) */
+        qc_vec2 p = c->v[i];
+        lo.x = p.x < lo.x ? p.x : lo.x, lo.y = p.y < lo.y ? p.y : lo.y;
+        hi.x = p.x > hi.x ? p.x : hi.x, hi.y = p.y > hi.y ? p.y : hi.y;
     }
     while ((hi.x - lo.x) / h * ((hi.y - lo.y) / h) > 4.0 * (double)c->n + 64.0)
         h *= 1.5;
@@ -158,27 +160,41 @@ int qc__meander_seg_inside(const qc__sdf *s, qc_vec2 a, qc_vec2 b, double inner)
     }
 }
 
+/* seg[k] the length of c's segment from vertex k to the next (the last
+ * one closing the curve); seg holds c->n. */
+static void seg_lengths(const qc_points *c, double *seg)
+{
+    size_t n = c->n, k;
+
+    for (k = 0; k < n; k++) {
+        qc_vec2 a = c->v[k], b = c->v[k + 1 == n ? 0 : k + 1];
+        seg[k] = qc_hypot(b.x - a.x, b.y - a.y);
+    }
+}
+
 /* The point arc length len from vertex i along c, backwards (dir < 0) or
- * forwards; an open curve's end where it is nearer. */
-static qc_vec2 along(const qc_points *c, int open, size_t i, int dir, double len)
+ * forwards; an open curve's end where it is nearer. seg: c's segment
+ * lengths (seg_lengths: a length is the same to the bit either way). */
+static qc_vec2 along(const qc_points *c, const double *seg, int open, size_t i, int dir,
+                     double len)
 {
     size_t n = c->n, k = i, steps;
 
     for (steps = 0; steps < n; steps++) {
         size_t j;
-        double seg;
+        double sj;
         if (dir < 0 && k == 0 && open)
             return c->v[0];
         if (dir > 0 && k + 1 == n && open)
             return c->v[n - 1];
         j = dir < 0 ? (k == 0 ? n - 1 : k - 1) : (k + 1 == n ? 0 : k + 1);
-        seg = qc_hypot(c->v[j].x - c->v[k].x, c->v[j].y - c->v[k].y);
-        if (seg >= len) {
-            double t = len / seg;
+        sj = seg[dir < 0 ? j : k];
+        if (sj >= len) {
+            double t = len / sj;
             return QC__V2(c->v[k].x + t * (c->v[j].x - c->v[k].x),
                           c->v[k].y + t * (c->v[j].y - c->v[k].y));
         }
-        len -= seg;
+        len -= sj;
         k = j;
     }
     return c->v[i];
@@ -188,29 +204,45 @@ static qc_vec2 along(const qc_points *c, int open, size_t i, int dir, double len
  * the tests measure a turn: the circle through it and the points the
  * radius before and after it along c (for an arc, its own radius; at a
  * corner the circle the spline could at best round it to). */
-static int turns_tight(const qc_points *c, int open, size_t i, double turn)
+static int turns_tight(const qc_points *c, const double *seg, int open, size_t i, double turn)
 {
-    if (open && (i == 0 || i + 1 == c->n))
+    size_t n = c->n, ia = i == 0 ? n - 1 : i - 1, ib = i + 1 == n ? 0 : i + 1;
+
+    if (open && (i == 0 || i + 1 == n))
         return 0;
-    return circumradius(along(c, open, i, -1, turn), c->v[i], along(c, open, i, 1, turn)) <
-           ROUND_BELOW * turn;
+    if (seg[ia] >= turn && seg[i] >= turn) {
+        /* the points the radius either side lie on i's own segments: the
+         * circle through them and i is turn / (2 cos(half the angle at i))
+         * across, 1.3 radii or more where the curve turns by less than
+         * EASY_TURN (the answer as measured, without measuring) */
+        qc_vec2 a = c->v[ia], p = c->v[i], b = c->v[ib];
+        if ((p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) > EASY_TURN * seg[ia] * seg[i])
+            return 0;
+    }
+    return circumradius(along(c, seg, open, i, -1, turn), c->v[i],
+                        along(c, seg, open, i, 1, turn)) < ROUND_BELOW * turn;
 }
 
 /* c with the segments at a tight vertex split into pieces of at most
- * ROUND_DENSE times the radius (the same polyline, with room to bend). */
-static int densify(qc_ctx *ctx, const qc_points *c, int open, double turn, qc_points *out)
+ * ROUND_DENSE times the radius (the same polyline, with room to bend).
+ * seg: room for c->n lengths. */
+static int densify(qc_ctx *ctx, const qc_points *c, int open, double turn, double *seg,
+                   qc_points *out)
 {
     size_t n = c->n, i, k;
-    unsigned char prev_tight = 0, first_tight = (unsigned char)turns_tight(c, open, 0, turn);
+    unsigned char prev_tight = 0, first_tight;
     int rc = QC_OK;
 
     out->n = 0;
+    seg_lengths(c, seg);
+    first_tight = (unsigned char)turns_tight(c, seg, open, 0, turn);
     prev_tight = first_tight;
     for (i = 0; i < n && rc == QC_OK; i++) {
         size_t j = i + 1 == n ? 0 : i + 1;
         qc_vec2 a = c->v[i], b = c->v[j];
-        unsigned char next_tight = j == 0 ? first_tight : (unsigned char)turns_tight(c, open, j, turn);
-        double len = qc_hypot(b.x - a.x, b.y - a.y);
+        unsigned char next_tight =
+            j == 0 ? first_tight : (unsigned char)turns_tight(c, seg, open, j, turn);
+        double len = seg[i];
         size_t m = (size_t)ceil(len / (ROUND_DENSE * turn));
 
         rc = qc_points_push(ctx, out, a);
@@ -341,20 +373,15 @@ static int round_run(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
 }
 
 /* Seam point k (-OUT_SAMPLES..OUT_SAMPLES) near p: along the tangent at
- * the boundary point nearest p, drawn back onto the boundary; 0 if p is
- * further than SEAM_MM from it. */
-static int seam_sample(const qc__sdf *s, qc_vec2 p, int k, qc_vec2 *q)
+ * the boundary point f nearest p (g the distance field's gradient at p),
+ * drawn back onto the boundary. */
+static qc_vec2 seam_sample(const qc__sdf *s, qc_vec2 f, qc_vec2 g, int k)
 {
-    qc_vec2 g, f;
-    double v = qc__sdf_exact(s, p, &g), step = SEAM_MM / SEAM_SAMPLES;
+    double step = SEAM_MM / SEAM_SAMPLES, v;
+    qc_vec2 q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
 
-    if (v > SEAM_MM)
-        return 0;
-    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
-    *q = QC__V2(f.x - (double)k * step * g.y, f.y + (double)k * step * g.x);
-    v = qc__sdf_exact(s, *q, &g);
-    *q = QC__V2(q->x - v * g.x, q->y - v * g.y);
-    return 1;
+    v = qc__sdf_exact(s, q, &g);
+    return QC__V2(q.x - v * g.x, q.y - v * g.y);
 }
 
 /* Whether a segment of c (binned in b) passes within SEAM_MM of q. */
@@ -380,11 +407,15 @@ static uint32_t seam_cover(const qc_points *c, int open, const vbins *b, const q
                            qc_vec2 p)
 {
     uint32_t bits = 0;
-    qc_vec2 q;
+    qc_vec2 g, f;
+    double v = qc__sdf_exact(s, p, &g);
     int k;
 
+    if (v > SEAM_MM)
+        return 0; /* no seam near */
+    f = QC__V2(p.x - v * g.x, p.y - v * g.y);
     for (k = -OUT_SAMPLES; k <= OUT_SAMPLES; k++)
-        if (seam_sample(s, p, k, &q) && seam_covered(c, open, b, q))
+        if (seam_covered(c, open, b, seam_sample(s, f, g, k)))
             bits |= (uint32_t)1 << (k + OUT_SAMPLES);
     return bits;
 }
@@ -499,8 +530,9 @@ static int round_out(qc_points *c, int open, const vbins *b, const qc__sdf *s, d
 
 /* c with the vertices closer than ROUND_CLUMP radii to the one before
  * dropped (rounding a corner gathers them), then split again at the tight
- * ones (densify): the rounding keeps room to bend. */
-static int respace(qc_ctx *ctx, qc_points *c, int open, double turn)
+ * ones (densify): the rounding keeps room to bend. seg: room for c->n
+ * lengths. */
+static int respace(qc_ctx *ctx, qc_points *c, int open, double turn, double *seg)
 {
     qc_points dense = {0};
     size_t i, k = 1, n = c->n;
@@ -513,7 +545,7 @@ static int respace(qc_ctx *ctx, qc_points *c, int open, double turn)
         c->v[k++] = p;
     }
     c->n = k;
-    rc = densify(ctx, c, open, turn, &dense);
+    rc = densify(ctx, c, open, turn, seg, &dense);
     if (rc == QC_OK) {
         qc_points t = *c;
         *c = dense;
@@ -527,6 +559,7 @@ static int respace(qc_ctx *ctx, qc_points *c, int open, double turn)
 typedef struct round_buf {
     unsigned char *tight;
     qc_vec2 *to, *was;
+    double *seg; /* the segment lengths */
     size_t cap;
 } round_buf;
 
@@ -535,6 +568,7 @@ static void round_buf_free(qc_ctx *ctx, round_buf *r)
     qc__free(ctx, r->tight, r->cap);
     qc__free(ctx, r->to, r->cap * sizeof *r->to);
     qc__free(ctx, r->was, r->cap * sizeof *r->was);
+    qc__free(ctx, r->seg, r->cap * sizeof *r->seg);
     memset(r, 0, sizeof *r);
 }
 
@@ -546,8 +580,10 @@ static int round_buf_fit(qc_ctx *ctx, round_buf *r, size_t n)
     r->tight = qc__alloc(ctx, n);
     r->to = qc__alloc_array(ctx, n, sizeof *r->to);
     r->was = qc__alloc_array(ctx, n, sizeof *r->was);
+    r->seg = qc__alloc_array(ctx, n, sizeof *r->seg);
     r->cap = n;
-    return r->tight == NULL || r->to == NULL || r->was == NULL ? QC_ENOMEM : QC_OK;
+    return r->tight == NULL || r->to == NULL || r->was == NULL || r->seg == NULL ? QC_ENOMEM
+                                                                                 : QC_OK;
 }
 
 int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc__sdf *s,
@@ -566,21 +602,22 @@ int qc__meander_round(qc_ctx *ctx, qc_points *c, int open, double turn, const qc
         vbins bins;
         size_t moved = 0, start = 0, seen;
 
-        rc = respace(ctx, c, open, turn);
+        rc = round_buf_fit(ctx, &r, c->n); /* dropping clumps only shortens c */
+        if (rc == QC_OK)
+            rc = respace(ctx, c, open, turn, r.seg);
         n = c->n;
         if (rc == QC_OK)
             rc = round_buf_fit(ctx, &r, n);
         if (rc < 0 || n < 4)
             break;
+        seg_lengths(c, r.seg);
         if (pass == 0)
-            for (i = 0; i + (open ? 1 : 0) < n; i++) {
-                qc_vec2 a = c->v[i], b = c->v[i + 1 == n ? 0 : i + 1];
-                longest = fmax(longest, qc_hypot(b.x - a.x, b.y - a.y));
-            }
+            for (i = 0; i + (open ? 1 : 0) < n; i++)
+                longest = fmax(longest, r.seg[i]);
         for (i = 0; i < n; i++) {
-            r.tight[i] = (unsigned char)turns_tight(c, open, i, turn);
+            r.tight[i] = (unsigned char)turns_tight(c, r.seg, open, i, turn);
             if (r.tight[i]) {
-                qc_vec2 a = along(c, open, i, -1, turn), b = along(c, open, i, 1, turn);
+                qc_vec2 a = along(c, r.seg, open, i, -1, turn), b = along(c, r.seg, open, i, 1, turn);
                 qc_vec2 p = c->v[i];
                 r.to[i] = QC__V2(p.x + ROUND_STEP * (0.5 * (a.x + b.x) - p.x),
                                  p.y + ROUND_STEP * (0.5 * (a.y + b.y) - p.y));

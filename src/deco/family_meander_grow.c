@@ -92,6 +92,13 @@ typedef struct grow {
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
+/* qc_hypot as qmath.c has it, inlined (the same bits): the rounds call it
+ * a few times per vertex. */
+static double len2d(double x, double y)
+{
+    return sqrt(x * x + y * y);
+}
+
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 {
     QC__TRY(QC__RESERVE(ctx, g->p, g->cap, need));
@@ -161,7 +168,7 @@ static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c, double lab, double l
     double abx = b.x - a.x, aby = b.y - a.y, bcx = c.x - b.x, bcy = c.y - b.y;
     double cax = a.x - c.x, cay = a.y - c.y;
     double cr = fabs(abx * bcy - aby * bcx);
-    double l = lab * lbc * qc_hypot(cax, cay);
+    double l = lab * lbc * len2d(cax, cay);
 
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
@@ -473,12 +480,16 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
      * there a segment may cross the one after next. */
     for (i = 0; i < n; i++) {
         qc_vec2 p = g->p[i], b = g->p[after(g, i)];
-        g->seg[i] = qc_hypot(b.x - p.x, b.y - p.y);
+        g->seg[i] = len2d(b.x - p.x, b.y - p.y);
     }
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
         double la = seg_before(g, i), lb = g->seg[i];
 
+        if (g->still[i] == 2) { /* not binned: nothing that moves comes near */
+            g->close[i] = 0;
+            continue;
+        }
         g->reach[i] = 0.5 * (la > lb ? la : lb) + cap;
         g->close[i] = (p.x - a.x) * (b.x - p.x) + (p.y - a.y) * (b.y - p.y) <= 0.0;
     }
@@ -523,7 +534,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         my = amp * (2.0 * qc_rng_unit(rng) - 1.0);
         m.x += mx - pull * pull_dir.x;
         m.y += my - pull * pull_dir.y;
-        len = qc_hypot(m.x, m.y);
+        len = len2d(m.x, m.y);
         if (len > cap) {
             m.x *= cap / len;
             m.y *= cap / len;
@@ -556,7 +567,8 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
 
     for (i = 0; i + (g->open ? 1 : 0) < n; i++) {
         qc_vec2 a = g->q[i], b = g->q[i + 1 == n ? 0 : i + 1];
-        total += qc_hypot(b.x - a.x, b.y - a.y);
+        g->seg[i] = len2d(b.x - a.x, b.y - a.y); /* read again below */
+        total += g->seg[i];
     }
     may_grow = total < o->max_len;
     QC__TRY(reserve_vertices(ctx, g, 2 * n + 1));
@@ -566,7 +578,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
 
         if (m > 0 && !(g->open && i + 1 == n)) {
             qc_vec2 l = g->p[m - 1];
-            if (qc_hypot(a.x - l.x, a.y - l.y) < lo && n - dropped > 8) {
+            if (len2d(a.x - l.x, a.y - l.y) < lo && n - dropped > 8) {
                 dropped++;
                 continue;
             }
@@ -575,7 +587,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
         g->p[m++] = a;
         if (g->open && i + 1 == n)
             break;
-        len = qc_hypot(b.x - a.x, b.y - a.y);
+        len = g->seg[i];
         if (len > hi && (may_grow || len > 2.0 * hi)) {
             qc_vec2 mid = QC__V2(0.5 * (a.x + b.x), 0.5 * (a.y + b.y));
             double v = qc__sdf_at(o->sdf, mid);
@@ -610,12 +622,17 @@ static size_t undo_crossings(grow *g)
     size_t n = g->n, i, undone = 0;
 
     for (i = 0; i < n; i++) {
-        size_t i1 = i + 1 == n ? 0 : i + 1, c = g->cell[i], cx = c % g->gx, cy = c / g->gx;
-        size_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < g->gx ? cx + 1 : cx;
-        size_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < g->gy ? cy + 1 : cy, x, y, k;
+        size_t i1 = i + 1 == n ? 0 : i + 1, c, cx, cy, x0, x1, y0, y1, x, y, k;
 
-        if ((!g->close[i] && !g->close[i1]) || (g->open && i1 == 0))
+        if ((!g->close[i] && !g->close[i1]) || (g->open && i1 == 0) || g->still[i] == 2)
             continue;
+        c = g->cell[i];
+        cx = c % g->gx;
+        cy = c / g->gx;
+        x0 = cx > 0 ? cx - 1 : 0;
+        x1 = cx + 1 < g->gx ? cx + 1 : cx;
+        y0 = cy > 0 ? cy - 1 : 0;
+        y1 = cy + 1 < g->gy ? cy + 1 : cy;
         for (y = y0; y <= y1; y++)
             for (x = x0; x <= x1; x++) {
                 size_t cc = y * g->gx + x;
@@ -719,7 +736,7 @@ static void settle(grow *g, const qc__grow_opts *o, size_t it)
         qc_vec2 a = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
         size_t tt = tile_of(g, cell_index(g, a));
         if (g->frozen[tt] == 2)
-            g->tile_now[tt] += qc_hypot(b.x - a.x, b.y - a.y);
+            g->tile_now[tt] += len2d(b.x - a.x, b.y - a.y);
     }
     for (t = 0; t < nt; t++) {
         if (g->frozen[t] != 2)
