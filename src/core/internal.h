@@ -58,6 +58,10 @@ QC__HIDDEN void qc__path_fit(qc_ctx *ctx, qc_path *path);
  * starts there. An 'e' without exponent digits is left unread. number.c. */
 QC__HIDDEN int qc__scan_number(const char *s, size_t n, size_t *pos, double *v);
 
+/* *s = qc_sin(x) and *c = qc_cos(x), the same bits, from one reduction
+ * (a circle's arcs ask both of every angle). qmath.c. */
+QC__HIDDEN void qc__sincos(double x, double *s, double *c);
+
 /* Squared distance from p to segment ab (a point when a == b); the one
  * formula every stage uses, so their answers agree to the bit. */
 QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);

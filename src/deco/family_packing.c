@@ -218,8 +218,7 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
         want = p == QC__PEB_NONE ? a0
                                  : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
         s = FIT * pb->r[i] - inset;
-        co = qc_cos(want - have[pb->motif[i]]);
-        si = qc_sin(want - have[pb->motif[i]]);
+        qc__sincos(want - have[pb->motif[i]], &si, &co);
         pb->xf[i].a = s * co;
         pb->xf[i].b = -s * si;
         pb->xf[i].c = s * si;

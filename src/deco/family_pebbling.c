@@ -24,8 +24,10 @@
 static qc_vec2 on_circle(qc_vec2 c, double r, double a)
 {
     qc_vec2 p;
-    p.x = c.x + r * qc_cos(a);
-    p.y = c.y + r * qc_sin(a);
+    double sn, cs;
+    qc__sincos(a, &sn, &cs);
+    p.x = c.x + r * cs;
+    p.y = c.y + r * sn;
     return p;
 }
 
@@ -35,21 +37,20 @@ static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double 
                const qc_vec2 *end)
 {
     int i, m = (int)ceil(sweep / (QC_PI / 2) - 1e-9);
-    double th, k, s1, c1;
+    double th, k, s1, c1, sq, cq;
 
     if (!(sweep > 1e-12))
         return end != NULL ? qc_path_line_to(ctx, out, *end) : QC_OK;
     if (m < 1)
         m = 1;
     th = sweep / m;
-    k = ARC_K * 4.0 / 3.0 * qc_sin(th / 4) / qc_cos(th / 4) * r;
-    s1 = qc_sin(a);
-    c1 = qc_cos(a);
+    qc__sincos(th / 4, &sq, &cq);
+    k = ARC_K * 4.0 / 3.0 * sq / cq * r;
+    qc__sincos(a, &s1, &c1);
     for (i = 0; i < m; i++) {
         double a1 = a + th * (i + 1), s0 = s1, c0 = c1;
         qc_vec2 p0, p1, p2, p3;
-        s1 = qc_sin(a1);
-        c1 = qc_cos(a1);
+        qc__sincos(a1, &s1, &c1);
         p0.x = c.x + r * c0;
         p0.y = c.y + r * s0;
         if (i + 1 == m && end != NULL) {

@@ -117,8 +117,10 @@ static double inside_fraction(qc__pbound *b, qc_vec2 c, double r)
     int i, in = 0;
 
     for (i = 0; i < 64; i++) { /* a sunflower: even over the disk */
-        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332;
-        qc_vec2 q = QC__V2(c.x + rr * qc_cos(a), c.y + rr * qc_sin(a));
+        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332, sn, cs;
+        qc_vec2 q;
+        qc__sincos(a, &sn, &cs);
+        q = QC__V2(c.x + rr * cs, c.y + rr * sn);
         in += (qc__pbound_crossings(b, c, q) & 1) == 0;
     }
     return in / 64.0;
