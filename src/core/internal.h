@@ -36,8 +36,12 @@ QC__HIDDEN void *qc__alloc_array(qc_ctx *ctx, size_t count, size_t elem);
 QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
                            size_t elem);
 
-#define QC__RESERVE(ctx, arr, capv, need) \
-    qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+/* The call only when the room is short: a path's push asks twice per
+ * command, and most asks find room. need and capv are read twice. */
+#define QC__RESERVE(ctx, arr, capv, need)                                          \
+    ((size_t)(need) <= (capv) ? QC_OK                                              \
+                              : qc__reserve((ctx), (void **)&(arr), &(capv), (need), \
+                                            sizeof *(arr)))
 
 /* The same with room for exactly need elements (no doubling): for a large
  * array whose final size is known or well estimated up front. */
