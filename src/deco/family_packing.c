@@ -500,7 +500,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     n = pb.n;
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
-        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
+        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0, NULL);
     qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
     qc__free(ctx, kids, n * sizeof *kids);
     kfirst = kids = NULL;

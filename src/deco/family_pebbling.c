@@ -87,12 +87,13 @@ typedef struct frame {
 static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
 {
     uint32_t *first = NULL, *kids = NULL;
+    double *angle = NULL; /* each pebble's direction from its parent */
     frame *st = NULL;
     size_t sp = 0, cap = 0;
     double a0;
     int rc;
 
-    rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0);
+    rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0, &angle);
     if (rc == QC_OK)
         rc = QC__RESERVE(ctx, st, cap, 64);
     /* room for the whole path at once, not by doublings (nor rounded up to
@@ -119,7 +120,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
         double ri = pb->r[i] - eps;
         if (f->next < first[i + 1]) {
             uint32_t c = kids[f->next++];
-            double phi = qc_atan2(pb->c[c].y - pb->c[i].y, pb->c[c].x - pb->c[i].x);
+            double phi = angle[c];
             double key = wrap(phi - f->entry);
             qc_vec2 ti = on_circle(pb->c[i], ri, phi), tc = ti;
             rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, key - f->cur, &ti);
@@ -153,6 +154,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
     qc__free(ctx, st, cap * sizeof *st);
     qc__free(ctx, first, (pb->n + 1) * sizeof *first);
     qc__free(ctx, kids, pb->n * sizeof *kids);
+    qc__free(ctx, angle, pb->n * sizeof *angle);
     return rc;
 }
 
