@@ -161,7 +161,7 @@ static double clearance_to(pack *P, qc_vec2 x, double cap, double stop, uint32_t
     cell_box(P, x, cap + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
-        if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
+        if ((far > 0 && dx * dx + dy * dy >= far * far) || j == ex0 || j == ex1 || j == ex2)
             continue;
         v = sqrt(dx * dx + dy * dy) - pb->r[j];
         if (v < best) {
@@ -532,7 +532,7 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
     cell_box(P, x, ri + P->rmax + pb->touch, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
-        if (j == i || dx * dx + dy * dy > far * far)
+        if (dx * dx + dy * dy > far * far || j == i)
             continue;
         if (count < 3)
             ids[count] = j;
@@ -887,7 +887,7 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
                 for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
                     double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
                     double far = reach + pb->r[q];
-                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                    if (dx * dx + dy * dy > far * far || q == i || q == j || q == k)
                         continue;
                     rq = apollonius(&A, pb->c[q], pb->r[q], s, r0);
                     if (rq < 0)
@@ -1030,7 +1030,7 @@ static void count_contacts(pack *P)
                 FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
                     double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
                     double far = ri + pb->r[j] + pb->touch;
-                    if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
+                    if (dx * dx + dy * dy > far * far || (cy == c0y && cx == c0x && j <= i))
                         continue;
                     pb->contacts[i] += pb->contacts[i] < 255;
                     pb->contacts[j] += pb->contacts[j] < 255;
