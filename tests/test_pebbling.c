@@ -674,6 +674,31 @@ static void pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedu
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* The arcs take sine and cosine from one reduction (qc__sincos): the very
+ * bits qc_sin and qc_cos give, in every quadrant, at the quadrant edges,
+ * for a negative zero, far out, and NaN for what is not finite. */
+static void sincos_should_give_the_bits_of_sin_and_cos(void)
+{
+    const double edge[] = {0.0, -0.0, QC_PI / 4, QC_PI / 2, QC_PI, 1.5 * QC_PI, 2 * QC_PI,
+                           -QC_PI / 4, -QC_PI, 1e6 + 0.3, -7e8};
+    double x, s, c, zs, zc;
+    size_t k;
+
+    for (k = 0; k < 2000 + sizeof edge / sizeof *edge; k++) {
+        double sn, cs;
+        x = k < 2000 ? -20.0 + 0.0201 * (double)k : edge[k - 2000];
+        s = qc_sin(x);
+        c = qc_cos(x);
+        qc__sincos(x, &sn, &cs);
+        TEST_ASSERT_EQUAL_MEMORY(&s, &sn, sizeof s);
+        TEST_ASSERT_EQUAL_MEMORY(&c, &cs, sizeof c);
+    }
+    qc__sincos((double)NAN, &zs, &zc);
+    TEST_ASSERT_TRUE(isnan(zs) && isnan(zc));
+    qc__sincos((double)INFINITY, &zs, &zc);
+    TEST_ASSERT_TRUE(isnan(zs) && isnan(zc));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -690,5 +715,6 @@ int main(void)
     RUN_TEST(pebbling_should_refuse_empty_tiny_and_bad_input);
     RUN_TEST(pebbling_should_free_everything_when_allocation_fails);
     RUN_TEST(pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedups);
+    RUN_TEST(sincos_should_give_the_bits_of_sin_and_cos);
     return UNITY_END();
 }

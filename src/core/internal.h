@@ -36,8 +36,12 @@ QC__HIDDEN void *qc__alloc_array(qc_ctx *ctx, size_t count, size_t elem);
 QC__HIDDEN int qc__reserve(qc_ctx *ctx, void **ptr, size_t *cap, size_t need,
                            size_t elem);
 
-#define QC__RESERVE(ctx, arr, capv, need) \
-    qc__reserve((ctx), (void **)&(arr), &(capv), (need), sizeof *(arr))
+/* The call only when the room is short: a path's push asks twice per
+ * command, and most asks find room. need and capv are read twice. */
+#define QC__RESERVE(ctx, arr, capv, need)                                          \
+    ((size_t)(need) <= (capv) ? QC_OK                                              \
+                              : qc__reserve((ctx), (void **)&(arr), &(capv), (need), \
+                                            sizeof *(arr)))
 
 /* The same with room for exactly need elements (no doubling): for a large
  * array whose final size is known or well estimated up front. */
@@ -57,6 +61,10 @@ QC__HIDDEN void qc__path_fit(qc_ctx *ctx, qc_path *path);
  * (possibly +-inf for a huge exponent) and *pos past it, or 0 when none
  * starts there. An 'e' without exponent digits is left unread. number.c. */
 QC__HIDDEN int qc__scan_number(const char *s, size_t n, size_t *pos, double *v);
+
+/* *s = qc_sin(x) and *c = qc_cos(x), the same bits, from one reduction
+ * (a circle's arcs ask both of every angle). qmath.c. */
+QC__HIDDEN void qc__sincos(double x, double *s, double *c);
 
 /* Squared distance from p to segment ab (a point when a == b); the one
  * formula every stage uses, so their answers agree to the bit. */

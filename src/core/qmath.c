@@ -79,6 +79,22 @@ double qc_cos(double x)
     }
 }
 
+void qc__sincos(double x, double *s, double *c)
+{
+    double r, sp, cp;
+    int q;
+
+    if (!isfinite(x)) {
+        *s = *c = x - x;
+        return;
+    }
+    q = reduce(x, &r);
+    sp = sin_poly(r);
+    cp = cos_poly(r);
+    *s = q == 0 ? sp : q == 1 ? cp : q == 2 ? -sp : -cp;
+    *c = q == 0 ? cp : q == 1 ? -sp : q == 2 ? -cp : sp;
+}
+
 static double atan_small(double u) /* |u| <= tan(pi/12) */
 {
     /* the series' coefficients (-1)^j / (2j + 1), j = 13 down to 1 */

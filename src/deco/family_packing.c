@@ -218,8 +218,7 @@ static int place_motifs(qc_ctx *ctx, qc__pebbles *pb, const qc_motif_set *set, u
         want = p == QC__PEB_NONE ? a0
                                  : qc_atan2(pb->c[p].y - pb->c[i].y, pb->c[p].x - pb->c[i].x);
         s = FIT * pb->r[i] - inset;
-        co = qc_cos(want - have[pb->motif[i]]);
-        si = qc_sin(want - have[pb->motif[i]]);
+        qc__sincos(want - have[pb->motif[i]], &si, &co);
         pb->xf[i].a = s * co;
         pb->xf[i].b = -s * si;
         pb->xf[i].c = s * si;
@@ -501,7 +500,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     n = pb.n;
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
-        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0);
+        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0, NULL);
     qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
     qc__free(ctx, kids, n * sizeof *kids);
     kfirst = kids = NULL;

@@ -24,32 +24,44 @@
 static qc_vec2 on_circle(qc_vec2 c, double r, double a)
 {
     qc_vec2 p;
-    p.x = c.x + r * qc_cos(a);
-    p.y = c.y + r * qc_sin(a);
+    double sn, cs;
+    qc__sincos(a, &sn, &cs);
+    p.x = c.x + r * cs;
+    p.y = c.y + r * sn;
     return p;
 }
+
+/* The last angle an arc round one circle ended at, with its sine and cosine:
+ * the next arc round it often starts there (HUGE_VAL: none yet). */
+typedef struct turn {
+    double a, s, c;
+} turn;
 
 /* The arc of (c, r) from angle a over sweep (> 0) counter-clockwise, from the
  * current point, in cubics of at most 90 degrees; ends at *end when given. */
 static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double sweep,
-               const qc_vec2 *end)
+               const qc_vec2 *end, turn *t)
 {
     int i, m = (int)ceil(sweep / (QC_PI / 2) - 1e-9);
-    double th, k, s1, c1;
+    double th, k, s1, c1, sq, cq;
 
     if (!(sweep > 1e-12))
         return end != NULL ? qc_path_line_to(ctx, out, *end) : QC_OK;
     if (m < 1)
         m = 1;
     th = sweep / m;
-    k = ARC_K * 4.0 / 3.0 * qc_sin(th / 4) / qc_cos(th / 4) * r;
-    s1 = qc_sin(a);
-    c1 = qc_cos(a);
+    qc__sincos(th / 4, &sq, &cq);
+    k = ARC_K * 4.0 / 3.0 * sq / cq * r;
+    if (a == t->a && a != 0) { /* (the same bits but for the sign of a zero) */
+        s1 = t->s;
+        c1 = t->c;
+    } else {
+        qc__sincos(a, &s1, &c1);
+    }
     for (i = 0; i < m; i++) {
         double a1 = a + th * (i + 1), s0 = s1, c0 = c1;
         qc_vec2 p0, p1, p2, p3;
-        s1 = qc_sin(a1);
-        c1 = qc_cos(a1);
+        qc__sincos(a1, &s1, &c1);
         p0.x = c.x + r * c0;
         p0.y = c.y + r * s0;
         if (i + 1 == m && end != NULL) {
@@ -63,6 +75,9 @@ static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double 
         p2.x = p3.x + k * s1;
         p2.y = p3.y - k * c1;
         QC__TRY(qc_path_cubic_to(ctx, out, p1, p2, p3));
+        t->a = a1;
+        t->s = s1;
+        t->c = c1;
     }
     return QC_OK;
 }
@@ -81,17 +96,19 @@ typedef struct frame {
     uint32_t i, next;
     double entry, cur;  /* entry angle; how far round from it */
     qc_vec2 start, back; /* where this circle began; where its parent resumes */
+    turn t;
 } frame;
 
 static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
 {
     uint32_t *first = NULL, *kids = NULL;
+    double *angle = NULL; /* each pebble's direction from its parent */
     frame *st = NULL;
     size_t sp = 0, cap = 0;
     double a0;
     int rc;
 
-    rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0);
+    rc = qc__pebbles_children(ctx, pb, &first, &kids, &a0, &angle);
     if (rc == QC_OK)
         rc = QC__RESERVE(ctx, st, cap, 64);
     /* room for the whole path at once, not by doublings (nor rounded up to
@@ -108,6 +125,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
         st[0].cur = 0;
         st[0].start = on_circle(pb->c[0], pb->r[0] - eps, a0);
         st[0].back = st[0].start;
+        st[0].t.a = HUGE_VAL;
         sp = 1;
         rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, st[0].start)
                             : qc_path_line_to(ctx, out, st[0].start);
@@ -118,10 +136,10 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
         double ri = pb->r[i] - eps;
         if (f->next < first[i + 1]) {
             uint32_t c = kids[f->next++];
-            double phi = qc_atan2(pb->c[c].y - pb->c[i].y, pb->c[c].x - pb->c[i].x);
+            double phi = angle[c];
             double key = wrap(phi - f->entry);
             qc_vec2 ti = on_circle(pb->c[i], ri, phi), tc = ti;
-            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, key - f->cur, &ti);
+            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, key - f->cur, &ti, &f->t);
             if (key > f->cur)
                 f->cur = key;
             /* a tangent child starts where its parent turns (a cusp the
@@ -140,10 +158,12 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
                 g->cur = 0;
                 g->start = tc;
                 g->back = ti;
+                g->t.a = HUGE_VAL;
             }
         } else {
             qc_vec2 back = f->back, start = f->start;
-            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, 2 * QC_PI - f->cur, &start);
+            rc = arc(ctx, out, pb->c[i], ri, f->entry + f->cur, 2 * QC_PI - f->cur, &start,
+                     &f->t);
             sp--;
             if (rc == QC_OK && sp > 0 && (back.x != start.x || back.y != start.y))
                 rc = qc_path_line_to(ctx, out, back);
@@ -152,6 +172,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
     qc__free(ctx, st, cap * sizeof *st);
     qc__free(ctx, first, (pb->n + 1) * sizeof *first);
     qc__free(ctx, kids, pb->n * sizeof *kids);
+    qc__free(ctx, angle, pb->n * sizeof *angle);
     return rc;
 }
 

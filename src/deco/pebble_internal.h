@@ -96,13 +96,16 @@ QC__HIDDEN int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound
 /* Children of every pebble in the order a counter-clockwise walk round it
  * meets them, starting from its parent: kids[first[i] .. first[i + 1]).
  * *start_angle receives the root's starting angle (the middle of the widest
- * gap between its children). Arrays are allocated (n + 1 and n entries). */
+ * gap between its children). Arrays are allocated (n + 1 and n entries);
+ * with angle_out, also *angle_out (n entries): each pebble's direction from
+ * its parent, qc_atan2 of the centres' difference (the root's unset). */
 /* first[0..n]: where each parent's children start, grouped by parent in the
  * order they were made (a counting sort: no qsort of 10^6 entries, nor its
  * hidden buffer); first[n] = the children's count. */
 QC__HIDDEN void qc__pebbles_group_starts(const qc__pebbles *pb, uint32_t *first);
 QC__HIDDEN int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first,
-                                    uint32_t **kids, double *start_angle);
+                                    uint32_t **kids, double *start_angle,
+                                    double **angle_out);
 
 
 /* Radius min/mean/max, count, pebbles touching fewer than three, coverage. */

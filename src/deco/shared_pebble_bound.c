@@ -55,17 +55,17 @@ size_t qc__pbound_ring(const qc_region *r, uint32_t v, uint32_t *lo, uint32_t *h
 static void cell_range(const qc__cgrid *g, double x0, double y0, double x1, double y1,
                        uint32_t r[4])
 {
-    double c[4];
+    double c[4], lim[2]; /* the limits converted once (a size_t to double is dear) */
     int k;
 
     c[0] = (x0 - g->x0) / g->cell;
     c[1] = (y0 - g->y0) / g->cell;
     c[2] = (x1 - g->x0) / g->cell;
     c[3] = (y1 - g->y0) / g->cell;
-    for (k = 0; k < 4; k++) {
-        double lim = (k & 1) ? g->ny - 1 : g->nx - 1;
-        r[k] = !(c[k] >= 0) ? 0 : c[k] > lim ? (uint32_t)lim : (uint32_t)c[k];
-    }
+    lim[0] = (double)(g->nx - 1);
+    lim[1] = (double)(g->ny - 1);
+    for (k = 0; k < 4; k++)
+        r[k] = !(c[k] >= 0) ? 0 : c[k] > lim[k & 1] ? (uint32_t)lim[k & 1] : (uint32_t)c[k];
 }
 
 static void new_stamp(qc__cgrid *g)

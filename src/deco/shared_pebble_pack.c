@@ -161,7 +161,7 @@ static double clearance_to(pack *P, qc_vec2 x, double cap, double stop, uint32_t
     cell_box(P, x, cap + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
-        if (j == ex0 || j == ex1 || j == ex2 || (far > 0 && dx * dx + dy * dy >= far * far))
+        if ((far > 0 && dx * dx + dy * dy >= far * far) || j == ex0 || j == ex1 || j == ex2)
             continue;
         v = sqrt(dx * dx + dy * dy) - pb->r[j];
         if (v < best) {
@@ -532,7 +532,7 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
     cell_box(P, x, ri + P->rmax + pb->touch, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
         double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
-        if (j == i || dx * dx + dy * dy > far * far)
+        if (dx * dx + dy * dy > far * far || j == i)
             continue;
         if (count < 3)
             ids[count] = j;
@@ -635,6 +635,25 @@ static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k,
                   : qc__pbound_dist(P->b, *at, pb->k * R)) / pb->k < R);
 }
 
+typedef struct apo_pair { /* what apollonius needs of j and k, once per growth */
+    qc_vec2 cj;
+    double rj, rj2, ax, ay, a2, h0a, h1a;
+} apo_pair;
+
+static void apo_pair_init(const qc__pebbles *pb, uint32_t j, uint32_t k, apo_pair *A)
+{
+    double rk = pb->r[k];
+
+    A->cj = pb->c[j];
+    A->rj = pb->r[j];
+    A->rj2 = A->rj * A->rj;
+    A->ax = pb->c[k].x - pb->c[j].x;
+    A->ay = pb->c[k].y - pb->c[j].y;
+    A->a2 = A->ax * A->ax + A->ay * A->ay;
+    A->h0a = A->a2 + A->rj2 - rk * rk;
+    A->h1a = 2 * (A->rj - rk);
+}
+
 /*
  * The first R > r0 at which the circle tangent to j and k on side s (the
  * sign of cross(ck - cj, centre - cj)) touches the circle (cq, rq): the
@@ -642,40 +661,36 @@ static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k,
  * problem of Apollonius), leaving a quadratic in R. HUGE_VAL when it never
  * does; -1 when the centres are collinear (not solved here).
  */
-static double apollonius(const qc__pebbles *pb, uint32_t j, uint32_t k, qc_vec2 cq, double rq,
-                         double s, double r0)
+static double apollonius(const apo_pair *A, qc_vec2 cq, double rq, double s, double r0)
 {
-    double rj = pb->r[j], rk = pb->r[k];
-    double ax = pb->c[k].x - pb->c[j].x, ay = pb->c[k].y - pb->c[j].y;
-    double bx = cq.x - pb->c[j].x, by = cq.y - pb->c[j].y;
-    double det = 4 * (ax * by - ay * bx), h0a, h0b, h1a, h1b, y0x, y0y, y1x, y1y;
-    double A, B, C, best = HUGE_VAL, root[2];
+    double rj = A->rj, ax = A->ax, ay = A->ay, h0a = A->h0a, h1a = A->h1a;
+    double bx = cq.x - A->cj.x, by = cq.y - A->cj.y;
+    double det = 4 * (ax * by - ay * bx), h0b, h1b, y0x, y0y, y1x, y1y;
+    double A2, B, C, best = HUGE_VAL, root[2];
     int nr = 0, m;
 
-    if (!(fabs(det) > 1e-9 * 4 * (ax * ax + ay * ay + bx * bx + by * by)))
+    if (!(fabs(det) > 1e-9 * 4 * (A->a2 + bx * bx + by * by)))
         return -1;
-    h0a = ax * ax + ay * ay + rj * rj - rk * rk;
-    h0b = bx * bx + by * by + rj * rj - rq * rq;
-    h1a = 2 * (rj - rk);
+    h0b = bx * bx + by * by + A->rj2 - rq * rq;
     h1b = 2 * (rj - rq);
     /* y = M^-1 h, M = 2 [a; b] */
     y0x = (2 * by * h0a - 2 * ay * h0b) / det;
     y0y = (-2 * bx * h0a + 2 * ax * h0b) / det;
     y1x = (2 * by * h1a - 2 * ay * h1b) / det;
     y1y = (-2 * bx * h1a + 2 * ax * h1b) / det;
-    A = y1x * y1x + y1y * y1y - 1;
+    A2 = y1x * y1x + y1y * y1y - 1;
     B = 2 * (y0x * y1x + y0y * y1y - rj);
-    C = y0x * y0x + y0y * y0y - rj * rj;
-    if (fabs(A) < 1e-12) {
+    C = y0x * y0x + y0y * y0y - A->rj2;
+    if (fabs(A2) < 1e-12) {
         if (B != 0)
             root[nr++] = -C / B;
     } else {
-        double disc = B * B - 4 * A * C, q;
+        double disc = B * B - 4 * A2 * C, q;
         if (disc < 0)
             return HUGE_VAL;
         q = -0.5 * (B + (B < 0 ? -sqrt(disc) : sqrt(disc)));
         if (q != 0) {
-            root[nr++] = q / A;
+            root[nr++] = q / A2;
             root[nr++] = C / q;
         } else {
             root[nr++] = 0;
@@ -843,14 +858,20 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
     uint32_t ring, maxring = P->nx > P->ny ? P->nx : P->ny;
     uint32_t c0x = clamp_cell((ci.x - P->x0) / P->h, P->nx);
     uint32_t c0y = clamp_cell((ci.y - P->y0) / P->h, P->ny);
+    double reach = 0, reach_R = -1; /* reach is asked again only when R changed */
+    apo_pair A;
 
+    apo_pair_init(pb, j, k, &A);
     for (ring = 0; ring <= maxring; ring++) {
-        double reach = MOVE_MAX * P->d;
         uint32_t r[4], cy;
 
-        if (pair_centre(pb, j, k, R, s, &x))
-            reach = fmin(reach, dist(x, ci));
-        reach += R; /* no pebble farther than this from ci is met */
+        if (R != reach_R) {
+            reach = MOVE_MAX * P->d;
+            if (pair_centre(pb, j, k, R, s, &x))
+                reach = fmin(reach, dist(x, ci));
+            reach += R; /* no pebble farther than this from ci is met */
+            reach_R = R;
+        }
         if (ring >= 2 && (double)(ring - 1) * P->h > reach + P->rmax)
             break;
         ring_box(P, c0x, c0y, ring, r);
@@ -866,9 +887,9 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
                 for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
                     double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
                     double far = reach + pb->r[q];
-                    if (q == i || q == j || q == k || dx * dx + dy * dy > far * far)
+                    if (dx * dx + dy * dy > far * far || q == i || q == j || q == k)
                         continue;
-                    rq = apollonius(pb, j, k, pb->c[q], pb->r[q], s, r0);
+                    rq = apollonius(&A, pb->c[q], pb->r[q], s, r0);
                     if (rq < 0)
                         return -1;
                     if (rq < R)
@@ -1009,7 +1030,7 @@ static void count_contacts(pack *P)
                 FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
                     double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
                     double far = ri + pb->r[j] + pb->touch;
-                    if ((cy == c0y && cx == c0x && j <= i) || dx * dx + dy * dy > far * far)
+                    if (dx * dx + dy * dy > far * far || (cy == c0y && cx == c0x && j <= i))
                         continue;
                     pb->contacts[i] += pb->contacts[i] < 255;
                     pb->contacts[j] += pb->contacts[j] < 255;

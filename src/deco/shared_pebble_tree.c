@@ -44,32 +44,37 @@ static double angle_of(qc_vec2 from, qc_vec2 to)
 }
 
 int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_out,
-                         uint32_t **kids_out, double *start_angle)
+                         uint32_t **kids_out, double *start_angle, double **angle_out)
 {
     size_t n = pb->n, i, m, g = 0, p0;
     uint32_t *first = qc__alloc_array(ctx, n + 1, sizeof *first);
     uint32_t *kids = qc__alloc_array(ctx, n, sizeof *kids);
     kid_key *keys = qc__alloc_array(ctx, n, sizeof *keys);
+    double *angle = angle_out != NULL ? qc__alloc_array(ctx, n, sizeof *angle) : NULL;
     double gap = -1, a0 = -QC_PI / 2;
 
     *first_out = NULL;
     *kids_out = NULL;
-    if (first == NULL || kids == NULL || keys == NULL) {
+    if (first == NULL || kids == NULL || keys == NULL || (angle_out != NULL && angle == NULL)) {
         qc__free(ctx, first, (n + 1) * sizeof *first);
         qc__free(ctx, kids, n * sizeof *kids);
         qc__free(ctx, keys, n * sizeof *keys);
+        qc__free(ctx, angle, n * sizeof *angle);
         return QC_ENOMEM;
     }
     qc__pebbles_group_starts(pb, first); /* first[p] runs to the group's end */
     for (i = 0; i < n; i++) {
         uint32_t p = pb->parent[i];
-        double entry, k;
+        double entry, k, phi;
         if (p == QC__PEB_NONE)
             continue;
         m = first[p]++;
         /* counter-clockwise from where p's own parent comes in (root: +x) */
         entry = pb->parent[p] == QC__PEB_NONE ? 0 : angle_of(pb->c[p], pb->c[pb->parent[p]]);
-        k = angle_of(pb->c[p], pb->c[i]) - entry;
+        phi = angle_of(pb->c[p], pb->c[i]);
+        if (angle != NULL)
+            angle[i] = phi;
+        k = phi - entry;
         while (k <= 0)
             k += 2 * QC_PI;
         while (k > 2 * QC_PI)
@@ -108,6 +113,8 @@ int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first_ou
     qc__free(ctx, keys, n * sizeof *keys);
     *first_out = first;
     *kids_out = kids;
+    if (angle_out != NULL)
+        *angle_out = angle;
     return QC_OK;
 }
 
@@ -117,8 +124,10 @@ static double inside_fraction(qc__pbound *b, qc_vec2 c, double r)
     int i, in = 0;
 
     for (i = 0; i < 64; i++) { /* a sunflower: even over the disk */
-        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332;
-        qc_vec2 q = QC__V2(c.x + rr * qc_cos(a), c.y + rr * qc_sin(a));
+        double rr = r * sqrt((i + 0.5) / 64), a = i * 2.39996322972865332, sn, cs;
+        qc_vec2 q;
+        qc__sincos(a, &sn, &cs);
+        q = QC__V2(c.x + rr * cs, c.y + rr * sn);
         in += (qc__pbound_crossings(b, c, q) & 1) == 0;
     }
     return in / 64.0;
