@@ -191,7 +191,10 @@ int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb)
     size_t nleaves = (m + QC__TSP_LEAF - 1) / QC__TSP_LEAF, i, j;
     qc__btree tree;
     knn_query s;
+    int rc = qc__knn_grid(ctx, q, m, k, nb);
 
+    if (rc <= 0) /* the grid's lists, or out of memory */
+        return rc;
     QC__TRY(qc__btree_init(ctx, &tree, nleaves));
     for (j = 0; j < nleaves; j++) {
         size_t end = (j + 1) * QC__TSP_LEAF < m ? (j + 1) * QC__TSP_LEAF : m;
