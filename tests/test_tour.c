@@ -537,9 +537,11 @@ static void brute_knn(const qc_vec2 *p, size_t m, unsigned k, uint32_t *nb)
 static void assert_knn(const qc_vec2 *p, size_t m, unsigned k, int grid_takes)
 {
     uint32_t *nb = malloc(m * k * sizeof *nb), *ref = malloc(m * k * sizeof *ref);
+    int even = -1;
 
     TEST_ASSERT_EQUAL_INT(grid_takes ? QC_OK : 1, qc__knn_grid(&ctx, p, m, k, nb));
-    TEST_ASSERT_EQUAL_INT(QC_OK, qc__knn(&ctx, p, m, k, nb));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__knn(&ctx, p, m, k, nb, &even));
+    TEST_ASSERT_EQUAL_INT(grid_takes, even);
     brute_knn(p, m, k, ref);
     TEST_ASSERT_EQUAL_MEMORY(ref, nb, m * k * sizeof *nb);
     free(nb);

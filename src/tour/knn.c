@@ -186,13 +186,15 @@ static void nearest(knn_query *s, size_t i, size_t nleaves, uint32_t *out)
     memcpy(out, s->id, s->k * sizeof *out);
 }
 
-int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb)
+int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb, int *even)
 {
     size_t nleaves = (m + QC__TSP_LEAF - 1) / QC__TSP_LEAF, i, j;
     qc__btree tree;
     knn_query s;
     int rc = qc__knn_grid(ctx, q, m, k, nb);
 
+    if (even != NULL)
+        *even = rc == QC_OK;
     if (rc <= 0) /* the grid's lists, or out of memory */
         return rc;
     QC__TRY(qc__btree_init(ctx, &tree, nleaves));

@@ -52,9 +52,11 @@ QC__HIDDEN void qc__btree_free(qc_ctx *ctx, qc__btree *t);
  * (Lists forced to hold neighbours from each quadrant were tried: they
  * made the TSPLIB tours 0.5-2% longer on average.)
  */
-QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb);
+QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb,
+                       int *even);
 /* The same lists over a uniform grid for evenly spread points (knn_grid.c,
- * which qc__knn tries first): QC_OK, QC_ENOMEM, or 1 when it declines. */
+ * which qc__knn tries first, setting *even, if not NULL, when it took
+ * them): QC_OK, QC_ENOMEM, or 1 when it declines. */
 QC__HIDDEN int qc__knn_grid(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb);
 
 /* ---- the solver state ---- */
