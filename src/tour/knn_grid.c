@@ -35,12 +35,6 @@ typedef struct grid {
     size_t visits, budget;
 } grid;
 
-typedef struct best {
-    unsigned k, have;
-    double d2[QC__TSP_MAX_K];
-    uint32_t id[QC__TSP_MAX_K];
-} best;
-
 static uint32_t cell_of(double v, double lo, double inv, uint32_t cells)
 {
     double f = (v - lo) * inv;
@@ -106,22 +100,6 @@ static int build(qc_ctx *ctx, grid *g, size_t m)
     return QC_OK;
 }
 
-static void offer(best *b, double d2, uint32_t id)
-{
-    unsigned j;
-
-    if (b->have == b->k &&
-        !(d2 < b->d2[b->k - 1] || (d2 == b->d2[b->k - 1] && id < b->id[b->k - 1])))
-        return;
-    j = b->have < b->k ? b->have++ : b->k - 1;
-    for (; j > 0 && (b->d2[j - 1] > d2 || (b->d2[j - 1] == d2 && b->id[j - 1] > id)); j--) {
-        b->d2[j] = b->d2[j - 1];
-        b->id[j] = b->id[j - 1];
-    }
-    b->d2[j] = d2;
-    b->id[j] = id;
-}
-
 /* The squared distance from a to the cells x0 .. x1 of row y, widened by
  * the margin. */
 static double span_d2(const grid *g, qc_vec2 a, uint32_t x0, uint32_t x1, uint32_t y)
@@ -137,7 +115,7 @@ static double span_d2(const grid *g, qc_vec2 a, uint32_t x0, uint32_t x1, uint32
 
 /* Offers the points of cells x0 .. x1 of row y: one run of id, as the
  * cells go row by row. */
-static void scan_span(grid *g, best *b, uint32_t self, uint32_t x0, uint32_t x1, uint32_t y)
+static void scan_span(grid *g, qc__knn_best *b, uint32_t self, uint32_t x0, uint32_t x1, uint32_t y)
 {
     qc_vec2 a = g->q[self];
     size_t c = (size_t)y * g->gx, i, end = g->start[c + x1 + 1];
@@ -150,12 +128,12 @@ static void scan_span(grid *g, best *b, uint32_t self, uint32_t x0, uint32_t x1,
         double dx = g->q[j].x - a.x, dy = g->q[j].y - a.y;
 
         if (j != self)
-            offer(b, dx * dx + dy * dy, j);
+            qc__knn_offer(b, dx * dx + dy * dy, j);
     }
 }
 
 /* Ring r around (cx, cy): the cells at Chebyshev distance r, clipped. */
-static void scan_ring(grid *g, best *b, uint32_t self, uint32_t cx, uint32_t cy, uint32_t r)
+static void scan_ring(grid *g, qc__knn_best *b, uint32_t self, uint32_t cx, uint32_t cy, uint32_t r)
 {
     long x0 = (long)cx - (long)r, x1 = (long)cx + (long)r;
     long y0 = (long)cy - (long)r, y1 = (long)cy + (long)r, y;
@@ -181,7 +159,7 @@ static int nearest(grid *g, uint32_t i, unsigned k, uint32_t *out)
     qc_vec2 a = g->q[i];
     uint32_t cx = cell_of(a.x, g->x0, g->inv, g->gx), cy = cell_of(a.y, g->y0, g->inv, g->gy);
     uint32_t r, rmax = g->gx > g->gy ? g->gx : g->gy;
-    best b;
+    qc__knn_best b;
 
     b.k = k;
     b.have = 0;

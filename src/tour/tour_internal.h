@@ -43,6 +43,30 @@ QC__HIDDEN int qc__btree_init(qc_ctx *ctx, qc__btree *t, size_t nleaves);
 QC__HIDDEN void qc__btree_finish(qc__btree *t);
 QC__HIDDEN void qc__btree_free(qc_ctx *ctx, qc__btree *t);
 
+/* One query's best k so far, sorted by (squared distance, index): the box
+ * tree's and the grid's (knn.c, knn_grid.c). */
+typedef struct qc__knn_best {
+    unsigned k, have;
+    double d2[QC__TSP_MAX_K];
+    uint32_t id[QC__TSP_MAX_K];
+} qc__knn_best;
+
+static inline void qc__knn_offer(qc__knn_best *b, double d2, uint32_t id)
+{
+    unsigned j;
+
+    if (b->have == b->k &&
+        !(d2 < b->d2[b->k - 1] || (d2 == b->d2[b->k - 1] && id < b->id[b->k - 1])))
+        return;
+    j = b->have < b->k ? b->have++ : b->k - 1;
+    for (; j > 0 && (b->d2[j - 1] > d2 || (b->d2[j - 1] == d2 && b->id[j - 1] > id)); j--) {
+        b->d2[j] = b->d2[j - 1];
+        b->id[j] = b->id[j - 1];
+    }
+    b->d2[j] = d2;
+    b->id[j] = id;
+}
+
 /*
  * The k nearest neighbours of every point of q[0..m) among the others
  * (m >= 2, k <= min(m - 1, QC__TSP_MAX_K)), nearest first, ties by index:
