@@ -112,10 +112,12 @@ static int solve(qc__tsp *s, int method, int neighbours, const qc_tsp_params *pa
     QC__TRY(qc__tsp_greedy(s));
     if (method == QC_TSP_METHOD_OR3OPT) {
         /* Delaunay neighbours reach across clusters; evenly spread points
-         * (the grid took their lists) have none to reach across, and their
-         * nearest do as well: TSPLIB seeds 1-4 1.76% -> 1.72% above the
-         * optima, 927 Poisson points 12% fewer instructions. */
-        if (!even)
+         * (the grid took their lists) have none to reach across, and the
+         * default alone does as well with its nearest: TSPLIB seeds 1-4
+         * 1.77% -> 1.72% above the optima, 927 Poisson points 12% fewer
+         * instructions. A budget's LK rounds keep them (without: +1000 ms
+         * 0.12% -> 0.17%, +10 s 0.10% -> 0.28% on the slowest three). */
+        if (!even || !quick)
             QC__TRY(qc__tsp_add_delaunay(s));
         QC__TRY(qc__tsp_cache_dists(s));
     }
