@@ -374,7 +374,14 @@ static int kick(qc__tsp *s, qc_rng *rng, uint32_t i, uint32_t longest, double *d
 
     *delta += qc__tsp_dist(s, a, c1) + qc__tsp_dist(s, c2, b1) + qc__tsp_dist(s, b2, d) -
               qc__tsp_dist(s, a, b1) - qc__tsp_dist(s, b2, c1) - qc__tsp_dist(s, c2, d);
+    /* empty entries after it: the log fills as with the three reversals
+     * (those of one point log nothing), so the walk's reset (log_max)
+     * comes when it did */
     QC__TRY(log_entry(s, ib1, ROTATED | l1 << 16 | l2));
+    if (l1 > 1)
+        QC__TRY(log_entry(s, ib1, 0));
+    if (l2 > 1)
+        QC__TRY(log_entry(s, ib1, 0));
     rotate_raw(s, ib1, l1, l2);
     qc__tsp_push(s, a);
     qc__tsp_push(s, b1);
