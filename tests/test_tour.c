@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "quiltc.h"
+#include "../src/tour/tour_internal.h"
 #include "testalloc.h"
 #include "testgeom.h"
 #include "unity.h"
@@ -505,6 +506,73 @@ void tour_length_should_sum_the_edges(void)
     TEST_ASSERT_EQUAL_DOUBLE(8.0, qc_tour_length(p + 1, t, 2, 1));
 }
 
+/* ---- nearest neighbours ---- */
+
+/* The k nearest of each point by brute force, by (squared distance, index). */
+static void brute_knn(const qc_vec2 *p, size_t m, unsigned k, uint32_t *nb)
+{
+    size_t i, j;
+    unsigned h, at;
+
+    for (i = 0; i < m; i++) {
+        uint32_t *list = nb + i * k;
+        double d[QC__TSP_MAX_K];
+        unsigned have = 0;
+
+        for (j = 0; j < m; j++) {
+            double dx = p[j].x - p[i].x, dy = p[j].y - p[i].y, d2 = dx * dx + dy * dy;
+            if (j == i || (have == k && !(d2 < d[k - 1])))
+                continue; /* j ascending: a tie keeps the lower index */
+            at = have < k ? have++ : k - 1;
+            for (h = at; h > 0 && d[h - 1] > d2; h--) {
+                d[h] = d[h - 1];
+                list[h] = list[h - 1];
+            }
+            d[h] = d2;
+            list[h] = (uint32_t)j;
+        }
+    }
+}
+
+static void assert_knn(const qc_vec2 *p, size_t m, unsigned k, int grid_takes)
+{
+    uint32_t *nb = malloc(m * k * sizeof *nb), *ref = malloc(m * k * sizeof *ref);
+    int even = -1;
+
+    TEST_ASSERT_EQUAL_INT(grid_takes ? QC_OK : 1, qc__knn_grid(&ctx, p, m, k, nb));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__knn(&ctx, p, m, k, nb, &even));
+    TEST_ASSERT_EQUAL_INT(grid_takes, even);
+    brute_knn(p, m, k, ref);
+    TEST_ASSERT_EQUAL_MEMORY(ref, nb, m * k * sizeof *nb);
+    free(nb);
+    free(ref);
+}
+
+void knn_should_list_the_nearest_by_distance_then_index(void)
+{
+    qc_vec2 *p = random_points(3000, 5, 100.0);
+    size_t i;
+
+    assert_knn(p, 3000, 9, 1); /* evenly spread: the grid */
+    assert_knn(p, 3000, 32, 1);
+    assert_knn(p, 2, 1, 1);
+    free(p);
+    p = grid(40, 25, 1.5); /* ties everywhere: broken by index */
+    assert_knn(p, 1000, 10, 1);
+    free(p);
+    p = grid(300, 1, 2.0); /* a line: one row of cells */
+    assert_knn(p, 300, 6, 1);
+    free(p);
+    p = clusters(1500, 5, 11); /* crowded cells: the box tree */
+    assert_knn(p, 1500, 9, 0);
+    free(p);
+    p = random_points(2000, 6, 100.0); /* a far outlier: rings too many */
+    for (i = 0; i < 20; i++)
+        p[i] = v2(1e7 + i * 1e6, -1e7);
+    assert_knn(p, 2000, 9, 0);
+    free(p);
+}
+
 /* ---- TSPLIB ---- */
 
 static int load_tsplib(const char *name, qc_points *pts)
@@ -733,6 +801,7 @@ int main(void)
     RUN_TEST(or3opt_kicks_should_thin_out_for_large_inputs);
     RUN_TEST(tsp_should_fail_cleanly_out_of_memory);
     RUN_TEST(tour_length_should_sum_the_edges);
+    RUN_TEST(knn_should_list_the_nearest_by_distance_then_index);
     RUN_TEST(tsp_should_come_near_the_tsplib_optima);
     RUN_TEST(or3opt_should_come_nearer_than_oropt_could);
     RUN_TEST(or3opt_should_join_the_clusters_of_fl1577);

@@ -15,6 +15,7 @@ typedef struct qc__wchain {
     qc_vec2 p[QC__WCHAIN_MAX + 1];
     qc_bbox seg[QC__WCHAIN_MAX];
     qc_bbox grp[QC__WCHAIN_MAX / QC__WCHAIN_GROUP]; /* of QC__WCHAIN_GROUP segments each */
+    qc_bbox all;  /* of every segment */
     size_t n; /* points, 0: none kept */
 } qc__wchain;
 
@@ -23,6 +24,7 @@ QC__HIDDEN void qc__wchain_set(qc__wchain *c, const qc_vec2 *pts, size_t n);
 
 /* 1 if segment s[0..1] touches a segment of c (the test below, one segment). */
 QC__HIDDEN int qc__wchain_seg_touch(const qc__wchain *c, const qc_vec2 *s);
+
 
 /* 1 if a segment k of the polyline q[0..nq) that skip(ud, k) does not
  * exempt touches a segment of c, by the collision grid's own pair test

@@ -79,6 +79,14 @@ void qc__wchain_set(qc__wchain *c, const qc_vec2 *pts, size_t n)
         if (c->seg[k].max.y > g->max.y)
             g->max.y = c->seg[k].max.y;
     }
+    c->all = c->grp[0];
+    for (k = 1; k <= (n - 2) / QC__WCHAIN_GROUP; k++) {
+        const qc_bbox *g = &c->grp[k];
+        c->all.min.x = g->min.x < c->all.min.x ? g->min.x : c->all.min.x;
+        c->all.min.y = g->min.y < c->all.min.y ? g->min.y : c->all.min.y;
+        c->all.max.x = g->max.x > c->all.max.x ? g->max.x : c->all.max.x;
+        c->all.max.y = g->max.y > c->all.max.y ? g->max.y : c->all.max.y;
+    }
     c->n = n;
 }
 
@@ -90,6 +98,8 @@ int qc__wchain_seg_touch(const qc__wchain *c, const qc_vec2 *s)
     if (c->n < 2)
         return 0;
     seg_box(s, &sb);
+    if (apart(&sb, &c->all)) /* the whole chain's box first */
+        return 0;
     /* from the chain's end, where the crossings are; a group's box first */
     for (grp = (c->n - 2) / QC__WCHAIN_GROUP + 1; grp-- > 0;) {
         size_t lo = grp * QC__WCHAIN_GROUP, hi = lo + QC__WCHAIN_GROUP;

@@ -64,34 +64,16 @@ void qc__btree_free(qc_ctx *ctx, qc__btree *t)
     t->box = NULL;
 }
 
-/* One query's state: the best k so far, sorted by (d2, index). */
+/* One query's state. */
 typedef struct knn_query {
     const qc_vec2 *q;
     size_t m;
     const qc__btree *tree;
     qc_vec2 at;
     uint32_t self;
-    unsigned k, have;
     size_t skip_lo, skip_hi; /* leaves already scanned */
-    double d2[QC__TSP_MAX_K];
-    uint32_t id[QC__TSP_MAX_K];
+    qc__knn_best b;
 } knn_query;
-
-static void offer(knn_query *s, double d2, uint32_t id)
-{
-    unsigned j;
-
-    if (s->have == s->k &&
-        !(d2 < s->d2[s->k - 1] || (d2 == s->d2[s->k - 1] && id < s->id[s->k - 1])))
-        return;
-    j = s->have < s->k ? s->have++ : s->k - 1;
-    for (; j > 0 && (s->d2[j - 1] > d2 || (s->d2[j - 1] == d2 && s->id[j - 1] > id)); j--) {
-        s->d2[j] = s->d2[j - 1];
-        s->id[j] = s->id[j - 1];
-    }
-    s->d2[j] = d2;
-    s->id[j] = id;
-}
 
 static void scan_leaf(knn_query *s, size_t leaf)
 {
@@ -102,7 +84,7 @@ static void scan_leaf(knn_query *s, size_t leaf)
     for (; i < end; i++) {
         double dx = s->q[i].x - s->at.x, dy = s->q[i].y - s->at.y;
         if (i != s->self)
-            offer(s, dx * dx + dy * dy, (uint32_t)i);
+            qc__knn_offer(&s->b, dx * dx + dy * dy, (uint32_t)i);
     }
 }
 
@@ -121,9 +103,9 @@ static int worth(const knn_query *s, double d2)
 {
     double w;
 
-    if (s->have < s->k)
+    if (s->b.have < s->b.k)
         return 1;
-    w = s->d2[s->k - 1];
+    w = s->b.d2[s->b.k - 1];
     return d2 < w || (d2 == w && w > 0.0);
 }
 
@@ -167,7 +149,7 @@ static void nearest(knn_query *s, size_t i, size_t nleaves, uint32_t *out)
 
     s->at = s->q[i];
     s->self = (uint32_t)i;
-    s->have = 0;
+    s->b.have = 0;
     /* the point's own leaf and the two beside it first: a tight bound early */
     s->skip_lo = leaf > 0 ? leaf - 1 : 0;
     s->skip_hi = leaf + 1 < nleaves ? leaf + 1 : leaf;
@@ -183,15 +165,20 @@ static void nearest(knn_query *s, size_t i, size_t nleaves, uint32_t *out)
             worth(s, box_d2(s->tree->box + s->tree->off[l] + sib, s->at)))
             visit(s, l, sib);
     }
-    memcpy(out, s->id, s->k * sizeof *out);
+    memcpy(out, s->b.id, s->b.k * sizeof *out);
 }
 
-int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb)
+int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb, int *even)
 {
     size_t nleaves = (m + QC__TSP_LEAF - 1) / QC__TSP_LEAF, i, j;
     qc__btree tree;
     knn_query s;
+    int rc = qc__knn_grid(ctx, q, m, k, nb);
 
+    if (even != NULL)
+        *even = rc == QC_OK;
+    if (rc <= 0) /* the grid's lists, or out of memory */
+        return rc;
     QC__TRY(qc__btree_init(ctx, &tree, nleaves));
     for (j = 0; j < nleaves; j++) {
         size_t end = (j + 1) * QC__TSP_LEAF < m ? (j + 1) * QC__TSP_LEAF : m;
@@ -211,7 +198,7 @@ int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb)
     s.q = q;
     s.m = m;
     s.tree = &tree;
-    s.k = k;
+    s.b.k = k;
     for (i = 0; i < m; i++)
         nearest(&s, i, nleaves, nb + i * k);
     qc__btree_free(ctx, &tree);

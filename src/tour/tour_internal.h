@@ -43,6 +43,30 @@ QC__HIDDEN int qc__btree_init(qc_ctx *ctx, qc__btree *t, size_t nleaves);
 QC__HIDDEN void qc__btree_finish(qc__btree *t);
 QC__HIDDEN void qc__btree_free(qc_ctx *ctx, qc__btree *t);
 
+/* One query's best k so far, sorted by (squared distance, index): the box
+ * tree's and the grid's (knn.c, knn_grid.c). */
+typedef struct qc__knn_best {
+    unsigned k, have;
+    double d2[QC__TSP_MAX_K];
+    uint32_t id[QC__TSP_MAX_K];
+} qc__knn_best;
+
+static inline void qc__knn_offer(qc__knn_best *b, double d2, uint32_t id)
+{
+    unsigned j;
+
+    if (b->have == b->k &&
+        !(d2 < b->d2[b->k - 1] || (d2 == b->d2[b->k - 1] && id < b->id[b->k - 1])))
+        return;
+    j = b->have < b->k ? b->have++ : b->k - 1;
+    for (; j > 0 && (b->d2[j - 1] > d2 || (b->d2[j - 1] == d2 && b->id[j - 1] > id)); j--) {
+        b->d2[j] = b->d2[j - 1];
+        b->id[j] = b->id[j - 1];
+    }
+    b->d2[j] = d2;
+    b->id[j] = id;
+}
+
 /*
  * The k nearest neighbours of every point of q[0..m) among the others
  * (m >= 2, k <= min(m - 1, QC__TSP_MAX_K)), nearest first, ties by index:
@@ -52,7 +76,12 @@ QC__HIDDEN void qc__btree_free(qc_ctx *ctx, qc__btree *t);
  * (Lists forced to hold neighbours from each quadrant were tried: they
  * made the TSPLIB tours 0.5-2% longer on average.)
  */
-QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb);
+QC__HIDDEN int qc__knn(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb,
+                       int *even);
+/* The same lists over a uniform grid for evenly spread points (knn_grid.c,
+ * which qc__knn tries first, setting *even, if not NULL, when it took
+ * them): QC_OK, QC_ENOMEM, or 1 when it declines. */
+QC__HIDDEN int qc__knn_grid(qc_ctx *ctx, const qc_vec2 *q, size_t m, unsigned k, uint32_t *nb);
 
 /* ---- the solver state ---- */
 

@@ -122,7 +122,7 @@ static int join_rounds(greedy *g)
                 pts[c++] = s->q[u];
             }
         k = c - 1 < END_K ? (unsigned)(c - 1) : END_K;
-        rc = qc__knn(s->ctx, pts, c, k, nb);
+        rc = qc__knn(s->ctx, pts, c, k, nb, NULL);
         if (rc == QC_OK)
             rc = greedy_pass(g, id, c, pts, nb, k, k);
         if (rc < 0 || (g->edges - before) * 8 < frags)

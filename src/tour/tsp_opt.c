@@ -50,17 +50,63 @@ static void reverse_raw(qc__tsp *s, uint32_t i, uint32_t len)
     }
 }
 
+/* A log entry (i, ROTATED | l1 << 16 | l2): positions i.. held segments of
+ * l1 then l2 points, now swapped (reversals are shorter than 2^28). */
+#define ROTATED 0x80000000u
+
+/* Swaps the adjacent segments of l1 and l2 points from position i (cyclic):
+ * each point written once, where three reversals write each twice (the
+ * kicks spent a third of their reversal time on theirs). */
+static void rotate_raw(qc__tsp *s, uint32_t i, uint32_t l1, uint32_t l2)
+{
+    uint32_t *t = s->t, *pos = s->pos, m = s->m, tmp[KICK_MAX_LK], r, at;
+
+    if (i + l1 + l2 <= m) { /* no wrap: three copies */
+        memcpy(tmp, t + i, l1 * sizeof *t);
+        memmove(t + i, t + i + l1, l2 * sizeof *t);
+        memcpy(t + i + l2, tmp, l1 * sizeof *t);
+        for (r = i; r < i + l1 + l2; r++)
+            pos[t[r]] = r;
+        return;
+    }
+    for (r = 0, at = i; r < l1; r++, at = at + 1 == m ? 0 : at + 1)
+        tmp[r] = t[at];
+    for (r = 0, at = i; r < l2; r++, at = at + 1 == m ? 0 : at + 1) {
+        uint32_t from = at + l1 >= m ? at + l1 - m : at + l1;
+        t[at] = t[from];
+        pos[t[at]] = at;
+    }
+    for (r = 0; r < l1; r++, at = at + 1 == m ? 0 : at + 1) {
+        t[at] = tmp[r];
+        pos[tmp[r]] = at;
+    }
+}
+
+static void replay_raw(qc__tsp *s, uint32_t i, uint32_t e)
+{
+    if (e & ROTATED) /* back: l2 points then l1 */
+        rotate_raw(s, i, e & 0xffffu, e >> 16 & 0x7fffu);
+    else
+        reverse_raw(s, i, e);
+}
+
+static int log_entry(qc__tsp *s, uint32_t i, uint32_t e)
+{
+    if (!s->logging)
+        return QC_OK;
+    if (QC__RESERVE(s->ctx, s->log, s->log_cap, 2 * s->nlog + 2) < 0)
+        return qc__fail(s->ctx, QC_ENOMEM, "tsp: out of memory for the undo log");
+    s->log[2 * s->nlog] = i;
+    s->log[2 * s->nlog + 1] = e;
+    s->nlog++;
+    return QC_OK;
+}
+
 static int reverse_logged(qc__tsp *s, uint32_t i, uint32_t len)
 {
     if (len < 2)
         return QC_OK;
-    if (s->logging) {
-        if (QC__RESERVE(s->ctx, s->log, s->log_cap, 2 * s->nlog + 2) < 0)
-            return qc__fail(s->ctx, QC_ENOMEM, "tsp: out of memory for the undo log");
-        s->log[2 * s->nlog] = i;
-        s->log[2 * s->nlog + 1] = len;
-        s->nlog++;
-    }
+    QC__TRY(log_entry(s, i, len));
     reverse_raw(s, i, len);
     return QC_OK;
 }
@@ -328,9 +374,15 @@ static int kick(qc__tsp *s, qc_rng *rng, uint32_t i, uint32_t longest, double *d
 
     *delta += qc__tsp_dist(s, a, c1) + qc__tsp_dist(s, c2, b1) + qc__tsp_dist(s, b2, d) -
               qc__tsp_dist(s, a, b1) - qc__tsp_dist(s, b2, c1) - qc__tsp_dist(s, c2, d);
-    QC__TRY(reverse_logged(s, ib1, l1 + l2));
-    QC__TRY(reverse_logged(s, ib1, l2));
-    QC__TRY(reverse_logged(s, (ib1 + l2) % m, l1));
+    /* empty entries after it: the log fills as with the three reversals
+     * (those of one point log nothing), so the walk's reset (log_max)
+     * comes when it did */
+    QC__TRY(log_entry(s, ib1, ROTATED | l1 << 16 | l2));
+    if (l1 > 1)
+        QC__TRY(log_entry(s, ib1, 0));
+    if (l2 > 1)
+        QC__TRY(log_entry(s, ib1, 0));
+    rotate_raw(s, ib1, l1, l2);
     qc__tsp_push(s, a);
     qc__tsp_push(s, b1);
     qc__tsp_push(s, b2);
@@ -346,7 +398,7 @@ static void undo_to(qc__tsp *s, size_t keep)
 {
     while (s->nlog > keep) {
         s->nlog--;
-        reverse_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
+        replay_raw(s, s->log[2 * s->nlog], s->log[2 * s->nlog + 1]);
     }
 }
 
