@@ -35,6 +35,9 @@ QC__HIDDEN void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim);
  * make a whole line and write it at once. */
 QC__HIDDEN char *qc__fmt_int(char *end, int64_t v);
 QC__HIDDEN char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim);
+/* v / 1000 (v >= 0) as qc__fmt_fixed(end, v, 3, 0) writes it, without its
+ * general digit loop: the .pat writer's two numbers per line. */
+QC__HIDDEN char *qc__fmt_thousandths(char *end, uint64_t v);
 /* Flushes; returns QC_OK or the first failure (QC_EIO from the callback). */
 QC__HIDDEN int qc__out_finish(qc__out *o);
 

@@ -105,6 +105,17 @@ void qc__out_int(qc__out *o, int64_t v)
     qc__out_bytes(o, s, (size_t)(end - s));
 }
 
+char *qc__fmt_thousandths(char *end, uint64_t v)
+{
+    unsigned fp = (unsigned)(v % 1000);
+
+    end -= 2;
+    memcpy(end, two_digits + 2 * (fp % 100), 2);
+    end[-1] = (char)('0' + fp / 100);
+    end[-2] = '.';
+    return digits(end - 2, v / 1000, 1);
+}
+
 char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim)
 {
     static const uint64_t pow10[10] = {1, 10, 100, 1000, 10000, 100000,
