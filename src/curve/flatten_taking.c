@@ -23,6 +23,10 @@ static int to_cmd(void *ud, qc_vec2 p, int start)
 
     if (start && b->cmd.n == 0)
         b->starts = 1;
+    if (b->cmd.n < b->cmd.cap) { /* the buffer is reused: almost always room */
+        b->cmd.v[b->cmd.n++] = p;
+        return QC_OK;
+    }
     return qc_points_push(b->ctx, &b->cmd, p);
 }
 

@@ -159,13 +159,15 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     size_t i, ncell = (size_t)g.gx * g.gy;
 
     memset(start, 0, (ncell + 1) * sizeof *start);
-    for (i = 0; i < n; i++) /* the points of each cell, then its slots */
-        start[cell_of(&g, v[i]) + 1]++;
-    for (i = 0; i < ncell; i++)
+    for (i = 0; i < n; i++) { /* the points of each cell (place[i] holds its cell) */
+        place[i] = cell_of(&g, v[i]);
+        start[place[i] + 1]++;
+    }
+    for (i = 0; i < ncell; i++) /* ... then its slots */
         start[i + 1] = start[i] + cell_slots(start[i + 1]);
     memset(table, 0, start[ncell] * sizeof *table);
     for (i = 0; i < n; i++) {
-        uint32_t c = cell_of(&g, v[i]), lo = start[c], size = start[c + 1] - lo;
+        uint32_t c = place[i], lo = start[c], size = start[c + 1] - lo;
         uint32_t h = lo + (uint32_t)(((uint64_t)place_hash(v[i]) * size) >> 32);
 
         while (table[h] != 0) {
