@@ -244,8 +244,10 @@ static void numbers_should_format_as_printf_at_every_length(void)
                             (unsigned long long)(u % pow10[d]));
                     got = qc__fmt_fixed(end, v, d, 0);
                     TEST_ASSERT_EQUAL_STRING(want, got);
-                    if (d == 3 && !s) /* the .pat writer's own way to the same text */
-                        TEST_ASSERT_EQUAL_STRING(want, qc__fmt_thousandths(end, u));
+                    if (d == 3 && !s) { /* the .pat writer's own way to the same text */
+                        *qc__put_thousandths(buf, u) = '\0';
+                        TEST_ASSERT_EQUAL_STRING(want, buf);
+                    }
                 }
             }
         }
