@@ -17,6 +17,7 @@ typedef struct qc__out {
     int status;       /* first failure; later calls do nothing */
     size_t n;         /* bytes pending in buf */
     uint64_t total;   /* bytes accepted so far */
+    qc_vec2 lo;       /* the plan's least x and least y (set by qc_io_write) */
     char buf[QC__OUT_BUF];
 } qc__out;
 

@@ -12,6 +12,7 @@ void qc__out_init(qc__out *o, qc_ctx *ctx, qc_write_fn write, void *ud)
     o->status = QC_OK;
     o->n = 0;
     o->total = 0;
+    o->lo.x = o->lo.y = 0;
 }
 
 static void flush(qc__out *o)

@@ -49,18 +49,13 @@ int qc__write_pat(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
 {
     int64_t px = -1, py = -1;
     line_no line;
-    double lo_x = 0, lo_y = 0;
     size_t i;
 
     (void)opts;
-    /* the rounding only grows with the coordinate: the least of each
-     * decides whether any point is negative */
-    for (i = 0; i < plan->n; i++) {
-        lo_x = i == 0 || plan->p[i].x < lo_x ? plan->p[i].x : lo_x;
-        lo_y = i == 0 || plan->p[i].y < lo_y ? plan->p[i].y : lo_y;
-    }
-    if (plan->n > 0 && (qc__mm_to_inch_units(lo_x, 1000) < 0 ||
-                        qc__mm_to_inch_units(lo_y, 1000) < 0)) {
+    /* the rounding only grows with the coordinate: the least of each (o->lo,
+     * found as the plan was checked) decides whether any point is negative */
+    if (plan->n > 0 && (qc__mm_to_inch_units(o->lo.x, 1000) < 0 ||
+                        qc__mm_to_inch_units(o->lo.y, 1000) < 0)) {
         i = first_negative(plan);
         return qc__fail(ctx, QC_ERANGE,
                         "pat: point %lu (%.3f, %.3f) mm is negative; move the "
