@@ -256,6 +256,8 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
     double total = 1.0 + 2.0 * r->ties;
     size_t i;
 
+    if (!(r->max_seg > 0)) /* a point per stitch: no pass over the points */
+        return total + (double)(n - 1);
     for (i = 1; i < n; i++)
         total += r->max_seg > 0 ? fmax(1.0, ceil(dist(m[i - 1], m[i]) / r->max_seg)) : 1.0;
     return total;
