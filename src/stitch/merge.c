@@ -240,8 +240,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     tail = v[0];
     k = 1;
     for (i = 1; i < n; i++) {
-        int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
-        int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
+        int last = i + 1 == n, joints, here_ok, prev_ok;
         double dx = v[i].x - tail.x, dy = v[i].y - tail.y, d, drop_here, drop_prev;
 
         d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(tail, v[i]);
@@ -253,6 +252,10 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
             keep_tail(m, &k, &tail, v[i]);
             continue;
         }
+        /* a short step (most are not: the junctions are read only here) */
+        joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
+        here_ok = !last && place[i] == QC__NOT_JOINT;
+        prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
          * moving m[k - 1] onto v[i]: the chord runs from m[k - 2] */
         drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, tail, v[i + 1]);
