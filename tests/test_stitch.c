@@ -661,75 +661,6 @@ static void junctions_should_be_those_a_sort_finds(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
-/* A walk of 1 mm steps on a 0.1 mm lattice with a few clusters of 0.1 mm
- * steps, each starting on a place the walk passed before and going back
- * and forth over its own places, with repeats of the point before. */
-static void clustered_walk(qc_vec2 *v, size_t n, uint64_t seed)
-{
-    long ix = 0, iy = 0, *hx = malloc(n * sizeof *hx), *hy = malloc(n * sizeof *hy);
-    size_t i, cluster = 0;
-    qc_rng rng;
-
-    TEST_ASSERT_NOT_NULL(hx);
-    TEST_ASSERT_NOT_NULL(hy);
-    qc_rng_seed(&rng, seed);
-    for (i = 0; i < n; i++) {
-        uint64_t r = qc_rng_below(&rng, 4);
-        long step = cluster > 0 ? 1 : 10;
-
-        if (cluster == 0 && i > 100 && qc_rng_below(&rng, 2000) == 0) {
-            size_t j = (size_t)qc_rng_below(&rng, i); /* back onto an earlier place */
-
-            ix = hx[j];
-            iy = hy[j];
-            cluster = 40;
-        } else if (cluster > 0 && qc_rng_below(&rng, 4) == 0) {
-            cluster--; /* a repeat of the point before */
-        } else {
-            ix += r == 0 ? step : r == 1 ? -step : 0;
-            iy += r == 2 ? step : r == 3 ? -step : 0;
-            cluster -= cluster > 0;
-        }
-        hx[i] = ix;
-        hy[i] = iy;
-        v[i].x = 0.1 * (double)ix;
-        v[i].y = 0.1 * (double)iy;
-    }
-    free(hx);
-    free(hy);
-}
-
-/* The merge asks for junctions only at short steps: with few of them it
- * finds those of the points near them alone, and sews the same points as
- * with the junctions of the whole piece (asked_max 0). */
-static void merge_should_match_with_the_whole_piece_junctions(void)
-{
-    size_t n = 20000, trial;
-
-    for (trial = 0; trial < 12; trial++) {
-        qc_vec2 *v = malloc(n * sizeof *v), *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
-        size_t ka, kb;
-        qc__merge mg;
-
-        TEST_ASSERT_NOT_NULL(v);
-        TEST_ASSERT_NOT_NULL(a);
-        TEST_ASSERT_NOT_NULL(b);
-        clustered_walk(v, n, 70 + trial);
-        TEST_ASSERT_EQUAL_INT(QC_OK, qc__merge_init(&ctx, &mg, n));
-        ka = qc__merge_piece(&mg, v, n, 0.5, 0.15, 0.0254, a);
-        mg.asked_max = 0;
-        kb = qc__merge_piece(&mg, v, n, 0.5, 0.15, 0.0254, b);
-        TEST_ASSERT_TRUE(ka < n - 50); /* the clusters were merged */
-        TEST_ASSERT_EQUAL_size_t(kb, ka);
-        TEST_ASSERT_EQUAL_MEMORY(b, a, ka * sizeof *a);
-        qc__merge_free(&ctx, &mg);
-        free(v);
-        free(a);
-        free(b);
-    }
-    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
-}
-
 int main(void)
 {
     UNITY_BEGIN();
@@ -747,6 +678,5 @@ int main(void)
     RUN_TEST(plan_taking_should_match_and_free_the_path);
     RUN_TEST(flatten_taking_should_match_the_forward_flatten);
     RUN_TEST(junctions_should_be_those_a_sort_finds);
-    RUN_TEST(merge_should_match_with_the_whole_piece_junctions);
     return UNITY_END();
 }

@@ -27,12 +27,6 @@
  * of the merge; places near in space are near in the table, and the path
  * walks through space. */
 #define POINTS_PER_CELL 4
-/* The merge asks a point's junction only at a short step, for that point
- * and the last kept one; such a step lies within MAX_MERGE_RUN + 2 after a
- * step from the point before that is not over the long bound, and the kept
- * point within MAX_MERGE_RUN before it (or right before such a step). */
-#define NEAR_SHORT (2 * MAX_MERGE_RUN + 4)
-#define ASKED (QC__NOT_JOINT - 1) /* place[]: a point whose junction is needed */
 
 typedef struct grid {
     double x0, y0, inv; /* cells of side 1 / inv from (x0, y0) */
@@ -54,7 +48,6 @@ int qc__merge_init(qc_ctx *ctx, qc__merge *mg, size_t longest)
     mg->place = (uint32_t *)qc__alloc_array(ctx, longest, sizeof *mg->place);
     mg->gone = (unsigned char *)qc__alloc(ctx, longest / 8 + 1);
     mg->cap = longest;
-    mg->asked_max = longest / 4;
     if (mg->table == NULL || mg->start == NULL || mg->place == NULL ||
         mg->gone == NULL) {
         qc__merge_free(ctx, mg);
@@ -197,90 +190,6 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     }
 }
 
-/* Marks ASKED in place (the rest QC__NOT_JOINT) the points within
- * NEAR_SHORT of a step from the point before whose square is not over long2
- * (as the merge squares it: short, zero or NaN); how many, or more than
- * most once past it. */
-static size_t mark_asked(uint32_t *place, const qc_vec2 *v, size_t n, double long2,
-                         size_t most)
-{
-    size_t i, lo, hi, upto = 0, count = 0; /* marked below upto */
-
-    memset(place, 0xff, n * sizeof *place); /* QC__NOT_JOINT */
-    for (i = 1; i < n && count <= most; i++) {
-        double dx = v[i].x - v[i - 1].x, dy = v[i].y - v[i - 1].y;
-
-        if (dx * dx + dy * dy > long2)
-            continue;
-        lo = i > NEAR_SHORT ? i - NEAR_SHORT : 0;
-        lo = lo > upto ? lo : upto;
-        hi = n - i > NEAR_SHORT ? i + NEAR_SHORT + 1 : n;
-        count += hi - lo;
-        for (; lo < hi; lo++)
-            place[lo] = ASKED;
-        upto = hi;
-    }
-    return count;
-}
-
-/* The slot of p's place in a table of size slots (a power of two) of
- * indices + 1 into v, 0 empty: p's own, or the empty one it would take. */
-static uint32_t small_slot(const uint32_t *slot, uint32_t size, const qc_vec2 *v, qc_vec2 p)
-{
-    uint32_t h = place_hash(p) & (size - 1);
-
-    while (slot[h] != 0 && !(v[slot[h] - 1].x == p.x && v[slot[h] - 1].y == p.y))
-        h = (h + 1) & (size - 1);
-    return h;
-}
-
-/* The small table's size for asked points: a power of two, half full at most. */
-static size_t small_size(size_t asked)
-{
-    size_t size = 4;
-
-    while (size < 2 * asked + 1)
-        size *= 2;
-    return size;
-}
-
-/* qc__merge_junctions' answers for the asked points alone (the rest stay
- * QC__NOT_JOINT): their places in a small table of size slots (its two
- * arrays within mg->table), which every point of the piece is then looked
- * up in: a table the cache holds, not one over the whole piece. */
-static void asked_junctions(qc__merge *mg, const qc_vec2 *v, size_t n, uint32_t size)
-{
-    uint32_t *place = mg->place, *slot = mg->table, *seen;
-    size_t i;
-
-    seen = slot + size; /* per slot: (first index + 1) * 2, plus 1 once visited again */
-    memset(slot, 0, 2 * (size_t)size * sizeof *slot);
-    for (i = 0; i < n; i++) {
-        if (place[i] == ASKED) {
-            uint32_t h = small_slot(slot, size, v, v[i]);
-
-            slot[h] = slot[h] != 0 ? slot[h] : (uint32_t)(i + 1);
-        }
-    }
-    for (i = 0; i < n; i++) {
-        uint32_t h = small_slot(slot, size, v, v[i]);
-
-        if (slot[h] == 0)
-            continue;
-        if (seen[h] == 0)
-            seen[h] = (uint32_t)(i + 1) * 2;
-        else if (!(v[i - 1].x == v[i].x && v[i - 1].y == v[i].y))
-            seen[h] |= 1u; /* a new visit, not a repeat of the point before */
-    }
-    for (i = 0; i < n; i++) {
-        if (place[i] == ASKED) {
-            uint32_t e = seen[small_slot(slot, size, v, v[i])];
-
-            place[i] = e & 1 ? e / 2 - 1 : QC__NOT_JOINT;
-        }
-    }
-}
-
 static double dist(qc_vec2 a, qc_vec2 b)
 {
     return qc_hypot(b.x - a.x, b.y - a.y);
@@ -318,7 +227,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
     qc_vec2 tail; /* m[k - 1] */
-    size_t i, k = 0, at = 0, before = 0, asked; /* v indices of m[k - 1] and m[k - 2] */
+    size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
     /* a step whose square exceeds this is at least min_seg long, whatever
      * the square root rounds to: most steps, without one (none when
      * min_seg keeps every step or is too small to square exactly) */
@@ -326,11 +235,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
 
     if (n == 0)
         return 0;
-    asked = mg->asked_max > 0 ? mark_asked(mg->place, v, n, long2, mg->asked_max) : n;
-    if (asked <= mg->asked_max && 2 * small_size(asked) <= mg->slots) /* few short steps */
-        asked_junctions(mg, v, n, (uint32_t)small_size(asked));
-    else
-        qc__merge_junctions(mg, v, n);
+    qc__merge_junctions(mg, v, n);
     memset(gone, 0, n / 8 + 1);
     tail = v[0];
     k = 1;

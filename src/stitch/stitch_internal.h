@@ -23,8 +23,6 @@ typedef struct qc__merge {
     uint32_t *place;      /* per point: where the piece passes it again */
     unsigned char *gone;  /* a bit per place: a junction merged away */
     size_t cap;
-    size_t asked_max;     /* points whose junctions alone are found at most (init:
-                             a quarter of the longest; 0: always the whole piece) */
 } qc__merge;
 
 #define QC__NOT_JOINT UINT32_MAX /* qc__merge_junctions: not a junction */
@@ -36,8 +34,7 @@ QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
  * mg->place[i] for the piece v[0..n) (n <= the longest given to init): for
  * a junction (v[i] recurs in v other than as a repeat of the point just
  * before: a run of equal points is one visit) the least index of its
- * place, else QC__NOT_JOINT (merge.c; qc__merge_piece's first step where a
- * piece has many short steps, else it finds those near them alone).
+ * place, else QC__NOT_JOINT (merge.c; qc__merge_piece's first step).
  */
 QC__HIDDEN void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n);
 /*
