@@ -244,10 +244,41 @@ static void numbers_should_format_as_printf_at_every_length(void)
                             (unsigned long long)(u % pow10[d]));
                     got = qc__fmt_fixed(end, v, d, 0);
                     TEST_ASSERT_EQUAL_STRING(want, got);
+                    if (d == 3 && !s) { /* the .pat writer's own way to the same text */
+                        *qc__put_thousandths(buf, u) = '\0';
+                        TEST_ASSERT_EQUAL_STRING(want, buf);
+                    }
                 }
             }
         }
     }
+}
+
+/* The line number is counted up as text: every carry (9 to 10, 999 to
+ * 1000) and the closing M02 line's number. */
+static void pat_should_number_lines_across_every_carry(void)
+{
+    qc_plan plan = {0};
+    membuf m;
+    char want[32];
+    size_t i, at = 0;
+
+    for (i = 0; i < 10001; i++)
+        push(&plan, 0.0254 * (double)i, 1, i == 0 ? QC_ST_JUMP : 0);
+    encode(QC_FORMAT_PAT, &plan, NULL, &m);
+    for (i = 1; i <= 10002; i++) {
+        size_t len = (size_t)sprintf(want, i <= 10001 ? "N%luG0" : "N%luM02\r\n",
+                                     (unsigned long)i);
+
+        TEST_ASSERT_TRUE(at + len <= m.n);
+        TEST_ASSERT_EQUAL_MEMORY(want, m.p + at, len);
+        while (at < m.n && m.p[at] != '\n')
+            at++;
+        at++;
+    }
+    TEST_ASSERT_EQUAL_size_t(m.n, at);
+    free(m.p);
+    qc_plan_free(&ctx, &plan);
 }
 
 static void pat_should_refuse_negative_and_report_errors(void)
@@ -610,6 +641,7 @@ int main(void)
     RUN_TEST(pat_should_use_the_exact_dialect);
     RUN_TEST(numbers_should_round_half_away_from_zero_and_format_exactly);
     RUN_TEST(numbers_should_format_as_printf_at_every_length);
+    RUN_TEST(pat_should_number_lines_across_every_carry);
     RUN_TEST(pat_should_refuse_negative_and_report_errors);
     RUN_TEST(writers_should_report_write_failure);
     RUN_TEST(pat_should_round_trip_within_half_a_thousandth);

@@ -29,9 +29,10 @@ static inline void qc__curve_cubic(const qc_path *path, size_t k, qc_vec2 cur, q
 #define QC__CURVE_CMD_POINTS(cmd) ((cmd) == QC_PATH_CUBIC ? 3u : 1u)
 
 /* The points of command c alone (qc__curve_walk's step): its points start
- * at path->pt[k], the pen stands at cur; tol2 is the tolerance squared. */
+ * at path->pt[k], the pen stands at cur; tol2 is the tolerance squared.
+ * backwards != 0 gives the same points last to first. */
 QC__HIDDEN int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur,
-                             double tol2, qc__curve_point_fn fn, void *ud);
+                             double tol2, int backwards, qc__curve_point_fn fn, void *ud);
 
 /* qc_curve_flatten's refusals: a tolerance out of range, a point not finite. */
 QC__HIDDEN int qc__curve_flatten_check(qc_ctx *ctx, const qc_path *path, double tol);

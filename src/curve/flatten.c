@@ -11,11 +11,36 @@ static int finite(qc_vec2 p)
     return fabs(p.x) <= 1e300 && fabs(p.y) <= 1e300;
 }
 
+/* Whether both inner control points lie within tol (tol2 squared) of the
+ * chord q[0]q[3]: qc__seg_dist2(q[k], q[0], q[3]) <= tol2 for k = 1, 2, its
+ * very arithmetic (the same answers to the bit) with the chord's terms
+ * shared and no call: the flattening's test, once per subdivision. */
+static int hull_flat(const qc_vec2 q[4], double tol2)
+{
+    double dx = q[3].x - q[0].x, dy = q[3].y - q[0].y;
+    double len2 = dx * dx + dy * dy;
+    int k;
+
+    for (k = 1; k <= 2; k++) {
+        double t = len2 > 0.0 ? ((q[k].x - q[0].x) * dx + (q[k].y - q[0].y) * dy) / len2 : 0.0;
+        double ex, ey;
+
+        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+        ex = q[0].x + t * dx - q[k].x;
+        ey = q[0].y + t * dy - q[k].y;
+        if (!(ex * ex + ey * ey <= tol2))
+            return 0;
+    }
+    return 1;
+}
+
 /* Emits the points after c[0] of one cubic. The curve lies in the hull of
  * its control points, so control points within tol of the chord bound the
  * curve's distance from each emitted chord by tol. Iterative, depth-first,
- * left half first: the output order is the curve's order. */
-static int flatten_cubic(const qc_vec2 c[4], double tol2,
+ * left half first: the output order is the curve's order. Backwards, the
+ * right half goes first and the same pieces' ends come last to first (a
+ * node's halves are the same whichever is sewn first: the same points). */
+static int flatten_cubic(const qc_vec2 c[4], double tol2, int backwards,
                          qc__curve_point_fn fn, void *ud)
 {
     qc_vec2 stack[FLAT_MAX_DEPTH + 2][4];
@@ -30,16 +55,19 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2,
         qc_vec2 *q = stack[sp - 1];
         int d = depth[sp - 1];
 
-        if (d >= FLAT_MAX_DEPTH || (qc__seg_dist2(q[1], q[0], q[3]) <= tol2 &&
-                                    qc__seg_dist2(q[2], q[0], q[3]) <= tol2)) {
+        if (d >= FLAT_MAX_DEPTH || hull_flat(q, tol2)) {
             rc = fn(ud, q[3], 0);
             if (rc < 0)
                 return rc;
             sp--;
             continue;
         }
-        /* halves: the left on top, q becomes the right (popped after it) */
-        qc_cubic_split(q, 0.5, stack[sp], q);
+        /* halves: the one sewn first on top, q becomes the other (popped
+         * after it; the split reads q whole before it writes) */
+        if (backwards)
+            qc_cubic_split(q, 0.5, q, stack[sp]);
+        else
+            qc_cubic_split(q, 0.5, stack[sp], q);
         depth[sp - 1] = d + 1;
         depth[sp] = d + 1;
         sp++;
@@ -47,26 +75,36 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2,
     return QC_OK;
 }
 
-int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur, double tol2,
-                  qc__curve_point_fn fn, void *ud)
+/* Command c's own points (not the pen's start before a first command). */
+static int cmd_points(const qc_path *path, size_t c, size_t k, qc_vec2 cur, double tol2,
+                      int backwards, qc__curve_point_fn fn, void *ud)
 {
     unsigned char cmd = path->cmd[c];
-    int rc;
 
-    if (c == 0 && cmd != QC_PATH_MOVE) {
-        rc = fn(ud, cur, 1);
-        if (rc < 0)
-            return rc;
-    }
     if (cmd == QC_PATH_CUBIC) {
         qc_vec2 q[4];
 
         qc__curve_cubic(path, k, cur, q);
         if (finite(q[0]) && finite(q[1]) && finite(q[2]) && finite(q[3]))
-            return flatten_cubic(q, tol2, fn, ud);
+            return flatten_cubic(q, tol2, backwards, fn, ud);
         return fn(ud, q[3], 0); /* NaN would subdivide to the depth bound for nothing */
     }
     return fn(ud, path->pt[k], cmd == QC_PATH_MOVE);
+}
+
+int qc__curve_cmd(const qc_path *path, size_t c, size_t k, qc_vec2 cur, double tol2,
+                  int backwards, qc__curve_point_fn fn, void *ud)
+{
+    int start = c == 0 && path->cmd[c] != QC_PATH_MOVE; /* the pen's start is a point */
+    int rc = QC_OK;
+
+    if (start && !backwards)
+        rc = fn(ud, cur, 1);
+    if (rc >= 0)
+        rc = cmd_points(path, c, k, cur, tol2, backwards, fn, ud);
+    if (rc >= 0 && start && backwards)
+        rc = fn(ud, cur, 1);
+    return rc;
 }
 
 int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
@@ -78,7 +116,7 @@ int qc__curve_walk(const qc_path *path, double tol, qc__curve_point_fn fn,
     int rc;
 
     for (c = 0; c < path->ncmd; c++) {
-        rc = qc__curve_cmd(path, c, k, cur, tol2, fn, ud);
+        rc = qc__curve_cmd(path, c, k, cur, tol2, 0, fn, ud);
         if (rc < 0)
             return rc;
         k += QC__CURVE_CMD_POINTS(path->cmd[c]);

@@ -2,9 +2,10 @@
  * Flattening a path the caller gives up, without the path and its flattened
  * points both whole at once (a large pattern's peak: 27 million points from
  * a path as large). The commands are flattened last to first, each one's
- * points appended reversed, and the path's point array shrinks behind the
- * walk; the whole is reversed at the end. Each command is flattened forward
- * as qc_curve_flatten does, so the points are the same to the bit.
+ * points made last to first straight into the output (a cubic's right half
+ * first), and the path's point array shrinks behind the walk; the whole is
+ * reversed at the end. A cubic is cut where qc_curve_flatten cuts it, so
+ * the points are the same to the bit.
  */
 #include <string.h>
 
@@ -13,17 +14,24 @@
 
 typedef struct back {
     qc_ctx *ctx;
-    qc_points cmd;  /* one command's points, in order */
-    int starts;     /* its first point starts a piece (only a first one can) */
+    qc_points *out;  /* the points, last to first */
+    qc_order *ends;  /* where in out pieces start */
 } back;
 
-static int to_cmd(void *ud, qc_vec2 p, int start)
+/* Appends p (the commands come last to first, each one's points backwards):
+ * a piece's start, a command's first point, is recorded where it lands. */
+static int to_out(void *ud, qc_vec2 p, int start)
 {
     back *b = (back *)ud;
+    qc_points *out = b->out;
 
-    if (start && b->cmd.n == 0)
-        b->starts = 1;
-    return qc_points_push(b->ctx, &b->cmd, p);
+    if (out->n >= UINT32_MAX - 1)
+        return qc__fail(b->ctx, QC_ELIMIT, "flattened path exceeds 2^32 points");
+    if (out->n < out->cap) /* almost always room: no call */
+        out->v[out->n++] = p;
+    else
+        QC__TRY(qc_points_push(b->ctx, out, p));
+    return start ? qc_order_push(b->ctx, b->ends, (uint32_t)(out->n - 1)) : QC_OK;
 }
 
 /* The path's points past k are read no more: their pages go back (a shrink
@@ -72,18 +80,6 @@ static int turn_round(qc_ctx *ctx, qc_points *out, qc_order *ends)
     return n > 0 ? qc_order_push(ctx, ends, (uint32_t)n) : QC_OK;
 }
 
-static int append_reversed(qc_ctx *ctx, qc_points *out, const qc_points *cmd)
-{
-    size_t j;
-
-    if (out->n + cmd->n >= UINT32_MAX)
-        return qc__fail(ctx, QC_ELIMIT, "flattened path exceeds 2^32 points");
-    QC__TRY(QC__RESERVE(ctx, out->v, out->cap, out->n + cmd->n));
-    for (j = cmd->n; j-- > 0;)
-        out->v[out->n++] = cmd->v[j];
-    return QC_OK;
-}
-
 int qc__curve_flatten_taking(qc_ctx *ctx, qc_path *path, double tol, qc_points *out,
                              qc_order *ends)
 {
@@ -95,21 +91,15 @@ int qc__curve_flatten_taking(qc_ctx *ctx, qc_path *path, double tol, qc_points *
     QC__TRY(qc__curve_flatten_check(ctx, path, tol));
     for (c = 0; c < path->ncmd; c++)
         k += QC__CURVE_CMD_POINTS(path->cmd[c]);
-    memset(&b, 0, sizeof b);
     b.ctx = ctx;
+    b.out = out;
+    b.ends = ends;
     rc = QC_OK;
     for (c = path->ncmd; c-- > 0 && rc == QC_OK;) {
         k -= QC__CURVE_CMD_POINTS(path->cmd[c]);
-        b.cmd.n = 0;
-        b.starts = 0;
-        rc = qc__curve_cmd(path, c, k, c > 0 ? path->pt[k - 1] : zero, tol * tol, to_cmd, &b);
-        if (rc == QC_OK)
-            rc = append_reversed(ctx, out, &b.cmd);
-        if (rc == QC_OK && b.starts)
-            rc = qc_order_push(ctx, ends, (uint32_t)(out->n - 1));
+        rc = qc__curve_cmd(path, c, k, c > 0 ? path->pt[k - 1] : zero, tol * tol, 1, to_out, &b);
         shrink_path(ctx, path, k);
     }
-    qc_points_free(ctx, &b.cmd);
     qc_path_free(ctx, path);
     return rc == QC_OK ? turn_round(ctx, out, ends) : rc;
 }

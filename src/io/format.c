@@ -100,17 +100,22 @@ int qc_io_write(qc_ctx *ctx, int format, const qc_plan *plan,
     if (plan->n == 0)
         return qc__fail(ctx, QC_EEMPTY, "%s: the plan has no point",
                         names[format]);
-    for (i = 0; i < plan->n; i++)
-        if (!(fabs(plan->p[i].x) <= 1e6 && fabs(plan->p[i].y) <= 1e6))
+    qc__out_init(&o, ctx, write, ud);
+    o.lo = plan->p[0];
+    for (i = 0; i < plan->n; i++) { /* one pass: the check and the least x and y */
+        qc_vec2 p = plan->p[i];
+
+        if (!(fabs(p.x) <= 1e6 && fabs(p.y) <= 1e6))
             return qc__fail(ctx, QC_ERANGE,
                             "%s: point %lu (%g, %g) mm is not finite or beyond 1e6 mm",
-                            names[format], (unsigned long)i,
-                            plan->p[i].x, plan->p[i].y);
+                            names[format], (unsigned long)i, p.x, p.y);
+        o.lo.x = p.x < o.lo.x ? p.x : o.lo.x;
+        o.lo.y = p.y < o.lo.y ? p.y : o.lo.y;
+    }
     if (opts == NULL) {
         memset(&zero, 0, sizeof zero);
         opts = &zero;
     }
-    qc__out_init(&o, ctx, write, ud);
     rc = dispatch(ctx, format, plan, opts, &o);
     if (rc < 0)
         return rc;

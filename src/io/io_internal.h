@@ -17,6 +17,7 @@ typedef struct qc__out {
     int status;       /* first failure; later calls do nothing */
     size_t n;         /* bytes pending in buf */
     uint64_t total;   /* bytes accepted so far */
+    qc_vec2 lo;       /* the plan's least x and least y (set by qc_io_write) */
     char buf[QC__OUT_BUF];
 } qc__out;
 
@@ -35,6 +36,14 @@ QC__HIDDEN void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim);
  * make a whole line and write it at once. */
 QC__HIDDEN char *qc__fmt_int(char *end, int64_t v);
 QC__HIDDEN char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim);
+/* v / 1000 (v >= 0) as qc__fmt_fixed(end, v, 3, 0) writes it, but forwards
+ * from s, returning the end (at most 24 bytes): the .pat writer's two
+ * numbers per line, made in place in the buffer. */
+QC__HIDDEN char *qc__put_thousandths(char *s, uint64_t v);
+/* Room for len (<= QC__OUT_BUF) bytes at the end of o's buffer, flushed to
+ * make it if need be: an encoder writes there, then adds what it wrote to
+ * o->n. (After a failure the buffer only takes what is thrown away.) */
+QC__HIDDEN char *qc__out_room(qc__out *o, size_t len);
 /* Flushes; returns QC_OK or the first failure (QC_EIO from the callback). */
 QC__HIDDEN int qc__out_finish(qc__out *o);
 

@@ -12,6 +12,7 @@ void qc__out_init(qc__out *o, qc_ctx *ctx, qc_write_fn write, void *ud)
     o->status = QC_OK;
     o->n = 0;
     o->total = 0;
+    o->lo.x = o->lo.y = 0;
 }
 
 static void flush(qc__out *o)
@@ -48,6 +49,13 @@ void qc__out_bytes(qc__out *o, const void *data, size_t len)
 void qc__out_str(qc__out *o, const char *s)
 {
     qc__out_bytes(o, s, strlen(s));
+}
+
+char *qc__out_room(qc__out *o, size_t len)
+{
+    if (QC__OUT_BUF - o->n < len)
+        flush(o);
+    return o->buf + o->n;
 }
 
 void qc__out_char(qc__out *o, char c)
@@ -103,6 +111,32 @@ void qc__out_int(qc__out *o, int64_t v)
     char tmp[24], *end = tmp + sizeof tmp, *s = qc__fmt_int(end, v);
 
     qc__out_bytes(o, s, (size_t)(end - s));
+}
+
+char *qc__put_thousandths(char *s, uint64_t v)
+{
+    uint64_t ip = v / 1000;
+    unsigned fp = (unsigned)(v - ip * 1000);
+
+    if (ip < 10) {
+        *s++ = (char)('0' + ip);
+    } else if (ip < 100) {
+        memcpy(s, two_digits + 2 * ip, 2);
+        s += 2;
+    } else if (ip < 1000) {
+        *s++ = (char)('0' + ip / 100);
+        memcpy(s, two_digits + 2 * (ip % 100), 2);
+        s += 2;
+    } else { /* past 39 in: made backwards, moved up */
+        char tmp[24], *end = tmp + sizeof tmp, *b = digits(end, ip, 1);
+
+        memcpy(s, b, (size_t)(end - b));
+        s += end - b;
+    }
+    *s++ = '.';
+    *s++ = (char)('0' + fp / 100);
+    memcpy(s, two_digits + 2 * (fp % 100), 2);
+    return s + 2;
 }
 
 char *qc__fmt_fixed(char *end, int64_t v, int decimals, int trim)

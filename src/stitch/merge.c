@@ -159,13 +159,15 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
     size_t i, ncell = (size_t)g.gx * g.gy;
 
     memset(start, 0, (ncell + 1) * sizeof *start);
-    for (i = 0; i < n; i++) /* the points of each cell, then its slots */
-        start[cell_of(&g, v[i]) + 1]++;
-    for (i = 0; i < ncell; i++)
+    for (i = 0; i < n; i++) { /* the points of each cell (place[i] holds its cell) */
+        place[i] = cell_of(&g, v[i]);
+        start[place[i] + 1]++;
+    }
+    for (i = 0; i < ncell; i++) /* ... then its slots */
         start[i + 1] = start[i] + cell_slots(start[i + 1]);
     memset(table, 0, start[ncell] * sizeof *table);
     for (i = 0; i < n; i++) {
-        uint32_t c = cell_of(&g, v[i]), lo = start[c], size = start[c + 1] - lo;
+        uint32_t c = place[i], lo = start[c], size = start[c + 1] - lo;
         uint32_t h = lo + (uint32_t)(((uint64_t)place_hash(v[i]) * size) >> 32);
 
         while (table[h] != 0) {
@@ -238,8 +240,7 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
     tail = v[0];
     k = 1;
     for (i = 1; i < n; i++) {
-        int last = i + 1 == n, joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
-        int here_ok = !last && place[i] == QC__NOT_JOINT, prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
+        int last = i + 1 == n, joints, here_ok, prev_ok;
         double dx = v[i].x - tail.x, dy = v[i].y - tail.y, d, drop_here, drop_prev;
 
         d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(tail, v[i]);
@@ -251,6 +252,10 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
             keep_tail(m, &k, &tail, v[i]);
             continue;
         }
+        /* a short step (most are not: the junctions are read only here) */
+        joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
+        here_ok = !last && place[i] == QC__NOT_JOINT;
+        prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
          * moving m[k - 1] onto v[i]: the chord runs from m[k - 2] */
         drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, tail, v[i + 1]);

@@ -73,6 +73,18 @@ int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
     return QC_OK;
 }
 
+/* qc_plan_push where build has made the room (it counts the points first):
+ * the stitch loop's store, without a call per point. */
+static int plan_add(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
+{
+    if (plan->n >= plan->cap)
+        return qc_plan_push(ctx, plan, p, flags);
+    plan->p[plan->n] = p;
+    plan->flags[plan->n] = (unsigned char)flags;
+    plan->n++;
+    return QC_OK;
+}
+
 typedef struct resolved {
     double tol, min_seg, max_seg, tie_len;
     double floor_len, keep; /* the merge's: MIN_CORNER_STITCH and MERGE_STRAY at most */
@@ -144,7 +156,7 @@ static int tie_off(qc_ctx *ctx, qc_plan *out, qc_vec2 at, qc_vec2 towards, doubl
     int k;
 
     for (k = 1; k <= r->ties; k++)
-        QC__TRY(qc_plan_push(ctx, out, (k & 1) ? far : at, QC_ST_TIE));
+        QC__TRY(plan_add(ctx, out, (k & 1) ? far : at, QC_ST_TIE));
     return QC_OK;
 }
 
@@ -193,7 +205,7 @@ static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l
 /* The stitch from a to b, split into equal parts no longer than max_seg. */
 static int sew_to(qc_ctx *ctx, qc_plan *out, qc_vec2 a, qc_vec2 b, const resolved *r)
 {
-    double d = dist(a, b);
+    double d = r->max_seg > 0 ? dist(a, b) : 0; /* no length to split at: no root */
 
     if (r->max_seg > 0 && d > r->max_seg) {
         double parts = ceil(d / r->max_seg);
@@ -205,10 +217,10 @@ static int sew_to(qc_ctx *ctx, qc_plan *out, qc_vec2 a, qc_vec2 b, const resolve
 
             q.x = a.x + (b.x - a.x) * t;
             q.y = a.y + (b.y - a.y) * t;
-            QC__TRY(qc_plan_push(ctx, out, q, 0));
+            QC__TRY(plan_add(ctx, out, q, 0));
         }
     }
-    return qc_plan_push(ctx, out, b, 0);
+    return plan_add(ctx, out, b, 0);
 }
 
 static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
@@ -218,7 +230,7 @@ static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
     size_t i = 1;
     double l;
 
-    QC__TRY(qc_plan_push(ctx, out, m[0], QC_ST_JUMP));
+    QC__TRY(plan_add(ctx, out, m[0], QC_ST_JUMP));
     if (r->ties > 0) {
         i = start_tie(m, n, r, &l);
         QC__TRY(tie_off(ctx, out, m[0], m[1], l, r));
@@ -226,7 +238,9 @@ static int emit_piece(qc_ctx *ctx, qc_plan *out, const qc_vec2 *m, size_t n,
             cur = along(m[0], m[1], l);
     }
     for (; i < n; i++) {
-        if (dist(cur, m[i]) > 0) /* the tie may already stand on m[1] */
+        double dx = m[i].x - cur.x, dy = m[i].y - cur.y;
+
+        if (dx * dx + dy * dy > 0) /* dist() > 0: the tie may already stand on m[1] */
             QC__TRY(sew_to(ctx, out, cur, m[i], r));
         cur = m[i];
     }
@@ -242,6 +256,8 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
     double total = 1.0 + 2.0 * r->ties;
     size_t i;
 
+    if (!(r->max_seg > 0)) /* a point per stitch: no pass over the points */
+        return total + (double)(n - 1);
     for (i = 1; i < n; i++)
         total += r->max_seg > 0 ? fmax(1.0, ceil(dist(m[i - 1], m[i]) / r->max_seg)) : 1.0;
     return total;
