@@ -203,17 +203,27 @@ static void find_ridges(const qc__gap_grid *g, unsigned char *mask, const unsign
 int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double margin,
                       qc_points *out)
 {
-    qc__gap_grid g;
     qc__rindex ix;
+    int rc;
+
+    QC__TRY(qc__rindex_build(ctx, region, &ix));
+    rc = qc__sample_medial_ix(ctx, region, &ix, d, margin, out);
+    qc__rindex_free(ctx, &ix);
+    return rc;
+}
+
+int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix, double d,
+                         double margin, qc_points *out)
+{
+    qc__gap_grid g;
     qc__near_grid ng;
     unsigned char *mask = NULL, *blocked = NULL;
     ridge *rg = NULL;
     size_t cells, k, nr = 0, i;
     qc_bbox box = qc_region_bbox(region);
-    int rc, have_ix = 0;
+    int rc;
 
     memset(&ng, 0, sizeof ng);
-    memset(&ix, 0, sizeof ix);
     rc = qc__gap_grid_inside(ctx, region, d / CELLS_PER_D, &g, &mask);
     cells = g.nx * g.ny;
     if (rc < 0)
@@ -222,10 +232,8 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     rc = qc__gap_transform(ctx, &g);
     if (rc == QC_OK && (blocked = qc__alloc(ctx, cells)) == NULL)
         rc = QC_ENOMEM;
-    if (rc == QC_OK && (rc = qc__rindex_build(ctx, region, &ix)) == QC_OK)
-        have_ix = 1;
     if (rc == QC_OK) /* first: the ridge cells near its points get no seed */
-        rc = corner_seeds(ctx, region, &ix, d, margin, out);
+        rc = corner_seeds(ctx, region, ix, d, margin, out);
     if (rc < 0)
         goto out;
     memset(blocked, 0, cells);
@@ -248,12 +256,10 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nr && rc == QC_OK; k++) {
-        rc = qc__near_grid_push_clear(ctx, &ng, out, &ix, qc__gap_grid_centre(&g, rg[k].at),
+        rc = qc__near_grid_push_clear(ctx, &ng, out, ix, qc__gap_grid_centre(&g, rg[k].at),
                                       SEED_GAP * d, margin);
     }
 out:
-    if (have_ix)
-        qc__rindex_free(ctx, &ix);
     qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
