@@ -125,7 +125,7 @@ static int build_csr(qc_ctx *ctx, qc__rindex *ix, uint32_t **start, size_t n, ui
 
 /* The finer raster: about INFO_PER_EDGE cells an edge, for outlines of at
  * least INFO_MIN_EDGES edges (a few long edges: the bands answer at once). */
-#define INFO_PER_EDGE 16.0
+#define INFO_PER_EDGE 8.0
 #define INFO_MIN_EDGES 64
 
 /* The x of edge ab at height y, clamped to the edge (ab not horizontal). */
