@@ -255,6 +255,8 @@ static int build_info(qc_ctx *ctx, qc__rindex *ix)
     return QC_OK;
 }
 
+#define GRID_PER_EDGE 9.0
+
 int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix)
 {
     double w, h, cell;
@@ -271,8 +273,9 @@ int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix)
     ix->box = qc_region_bbox(region);
     w = ix->box.max.x - ix->box.min.x;
     h = ix->box.max.y - ix->box.min.y;
-    /* about one edge per cell, at most 1024 x 1024 cells */
-    cell = sqrt(w * h / (double)region->nv);
+    /* GRID_PER_EDGE cells an edge, at most 1024 x 1024: an outline's edges
+     * fill a band, not the box, so one cell an edge would hold a dozen */
+    cell = sqrt(w * h / (GRID_PER_EDGE * (double)region->nv));
     cell = fmax(cell, fmax(w, h) / 1024.0);
     if (!(cell > 0.0))
         cell = fmax(fmax(w, h), 1.0);
