@@ -229,7 +229,7 @@ int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex 
     if (rc < 0)
         goto out;
     qc__gap_seed_region(&g, region);
-    rc = qc__gap_transform(ctx, &g);
+    rc = qc__gap_transform_far(ctx, &g);
     if (rc == QC_OK && (blocked = qc__alloc(ctx, cells)) == NULL)
         rc = QC_ENOMEM;
     if (rc == QC_OK) /* first: the ridge cells near its points get no seed */
