@@ -184,8 +184,9 @@ static int row_exact(row_scratch *r, size_t nx, size_t j, int failed)
 }
 
 /* qc__gap_transform; far (seeds only on the region's boundary): every
- * row by the envelope, looking out would only run over its budget. */
-static int transform(qc_ctx *ctx, qc__gap_grid *g, int far)
+ * row by the envelope, looking out would only run over its budget, and
+ * with rows not NULL only the rows it flags. */
+static int transform(qc_ctx *ctx, qc__gap_grid *g, int far, const unsigned char *rows)
 {
     row_scratch r;
     size_t i, j;
@@ -195,6 +196,8 @@ static int transform(qc_ctx *ctx, qc__gap_grid *g, int far)
     columns_by_sweeps(g, r.run);
     for (j = 0; j < g->ny; j++) {
         float *row = g->f + j * g->nx;
+        if (rows != NULL && !rows[j])
+            continue;
         for (i = 0; i < g->nx; i++)
             r.col[i] = (double)row[i];
         if (far)
@@ -210,12 +213,12 @@ static int transform(qc_ctx *ctx, qc__gap_grid *g, int far)
 
 int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
 {
-    return transform(ctx, g, 0);
+    return transform(ctx, g, 0, NULL);
 }
 
-int qc__gap_transform_far(qc_ctx *ctx, qc__gap_grid *g)
+int qc__gap_transform_far(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *rows)
 {
-    return transform(ctx, g, 1);
+    return transform(ctx, g, 1, rows);
 }
 
 /* Cell q's exact value from its row's column values, looking out no

@@ -183,6 +183,28 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
     }
 }
 
+/* Flags in rows (ny bytes) the rows holding a cell inside and not blocked,
+ * and the rows either side (is_ridge reads them): the rows whose distances
+ * find_ridges reads. Returns whether any is flagged. */
+static int mark_rows(const qc__gap_grid *g, const unsigned char *mask,
+                     const unsigned char *blocked, unsigned char *rows)
+{
+    size_t j, i, k;
+    int any = 0;
+
+    memset(rows, 0, g->ny);
+    for (j = 0; j < g->ny; j++)
+        for (i = 0, k = j * g->nx; i < g->nx; i++, k++)
+            if (mask[k] && !blocked[k]) {
+                rows[j] = 1;
+                rows[j > 0 ? j - 1 : j] = 1;
+                rows[j + 1 < g->ny ? j + 1 : j] = 1;
+                any = 1;
+                break;
+            }
+    return any;
+}
+
 /* Marks in mask (2) the ridge cells no point blocks, their count to *nr
  * (every other ridge cell lies within SEED_GAP * d of a point, so would get
  * no seed: not tested). */
@@ -229,8 +251,8 @@ int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex 
     if (rc < 0)
         goto out;
     qc__gap_seed_region(&g, region);
-    rc = qc__gap_transform_far(ctx, &g);
-    if (rc == QC_OK && (blocked = qc__alloc(ctx, cells)) == NULL)
+    /* blocked: the cells, then a flag per row */
+    if ((blocked = qc__alloc(ctx, cells + g.ny)) == NULL)
         rc = QC_ENOMEM;
     if (rc == QC_OK) /* first: the ridge cells near its points get no seed */
         rc = corner_seeds(ctx, region, ix, d, margin, out);
@@ -238,6 +260,10 @@ int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex 
         goto out;
     memset(blocked, 0, cells);
     block_near(&g, out, d, blocked);
+    /* the distances only in the rows find_ridges reads: round free cells */
+    if (mark_rows(&g, mask, blocked, blocked + cells) &&
+        (rc = qc__gap_transform_far(ctx, &g, blocked + cells)) < 0)
+        goto out;
     find_ridges(&g, mask, blocked, &nr);
     rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
     if (rg == NULL) {
@@ -263,7 +289,7 @@ out:
     qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
-    qc__free(ctx, blocked, cells);
+    qc__free(ctx, blocked, cells + g.ny);
     qc__free(ctx, mask, cells);
     return rc;
 }
