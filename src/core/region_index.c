@@ -195,12 +195,13 @@ static void rings_sweep(unsigned char *rg, size_t nx, size_t ny, int dir)
         size_t y = dir > 0 ? k : ny - 1 - k;
         unsigned char *r = rg + y * nx;
         const unsigned char *u = dir > 0 ? r - nx : r + nx;
-        if (k > 0) {
+        if (k > 0 && nx == 1)
             r[0] = least(r[0], (unsigned char)(u[0] + 1));
-            for (x = 1; x < nx; x++) /* vectorizes: rows apart */
-                r[x] = least(r[x], (unsigned char)(least(u[x - 1], u[x]) + 1));
-            for (x = 0; x + 1 < nx; x++)
-                r[x] = least(r[x], (unsigned char)(u[x + 1] + 1));
+        else if (k > 0) {
+            r[0] = least(r[0], (unsigned char)(least(u[0], u[1]) + 1));
+            for (x = 1; x + 1 < nx; x++)
+                r[x] = least(r[x], (unsigned char)(least(least(u[x - 1], u[x]), u[x + 1]) + 1));
+            r[x] = least(r[x], (unsigned char)(least(u[x - 1], u[x]) + 1));
         }
         if (dir > 0)
             for (x = 1; x < nx; x++)
