@@ -148,6 +148,26 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
     return QC_OK;
 }
 
+/* ceil(t), 0 when that is not positive; and floor(u), n - 1 when that is
+ * more, -1 when u < 0 (nothing): the cell range round a point without a
+ * libm call per row (truncation is floor for u >= 0). */
+static long ceil_from0(double t)
+{
+    long c;
+
+    if (!(t > 0.0))
+        return 0;
+    c = (long)t;
+    return (double)c < t ? c + 1 : c;
+}
+
+static long floor_below(double u, size_t n)
+{
+    if (u < 0.0)
+        return -1;
+    return u < (double)n - 1 ? (long)u : (long)n - 1;
+}
+
 /* The cells whose centre lies nearer than SEED_GAP * d (less a slack far
  * above rounding) to a point of pts get 1 in blocked: no seed can go there,
  * whatever is added meanwhile (points are only ever added). */
@@ -163,20 +183,17 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
         return;
     for (n = 0; n < pts->n; n++) {
         qc_vec2 q = pts->v[n];
-        double j0 = ceil((q.y - reach - g->y0) / g->h - 0.5);
-        double j1 = floor((q.y + reach - g->y0) / g->h - 0.5);
-        long j = j0 > 0.0 ? (long)j0 : 0, jend = j1 < (double)g->ny - 1 ? (long)j1 : (long)g->ny - 1;
+        long j = ceil_from0((q.y - reach - g->y0) / g->h - 0.5);
+        long jend = floor_below((q.y + reach - g->y0) / g->h - 0.5, g->ny);
 
         for (; j <= jend; j++) {
-            double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r, a, b;
+            double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r;
             long i0, i1;
             if (!(rest > 0.0))
                 continue;
             r = sqrt(rest);
-            a = ceil((q.x - r - g->x0) / g->h - 0.5);
-            b = floor((q.x + r - g->x0) / g->h - 0.5);
-            i0 = a > 0.0 ? (long)a : 0;
-            i1 = b < (double)g->nx - 1 ? (long)b : (long)g->nx - 1;
+            i0 = ceil_from0((q.x - r - g->x0) / g->h - 0.5);
+            i1 = floor_below((q.x + r - g->x0) / g->h - 0.5, g->nx);
             if (i0 <= i1)
                 memset(blocked + (size_t)j * g->nx + (size_t)i0, 1, (size_t)(i1 - i0 + 1));
         }
