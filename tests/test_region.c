@@ -236,6 +236,58 @@ static void test_index_agrees_with_brute_force(void)
     qc_region_free(&ctx, &r);
 }
 
+/* Every query where the index's raster answers at once (rings of empty
+ * cells round the point, and its side) or cuts the ray short gives the
+ * brute-force answer: a circle with a round hole (many edges: the raster
+ * is built), points at random and on the raster's cell corners and
+ * centres, distances at several radii and admissions at several margins. */
+static void check_point(const qc_region *r, const qc__rindex *ix, qc_vec2 p)
+{
+    static const double radius[] = {0.0, 0.4, 2.5, 7.0, 19.0};
+    double d = qc_region_boundary_distance(r, p);
+    int in = qc_region_contains(r, p);
+    size_t k;
+
+    TEST_ASSERT_EQUAL_INT(in, qc__rindex_contains(ix, p));
+    for (k = 1; k < sizeof radius / sizeof *radius; k++) {
+        TEST_ASSERT_EQUAL_INT(d < radius[k], qc__rindex_near(ix, p, radius[k]));
+        TEST_ASSERT_EQUAL_INT(in && !(d < radius[k]), qc__rindex_admits(ix, p, radius[k]));
+    }
+    TEST_ASSERT_EQUAL_INT(in, qc__rindex_admits(ix, p, radius[0]));
+}
+
+static void test_index_raster_answers_as_brute_force(void)
+{
+    qc_region r, hole;
+    qc__rindex ix;
+    qc_rng rng;
+    size_t i, j, far = 0;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "circle:160", 1.0, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "circle:50", 1.0, &hole));
+    for (i = 0; i < hole.nv; i++) /* off centre (normalize makes it a hole) */
+        hole.v[i] = v2(hole.v[i].x + 65.0, hole.v[i].y + 45.0);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, hole.v, hole.nv));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_normalize(&ctx, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__rindex_build(&ctx, &r, &ix));
+    TEST_ASSERT_NOT_NULL(ix.info);
+    for (i = 0; i < ix.fnx * ix.fny; i++)
+        far += (ix.info[i] & QC__RINDEX_RINGS) >= 2 && (ix.info[i] & QC__RINDEX_INSIDE);
+    TEST_ASSERT_TRUE(far > ix.fnx * ix.fny / 4); /* most of the disc is answered at once */
+    qc_rng_seed(&rng, 5);
+    for (i = 0; i < 20000; i++)
+        check_point(&r, &ix, rng_v2(&rng, -10, 170, -10, 170));
+    for (j = 0; j <= 2 * ix.fny; j++) /* cell corners and centres */
+        for (i = 0; i <= 2 * ix.fnx; i += 3)
+            check_point(&r, &ix, v2(ix.box.min.x + 0.5 * (double)i * ix.fcell,
+                                    ix.box.min.y + 0.5 * (double)j * ix.fcell));
+    for (i = 0; i < r.nv; i++) /* vertices are on the boundary: inside */
+        TEST_ASSERT_TRUE(qc__rindex_contains(&ix, r.v[i]));
+    qc__rindex_free(&ctx, &ix);
+    qc_region_free(&ctx, &hole);
+    qc_region_free(&ctx, &r);
+}
+
 /* A box the index calls inside holds only inside points, none on the
  * boundary; boxes round the hole, across the outline or outside are not. */
 static void test_index_box_inside_is_never_wrong(void)
@@ -404,6 +456,7 @@ int main(void)
     RUN_TEST(test_normalize_drops_repeated_vertices);
     RUN_TEST(test_normalize_rejects_bad_regions);
     RUN_TEST(test_index_agrees_with_brute_force);
+    RUN_TEST(test_index_raster_answers_as_brute_force);
     RUN_TEST(test_dense_comb_is_refused_in_bounded_time);
     RUN_TEST(test_many_holes_are_oriented);
     RUN_TEST(test_index_box_inside_is_never_wrong);

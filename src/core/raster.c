@@ -81,12 +81,11 @@ int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0
         qsort(xs + b, e - b, sizeof *xs, cmp_double);
         for (c = b; c + 1 < e; c += 2) {
             double lo = ceil((xs[c] - x0) / h), hi = ceil((xs[c + 1] - x0) / h);
-            size_t i;
 
             lo = lo < 0.0 ? 0.0 : lo;
             hi = hi > (double)nx ? (double)nx : hi;
-            for (i = (size_t)lo; (double)i < hi; i++)
-                mask[j * nx + i] = 1;
+            if (hi > lo) /* the cells lo .. hi - 1 */
+                memset(mask + j * nx + (size_t)lo, 1, (size_t)(hi - lo));
         }
     }
     qc__free(ctx, xs, (total ? total : 1) * sizeof *xs);

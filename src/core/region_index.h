@@ -2,7 +2,10 @@
  * A spatial index over a region's boundary edges, for the many inside and
  * near-the-boundary questions sampling asks (10^6 points against a
  * 10^5-vertex outline); the region, sample and pattern stages share it, so
- * it lives in the core. Not installed.
+ * it lives in the core. Not installed. An outline of many edges also gets
+ * a finer raster of cells that knows, per cell, how many rings of cells no
+ * edge passes through surround it and which side it lies on: most queries
+ * end there, exactly, without looking at an edge.
  */
 #ifndef QC_REGION_INDEX_H
 #define QC_REGION_INDEX_H
@@ -23,7 +26,17 @@ typedef struct qc__rindex {
     uint32_t *band_start;   /* nband+1 offsets into band_edge */
     uint32_t *band_edge;
     size_t nband_edge;
+    /* the finer raster (info NULL: none): per cell the Chebyshev distance,
+     * in cells, to the nearest cell an edge passes through (the low bits,
+     * capped at QC__RINDEX_RINGS), and QC__RINDEX_INSIDE when that is 2 or
+     * more and the cell lies inside */
+    unsigned char *info;
+    double fcell, slack; /* its cell size; slack: what a bound from it allows for rounding */
+    size_t fnx, fny;
 } qc__rindex;
+
+#define QC__RINDEX_RINGS 127u
+#define QC__RINDEX_INSIDE 128u
 
 /* Indexes region's edges (region must outlive the index). QC_OK, QC_ENOMEM. */
 QC__HIDDEN int qc__rindex_build(qc_ctx *ctx, const qc_region *region, qc__rindex *ix);

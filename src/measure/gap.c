@@ -183,24 +183,42 @@ static int row_exact(row_scratch *r, size_t nx, size_t j, int failed)
     return 1;
 }
 
-int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
+/* qc__gap_transform; far (seeds only on the region's boundary): every
+ * row by the envelope, looking out would only run over its budget, and
+ * with rows not NULL only the rows it flags. */
+static int transform(qc_ctx *ctx, qc__gap_grid *g, int far, const unsigned char *rows)
 {
     row_scratch r;
     size_t i, j;
-    int failed = 0;
+    int failed = far;
 
     QC__TRY(scratch_alloc(ctx, &r, g));
     columns_by_sweeps(g, r.run);
     for (j = 0; j < g->ny; j++) {
         float *row = g->f + j * g->nx;
+        if (rows != NULL && !rows[j])
+            continue;
         for (i = 0; i < g->nx; i++)
             r.col[i] = (double)row[i];
-        failed = row_exact(&r, g->nx, j, failed);
+        if (far)
+            qc__edt_1d(r.col, g->nx, r.out, r.v, r.z);
+        else
+            failed = row_exact(&r, g->nx, j, failed);
         for (i = 0; i < g->nx; i++)
             row[i] = (float)r.out[i];
     }
     scratch_free(ctx, &r, g->nx);
     return QC_OK;
+}
+
+int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g)
+{
+    return transform(ctx, g, 0, NULL);
+}
+
+int qc__gap_transform_far(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *rows)
+{
+    return transform(ctx, g, 1, rows);
 }
 
 /* Cell q's exact value from its row's column values, looking out no

@@ -35,6 +35,11 @@ QC__HIDDEN void qc__gap_seed_region(qc__gap_grid *g, const qc_region *region);
 /* f, seeded (every cell 0 or QC__GAP_FAR), becomes each cell's squared distance
  * (in cells) to the nearest zero cell, capped at QC__GAP_FAR. */
 QC__HIDDEN int qc__gap_transform(qc_ctx *ctx, qc__gap_grid *g);
+/* As qc__gap_transform, for seeds far apart (a region's boundary only):
+ * the same values, without first trying the near-seed way per row; with
+ * rows (ny flags) not NULL, only in the rows flagged (the others hold
+ * their column's distances, upper bounds). */
+QC__HIDDEN int qc__gap_transform_far(qc_ctx *ctx, qc__gap_grid *g, const unsigned char *rows);
 /* As qc__gap_transform, but exact only where it matters: where mask is set
  * and the cell's value exceeds floor; elsewhere f holds an upper bound (the
  * distance along its column, or a nearer one found on the way). With raise, floor rises to each new greatest

@@ -159,18 +159,16 @@ static int walk_ring(qc_ctx *ctx, row_walk *w, const qc_region *r, size_t rs, si
     return QC_OK;
 }
 
-int qc__sample_contour(qc_ctx *ctx, const qc_region *region, double offset, double step,
-                       double margin, qc_points *out)
+int qc__sample_contour(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix,
+                       double offset, double step, double margin, qc_points *out)
 {
-    qc__rindex ix;
     row_walk w;
     size_t q, rs = 0, n0 = out->n, i;
     int rc;
 
     if (!(offset > 0) || !(step > 0))
         return QC_OK;
-    QC__TRY(qc__rindex_build(ctx, region, &ix));
-    w.ix = &ix;
+    w.ix = ix;
     w.offset = offset;
     w.step = step;
     w.margin = margin;
@@ -185,7 +183,6 @@ int qc__sample_contour(qc_ctx *ctx, const qc_region *region, double offset, doub
         rs = region->ring_end[q];
     }
     qc__near_grid_free(ctx, &w.grid);
-    qc__rindex_free(ctx, &ix);
     if (rc < 0)
         out->n = n0;
     return rc;

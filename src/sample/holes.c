@@ -180,15 +180,26 @@ static int many_holes(qc_ctx *ctx, qc__gap_grid *g, const qc_points *pts,
 int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double margin,
                           double gap, qc_points *out)
 {
-    qc__gap_grid g;
     qc__rindex ix;
+    int rc;
+
+    QC__TRY(qc__rindex_build(ctx, region, &ix));
+    rc = qc__sample_fill_holes_ix(ctx, region, &ix, d, margin, gap, out);
+    qc__rindex_free(ctx, &ix);
+    return rc;
+}
+
+int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix,
+                             double d, double margin, double gap, qc_points *out)
+{
+    qc__gap_grid g;
     qc__near_grid ng;
     unsigned char *mask = NULL;
     hole *hs = NULL;
     size_t cells, k, nh = 0, cap = 0, i;
     qc_bbox box = qc_region_bbox(region);
     double lim;
-    int rc, have_ix = 0;
+    int rc;
 
     if (out->n == 0 || !(gap > 0))
         return QC_OK;
@@ -222,18 +233,14 @@ int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d, double
     if (rc < 0 || nh == 0)
         goto out;
     qsort(hs, nh, sizeof *hs, cmp_hole);
-    rc = qc__rindex_build(ctx, region, &ix);
-    have_ix = rc == QC_OK;
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nh && rc == QC_OK; k++) {
         qc_vec2 p = qc__gap_grid_centre(&g, hs[k].at);
 
-        rc = qc__near_grid_push_clear(ctx, &ng, out, &ix, p, gap, margin);
+        rc = qc__near_grid_push_clear(ctx, &ng, out, ix, p, gap, margin);
     }
 out:
-    if (have_ix)
-        qc__rindex_free(ctx, &ix);
     qc__free(ctx, hs, cap * sizeof *hs);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);

@@ -148,6 +148,26 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
     return QC_OK;
 }
 
+/* ceil(t), 0 when that is not positive; and floor(u), n - 1 when that is
+ * more, -1 when u < 0 (nothing): the cell range round a point without a
+ * libm call per row (truncation is floor for u >= 0). */
+static long ceil_from0(double t)
+{
+    long c;
+
+    if (!(t > 0.0))
+        return 0;
+    c = (long)t;
+    return (double)c < t ? c + 1 : c;
+}
+
+static long floor_below(double u, size_t n)
+{
+    if (u < 0.0)
+        return -1;
+    return u < (double)n - 1 ? (long)u : (long)n - 1;
+}
+
 /* The cells whose centre lies nearer than SEED_GAP * d (less a slack far
  * above rounding) to a point of pts get 1 in blocked: no seed can go there,
  * whatever is added meanwhile (points are only ever added). */
@@ -163,24 +183,43 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
         return;
     for (n = 0; n < pts->n; n++) {
         qc_vec2 q = pts->v[n];
-        double j0 = ceil((q.y - reach - g->y0) / g->h - 0.5);
-        double j1 = floor((q.y + reach - g->y0) / g->h - 0.5);
-        long j = j0 > 0.0 ? (long)j0 : 0, jend = j1 < (double)g->ny - 1 ? (long)j1 : (long)g->ny - 1;
+        long j = ceil_from0((q.y - reach - g->y0) / g->h - 0.5);
+        long jend = floor_below((q.y + reach - g->y0) / g->h - 0.5, g->ny);
 
         for (; j <= jend; j++) {
-            double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r, a, b;
+            double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r;
             long i0, i1;
             if (!(rest > 0.0))
                 continue;
             r = sqrt(rest);
-            a = ceil((q.x - r - g->x0) / g->h - 0.5);
-            b = floor((q.x + r - g->x0) / g->h - 0.5);
-            i0 = a > 0.0 ? (long)a : 0;
-            i1 = b < (double)g->nx - 1 ? (long)b : (long)g->nx - 1;
+            i0 = ceil_from0((q.x - r - g->x0) / g->h - 0.5);
+            i1 = floor_below((q.x + r - g->x0) / g->h - 0.5, g->nx);
             if (i0 <= i1)
                 memset(blocked + (size_t)j * g->nx + (size_t)i0, 1, (size_t)(i1 - i0 + 1));
         }
     }
+}
+
+/* Flags in rows (ny bytes) the rows holding a cell inside and not blocked,
+ * and the rows either side (is_ridge reads them): the rows whose distances
+ * find_ridges reads. Returns whether any is flagged. */
+static int mark_rows(const qc__gap_grid *g, const unsigned char *mask,
+                     const unsigned char *blocked, unsigned char *rows)
+{
+    size_t j, i, k;
+    int any = 0;
+
+    memset(rows, 0, g->ny);
+    for (j = 0; j < g->ny; j++)
+        for (i = 0, k = j * g->nx; i < g->nx; i++, k++)
+            if (mask[k] && !blocked[k]) {
+                rows[j] = 1;
+                rows[j > 0 ? j - 1 : j] = 1;
+                rows[j + 1 < g->ny ? j + 1 : j] = 1;
+                any = 1;
+                break;
+            }
+    return any;
 }
 
 /* Marks in mask (2) the ridge cells no point blocks, their count to *nr
@@ -203,33 +242,45 @@ static void find_ridges(const qc__gap_grid *g, unsigned char *mask, const unsign
 int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double margin,
                       qc_points *out)
 {
-    qc__gap_grid g;
     qc__rindex ix;
+    int rc;
+
+    QC__TRY(qc__rindex_build(ctx, region, &ix));
+    rc = qc__sample_medial_ix(ctx, region, &ix, d, margin, out);
+    qc__rindex_free(ctx, &ix);
+    return rc;
+}
+
+int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix, double d,
+                         double margin, qc_points *out)
+{
+    qc__gap_grid g;
     qc__near_grid ng;
     unsigned char *mask = NULL, *blocked = NULL;
     ridge *rg = NULL;
     size_t cells, k, nr = 0, i;
     qc_bbox box = qc_region_bbox(region);
-    int rc, have_ix = 0;
+    int rc;
 
     memset(&ng, 0, sizeof ng);
-    memset(&ix, 0, sizeof ix);
     rc = qc__gap_grid_inside(ctx, region, d / CELLS_PER_D, &g, &mask);
     cells = g.nx * g.ny;
     if (rc < 0)
         goto out;
     qc__gap_seed_region(&g, region);
-    rc = qc__gap_transform(ctx, &g);
-    if (rc == QC_OK && (blocked = qc__alloc(ctx, cells)) == NULL)
+    /* blocked: the cells, then a flag per row */
+    if ((blocked = qc__alloc(ctx, cells + g.ny)) == NULL)
         rc = QC_ENOMEM;
-    if (rc == QC_OK && (rc = qc__rindex_build(ctx, region, &ix)) == QC_OK)
-        have_ix = 1;
     if (rc == QC_OK) /* first: the ridge cells near its points get no seed */
-        rc = corner_seeds(ctx, region, &ix, d, margin, out);
+        rc = corner_seeds(ctx, region, ix, d, margin, out);
     if (rc < 0)
         goto out;
     memset(blocked, 0, cells);
     block_near(&g, out, d, blocked);
+    /* the distances only in the rows find_ridges reads: round free cells */
+    if (mark_rows(&g, mask, blocked, blocked + cells) &&
+        (rc = qc__gap_transform_far(ctx, &g, blocked + cells)) < 0)
+        goto out;
     find_ridges(&g, mask, blocked, &nr);
     rg = qc__alloc_array(ctx, nr ? nr : 1, sizeof *rg);
     if (rg == NULL) {
@@ -248,16 +299,14 @@ int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double mar
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nr && rc == QC_OK; k++) {
-        rc = qc__near_grid_push_clear(ctx, &ng, out, &ix, qc__gap_grid_centre(&g, rg[k].at),
+        rc = qc__near_grid_push_clear(ctx, &ng, out, ix, qc__gap_grid_centre(&g, rg[k].at),
                                       SEED_GAP * d, margin);
     }
 out:
-    if (have_ix)
-        qc__rindex_free(ctx, &ix);
     qc__free(ctx, rg, (nr ? nr : 1) * sizeof *rg);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);
-    qc__free(ctx, blocked, cells);
+    qc__free(ctx, blocked, cells + g.ny);
     qc__free(ctx, mask, cells);
     return rc;
 }

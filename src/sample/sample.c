@@ -26,11 +26,14 @@ double qc_sample_estimate(const qc_region *region, const qc_sample_params *param
     return fabs(qc_region_area(region)) / cell;
 }
 
-static int check_request(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp)
+int qc__sample_check(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp)
 {
     size_t limit = sp->max_points ? sp->max_points : QC_MAX_POINTS;
     double est, box_count;
     qc_bbox box;
+
+    if (region == NULL || region->nrings == 0)
+        return qc__fail(ctx, QC_EEMPTY, "the region has no outline");
 
     if (sp->kind < QC_SAMPLE_TRIANGLE || sp->kind > QC_SAMPLE_POISSON)
         return qc__fail(ctx, QC_EINVAL, "unknown point distribution %d", sp->kind);
@@ -60,24 +63,31 @@ static int check_request(qc_ctx *ctx, const qc_region *region, const qc_sample_p
     return QC_OK;
 }
 
+int qc__sample_fill(qc_ctx *ctx, const qc__rindex *ix, const qc_sample_params *params,
+                    qc_points *out)
+{
+    size_t n0 = out->n;
+    int rc;
+
+    if (params->kind == QC_SAMPLE_POISSON)
+        rc = qc__sample_poisson(ctx, ix, params->spacing, params->margin, params->seed,
+                                params->poisson_k > 0 ? params->poisson_k : 30, out);
+    else
+        rc = qc__sample_lattice(ctx, ix, params->kind, params->spacing, params->margin, out);
+    if (rc < 0)
+        out->n = n0;
+    return rc;
+}
+
 int qc_sample(qc_ctx *ctx, const qc_region *region, const qc_sample_params *params,
               qc_points *out)
 {
     qc__rindex ix;
-    size_t n0 = out->n; /* on error out is as on entry (core.h) */
-    int rc;
+    int rc; /* on error out is as on entry (core.h) */
 
-    if (region == NULL || region->nrings == 0)
-        return qc__fail(ctx, QC_EEMPTY, "the region has no outline");
-    QC__TRY(check_request(ctx, region, params));
+    QC__TRY(qc__sample_check(ctx, region, params));
     QC__TRY(qc__rindex_build(ctx, region, &ix));
-    if (params->kind == QC_SAMPLE_POISSON)
-        rc = qc__sample_poisson(ctx, &ix, params->spacing, params->margin, params->seed,
-                                params->poisson_k > 0 ? params->poisson_k : 30, out);
-    else
-        rc = qc__sample_lattice(ctx, &ix, params->kind, params->spacing, params->margin, out);
+    rc = qc__sample_fill(ctx, &ix, params, out);
     qc__rindex_free(ctx, &ix);
-    if (rc < 0)
-        out->n = n0;
     return rc;
 }

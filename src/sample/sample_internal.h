@@ -4,6 +4,12 @@
 
 #include "region_index.h"
 
+/* Checks a qc_sample request against the limits (sample.c). */
+QC__HIDDEN int qc__sample_check(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp);
+/* qc_sample's fill over the index of its region, the request checked. */
+QC__HIDDEN int qc__sample_fill(qc_ctx *ctx, const qc__rindex *ix, const qc_sample_params *params,
+                               qc_points *out);
+
 /* Lattice points of kind inside the index's region, margin from its edges,
  * spacing d, the lattice centred on the region's box. Appends to out. */
 QC__HIDDEN int qc__sample_lattice(qc_ctx *ctx, const qc__rindex *ix, int kind, double d,
@@ -41,6 +47,9 @@ static inline int qc__cover_holds(const qc__cover *c, qc_vec2 p)
  * and strips too narrow for the fill get points (medial.c). Appends. */
 QC__HIDDEN int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d,
                                  double margin, qc_points *out);
+/* As qc__sample_medial, with the region's index given. */
+QC__HIDDEN int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix,
+                                    double d, double margin, qc_points *out);
 
 /* Points of a growing set near a query point: a uniform grid of chains
  * (near_grid.c). Queries answer for radii up to the cell size. */
@@ -93,14 +102,18 @@ QC__HIDDEN double qc__seed_dist2(const qc__seed_buckets *sb, long i, long j);
  * apart along it, none nearer the boundary than margin (contour.c).
  * Appends to out.
  */
-QC__HIDDEN int qc__sample_contour(qc_ctx *ctx, const qc_region *region, double offset,
-                                  double step, double margin, qc_points *out);
+QC__HIDDEN int qc__sample_contour(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix,
+                                  double offset, double step, double margin, qc_points *out);
 
 /* Adds points, farthest first, wherever a place inside (on a d / 8 raster)
  * lies farther than gap from every point of out, each at least margin
  * inside (holes.c). Appends. */
 QC__HIDDEN int qc__sample_fill_holes(qc_ctx *ctx, const qc_region *region, double d,
                                      double margin, double gap, qc_points *out);
+/* As qc__sample_fill_holes, with the region's index given. */
+QC__HIDDEN int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region,
+                                        const qc__rindex *ix, double d, double margin,
+                                        double gap, qc_points *out);
 
 /*
  * The points qc_generate builds on: qc_sample's fill, then (row not

@@ -23,36 +23,50 @@
 #define ROW_CLEAR 0.7
 #define HOLE_GAP 0.95
 
-int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp,
-                        int row, qc_points *out)
+/* The steps after the request's check, over one index of the region. */
+static int to_seams(qc_ctx *ctx, const qc_region *region, const qc__rindex *ix,
+                    const qc_sample_params *sp, const qc_sample_params *fill_sp, int row,
+                    qc_points *out)
 {
-    qc_sample_params fill_sp = *sp;
     qc_points fill = {0};
     double d = sp->spacing, m = sp->margin;
     size_t n0 = out->n;
     int rc;
 
     if (row == QC__ROW_NONE) {
-        rc = qc_sample(ctx, region, sp, out);
+        rc = qc__sample_fill(ctx, ix, sp, out);
         if (rc == QC_OK)
-            rc = qc__sample_medial(ctx, region, d, m, out);
-        if (rc < 0)
-            out->n = n0;
+            rc = qc__sample_medial_ix(ctx, region, ix, d, m, out);
         return rc;
     }
-    /* the fill first: qc_sample checks the request against the limits */
-    fill_sp.margin = fmax(m, (ROW_OFFSET + ROW_CLEAR) * d);
-    rc = qc_sample(ctx, region, &fill_sp, &fill);
+    rc = qc__sample_fill(ctx, ix, fill_sp, &fill);
     if (rc == QC_OK)
-        rc = qc__sample_contour(ctx, region, fmax(ROW_OFFSET * d, m),
+        rc = qc__sample_contour(ctx, region, ix, fmax(ROW_OFFSET * d, m),
                                 (row == QC__ROW_TOUR ? ROW_STEP_TOUR : ROW_STEP_TREE) * d, m, out);
     if (rc == QC_OK)
         rc = qc__points_append_clear(ctx, out, n0, &fill, ROW_CLEAR * d);
     if (rc == QC_OK)
-        rc = qc__sample_medial(ctx, region, d, m, out);
+        rc = qc__sample_medial_ix(ctx, region, ix, d, m, out);
     if (rc == QC_OK)
-        rc = qc__sample_fill_holes(ctx, region, d, m, HOLE_GAP * d, out);
+        rc = qc__sample_fill_holes_ix(ctx, region, ix, d, m, HOLE_GAP * d, out);
     qc_points_free(ctx, &fill);
+    return rc;
+}
+
+int qc__sample_to_seams(qc_ctx *ctx, const qc_region *region, const qc_sample_params *sp,
+                        int row, qc_points *out)
+{
+    qc_sample_params fill_sp = *sp;
+    qc__rindex ix;
+    size_t n0 = out->n;
+    int rc;
+
+    /* the fill's request is checked (the fill keeps clear of the row) */
+    fill_sp.margin = fmax(sp->margin, (ROW_OFFSET + ROW_CLEAR) * sp->spacing);
+    QC__TRY(qc__sample_check(ctx, region, row == QC__ROW_NONE ? sp : &fill_sp));
+    QC__TRY(qc__rindex_build(ctx, region, &ix));
+    rc = to_seams(ctx, region, &ix, sp, &fill_sp, row, out);
+    qc__rindex_free(ctx, &ix);
     if (rc < 0)
         out->n = n0;
     return rc;
