@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "family_branching_tile.h"
+#include "region_index.h"
 
 enum { K_BOUND = 0, K_VINE = 1, K_MOTIF = 2 };
 
@@ -76,6 +77,8 @@ static qc__xf place(const qc_motif *m, const shape *sh, qc_vec2 a, qc_vec2 dir, 
 typedef struct run {
     qc_ctx *ctx;
     const qc_region *region;
+    qc__rindex inside; /* the region's edges: a curved outline has thousands,
+                        * and each motif placed asks once */
     const qc_motif_set *set;
     qc__cgrid grid;
     shape *sh;
@@ -149,7 +152,7 @@ static int try_place(run *r, uint32_t mi, qc_vec2 a, qc_vec2 dir, double k, uint
         full[i] = qc__xf_apply(&f, m->hull[i]);
     if (qc__cgrid_hit(&r->grid, full, nf, 1u << K_BOUND | 1u << K_MOTIF, NULL, NULL))
         return 0;
-    if (!qc_region_contains(r->region, full[0]))
+    if (!qc__rindex_contains(&r->inside, full[0]))
         return 0;
     /* past make_grid's guess, by a quarter: 72 bytes a spot, a million spots */
     *rc = r->nspots < r->spots_cap ? QC_OK
@@ -530,6 +533,7 @@ static int fill_grid(run *r)
         return QC_ENOMEM;
     QC__TRY(make_grid(r));
     QC__TRY(qc__cgrid_add_region(r->ctx, &r->grid, r->region, K_BOUND));
+    QC__TRY(qc__rindex_build(r->ctx, r->region, &r->inside));
     for (j = 0; j < r->nseg; j++)
         QC__TRY(add_vine_chords(r, j));
     return QC_OK;
@@ -729,6 +733,7 @@ static int assemble(run *r, qc_path *dst)
     const spot *sp;
 
     qc__cgrid_free(r->ctx, &r->grid); /* placed: the result need not share the peak with it */
+    qc__rindex_free(r->ctx, &r->inside);
     merge_begin(r, &mg);
     QC__TRY(reserve_result(r, dst));
     QC__TRY(qc_path_move_to(r->ctx, dst, r->vine.pt[0]));
@@ -759,6 +764,7 @@ static void run_free(run *r)
     qc_ctx *ctx = r->ctx;
 
     qc__cgrid_free(ctx, &r->grid);
+    qc__rindex_free(ctx, &r->inside);
     free_shapes(r);
     qc__free(ctx, r->buf, 2 * r->nbuf * sizeof *r->buf);
     qc__free(ctx, r->chain, (MAX_CHORDS + 1) * sizeof *r->chain);
