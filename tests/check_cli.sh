@@ -253,7 +253,8 @@ PY
     expect_fail 2 "quilt-width lays out pantograph rows" "$QC" generate --quilt-width 20 &&
         expect_fail 2 "a tile of 8 in fits 0 times across" "$QC" generate --tile edge-to-edge --quilt-width 5 &&
         expect_fail 2 "not both" "$QC" generate --tile edge-to-edge --quilt-width 20 --repeat 2x1 &&
-        expect_fail 2 "offset 1 ratio out of range" "$QC" generate --tile edge-to-edge --offset 1
+        expect_fail 2 "offset 1 ratio out of range" "$QC" generate --tile edge-to-edge --offset 1 &&
+        expect_fail 2 "not its full width 0..254 mm" "$QC" generate --region heart:10 --tile all-over
 }
 check pantograph_rows_offset_and_quilt_width pantograph_rows
 

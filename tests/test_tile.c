@@ -147,6 +147,26 @@ static void tile_should_run_from_port_to_mirrored_port(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* A tile whose outline misses a side of its box at mid-height (a heart's
+ * dip) would put its exit, where the next copy enters, outside itself: it
+ * is refused with the spans; a circle touches both sides there and works. */
+static void tile_ports_should_refuse_a_tile_short_of_its_sides(void)
+{
+    qc_region r = {0};
+    qc_vec2 in, outp;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "heart:200", 1.0, &r));
+    TEST_ASSERT_EQUAL_INT(QC_EINVAL, qc_tile_ports(&ctx, &r, &in, &outp));
+    TEST_ASSERT_NOT_NULL(strstr(qc_errmsg(&ctx), "not its full width 0..200 mm"));
+    qc_region_free(&ctx, &r);
+    qc_clear_error(&ctx);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_shape(&ctx, "circle:200", 1.0, &r));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_tile_ports(&ctx, &r, &in, &outp));
+    TEST_ASSERT_EQUAL_DOUBLE(200.0, outp.x - in.x);
+    qc_region_free(&ctx, &r);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 static void tile_repeat_should_join_copies_exactly(void)
 {
     qc_path tile = {0}, out = {0};
@@ -376,6 +396,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(tile_should_run_from_port_to_mirrored_port);
+    RUN_TEST(tile_ports_should_refuse_a_tile_short_of_its_sides);
     RUN_TEST(tile_repeat_should_join_copies_exactly);
     RUN_TEST(tiles_side_by_side_should_not_touch);
     RUN_TEST(tile_layout_should_sew_rows_as_pieces);

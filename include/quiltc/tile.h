@@ -21,7 +21,8 @@ extern "C" {
  * of region's bounding box first enters and last leaves the region (for a
  * rectangle, the midpoints of its left and right sides). The exit is the
  * entry moved by the tile's width, so *exit - *entry == (box width, 0).
- * Errors: QC_EINVAL (no ring, or the line misses the region).
+ * Errors: QC_EINVAL (no ring, the line misses the region, or it does not
+ * reach both sides of the box: the exit would lie outside the region).
  */
 int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 *exit);
 

@@ -6,7 +6,7 @@
 int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 *exit)
 {
     qc_bbox box;
-    double y, lo = HUGE_VAL;
+    double y, lo = HUGE_VAL, hi = -HUGE_VAL, tol;
     size_t k, rs = 0;
 
     if (region == NULL || region->nrings == 0)
@@ -18,15 +18,30 @@ int qc_tile_ports(qc_ctx *ctx, const qc_region *region, qc_vec2 *entry, qc_vec2 
 
         for (i = rs; i < end; p = i++) {
             qc_vec2 a = region->v[p], b = region->v[i];
-            if ((a.y > y) != (b.y > y))
-                lo = fmin(lo, a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
-            else if (a.y == y && b.y == y)
+            if ((a.y > y) != (b.y > y)) {
+                double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+                lo = fmin(lo, x);
+                hi = fmax(hi, x);
+            } else if (a.y == y && b.y == y) {
                 lo = fmin(lo, fmin(a.x, b.x));
+                hi = fmax(hi, fmax(a.x, b.x));
+            }
         }
         rs = end;
     }
     if (!(lo < HUGE_VAL))
         return qc__fail(ctx, QC_EINVAL, "tile ports: the line y = %g mm misses the region", y);
+    /* the next copy enters where this one leaves, a tile width on: that
+     * point is on the outline only when the line meets both sides of the
+     * box (a rectangle's do; a heart's do not, and its copies would be
+     * sewn across the fabric outside it) */
+    tol = 1e-9 * (box.max.x - box.min.x);
+    if (lo > box.min.x + tol || hi < box.max.x - tol)
+        return qc__fail(ctx, QC_EINVAL,
+                        "tile: at mid-height (y = %g mm) the region spans x = %g..%g mm, not "
+                        "its full width %g..%g mm; copies join at the left and right edges, "
+                        "so a tile must reach both there (a rectangle does)",
+                        y, lo, hi, box.min.x, box.max.x);
     entry->x = lo;
     entry->y = y;
     exit->x = lo + (box.max.x - box.min.x);
