@@ -3,19 +3,6 @@
 
 #include "internal.h"
 
-double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
-{
-    double dx = b.x - a.x, dy = b.y - a.y;
-    double len2 = dx * dx + dy * dy;
-    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
-    double ex, ey;
-
-    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-    ex = a.x + t * dx - p.x;
-    ey = a.y + t * dy - p.y;
-    return ex * ex + ey * ey;
-}
-
 qc_bbox qc__points_bbox(const qc_vec2 *p, size_t n)
 {
     qc_bbox b;

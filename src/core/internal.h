@@ -5,6 +5,7 @@
 #ifndef QC_INTERNAL_H
 #define QC_INTERNAL_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "quiltc.h"
@@ -67,8 +68,21 @@ QC__HIDDEN int qc__scan_number(const char *s, size_t n, size_t *pos, double *v);
 QC__HIDDEN void qc__sincos(double x, double *s, double *c);
 
 /* Squared distance from p to segment ab (a point when a == b); the one
- * formula every stage uses, so their answers agree to the bit. */
-QC__HIDDEN double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b);
+ * formula every stage uses, so their answers agree to the bit. Inline: the
+ * flattening asks it twice per subdivision, and the two share the chord's
+ * terms once inlined. */
+static inline double qc__seg_dist2(qc_vec2 p, qc_vec2 a, qc_vec2 b)
+{
+    double dx = b.x - a.x, dy = b.y - a.y;
+    double len2 = dx * dx + dy * dy;
+    double t = len2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0.0;
+    double ex, ey;
+
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    ex = a.x + t * dx - p.x;
+    ey = a.y + t * dy - p.y;
+    return ex * ex + ey * ey;
+}
 
 /* Index of the point of p[0..n) nearest q (ties: the lowest); 0 when n == 0. */
 QC__HIDDEN size_t qc__nearest_point(const qc_vec2 *p, size_t n, qc_vec2 q);
@@ -140,6 +154,25 @@ typedef struct qc__seg_grid {
 QC__HIDDEN int qc__seg_grid_build(qc_ctx *ctx, qc__seg_grid *g, const qc_vec2 *p, size_t n,
                                   qc__seg_next next, const void *ud, double cell,
                                   double cells_per_seg);
+/* qc_hypot's formula (qmath.c returns it), inline for the loops that
+ * measure a segment per vertex per round: the same bits, no call. */
+static inline double qc__hypot(double x, double y)
+{
+    return sqrt(x * x + y * y);
+}
+
+/* fmin and fmax as C99 has them (a NaN loses), without the library call,
+ * for binning loops that take an edge's box several times per query. */
+static inline double qc__lesser(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
+static inline double qc__greater(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
 /* The cell of grid coordinate t (in cells) on a row of n: floor(t) clamped
  * to [0, n - 1], NaN to 0. Truncation is floor for t >= 1, so binning loops
  * make no libm call per coordinate. */

@@ -144,5 +144,5 @@ double qc_atan2(double y, double x)
 
 double qc_hypot(double x, double y)
 {
-    return sqrt(x * x + y * y);
+    return qc__hypot(x, y);
 }

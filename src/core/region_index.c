@@ -32,16 +32,6 @@ static int in_box(const qc__rindex *ix, qc_vec2 p)
            p.y <= ix->box.max.y;
 }
 
-/* The smaller and larger of two coordinates (comparisons: fmin and fmax are calls). */
-static double lesser(double a, double b)
-{
-    return a < b ? a : b;
-}
-
-static double greater(double a, double b)
-{
-    return a < b ? b : a;
-}
 
 /* Fills next[] from the ring structure. */
 static void link_rings(const qc_region *r, uint32_t *next)
@@ -64,10 +54,10 @@ static size_t grid_pass(qc__rindex *ix, int fill)
 
     for (a = 0; a < r->nv; a++) {
         qc_vec2 p = r->v[a], q = r->v[ix->next[a]];
-        size_t x0 = cell_of(lesser(p.x, q.x), ix->box.min.x, ix->cell, ix->nx);
-        size_t x1 = cell_of(greater(p.x, q.x), ix->box.min.x, ix->cell, ix->nx);
-        size_t y0 = cell_of(lesser(p.y, q.y), ix->box.min.y, ix->cell, ix->ny);
-        size_t y1 = cell_of(greater(p.y, q.y), ix->box.min.y, ix->cell, ix->ny);
+        size_t x0 = cell_of(qc__lesser(p.x, q.x), ix->box.min.x, ix->cell, ix->nx);
+        size_t x1 = cell_of(qc__greater(p.x, q.x), ix->box.min.x, ix->cell, ix->nx);
+        size_t y0 = cell_of(qc__lesser(p.y, q.y), ix->box.min.y, ix->cell, ix->ny);
+        size_t y1 = cell_of(qc__greater(p.y, q.y), ix->box.min.y, ix->cell, ix->ny);
         size_t x, y;
 
         for (y = y0; y <= y1; y++)
@@ -90,8 +80,8 @@ static size_t band_pass(qc__rindex *ix, int fill)
 
     for (a = 0; a < r->nv; a++) {
         qc_vec2 p = r->v[a], q = r->v[ix->next[a]];
-        size_t b0 = cell_of(lesser(p.y, q.y), ix->box.min.y, ix->band, ix->nband);
-        size_t b1 = cell_of(greater(p.y, q.y), ix->box.min.y, ix->band, ix->nband);
+        size_t b0 = cell_of(qc__lesser(p.y, q.y), ix->box.min.y, ix->band, ix->nband);
+        size_t b1 = cell_of(qc__greater(p.y, q.y), ix->box.min.y, ix->band, ix->nband);
         size_t b;
 
         if (p.y == q.y)
@@ -154,7 +144,7 @@ static double x_at(qc_vec2 a, qc_vec2 b, double y)
  * where ab crosses a row's centre line. */
 static void mark_edge(qc__rindex *ix, unsigned char *rg, qc_vec2 a, qc_vec2 b)
 {
-    double e = ix->slack, ylo = lesser(a.y, b.y), yhi = greater(a.y, b.y);
+    double e = ix->slack, ylo = qc__lesser(a.y, b.y), yhi = qc__greater(a.y, b.y);
     size_t j = cell_of(ylo - e, ix->box.min.y, ix->fcell, ix->fny);
     size_t j1 = cell_of(yhi + e, ix->box.min.y, ix->fcell, ix->fny);
 
@@ -168,8 +158,8 @@ static void mark_edge(qc__rindex *ix, unsigned char *rg, qc_vec2 a, qc_vec2 b)
             xa = x_at(a, b, s0 - e > ylo ? s0 - e : ylo);
             xb = x_at(a, b, s0 + ix->fcell + e < yhi ? s0 + ix->fcell + e : yhi);
         }
-        i = cell_of(lesser(xa, xb) - e, ix->box.min.x, ix->fcell, ix->fnx);
-        i1 = cell_of(greater(xa, xb) + e, ix->box.min.x, ix->fcell, ix->fnx);
+        i = cell_of(qc__lesser(xa, xb) - e, ix->box.min.x, ix->fcell, ix->fnx);
+        i1 = cell_of(qc__greater(xa, xb) + e, ix->box.min.x, ix->fcell, ix->fnx);
         memset(rings + i, 0, i1 - i + 1);
         if ((a.y > yc) != (b.y > yc))
             row[cell_of(a.x + (yc - a.y) * (b.x - a.x) / (b.y - a.y), ix->box.min.x, ix->fcell,
@@ -362,7 +352,7 @@ static int spans(qc_vec2 a, qc_vec2 b, double y)
  * filed in column x - 1 too (its left end's cell lies before x). */
 static int filed_left(const qc__rindex *ix, qc_vec2 a, qc_vec2 b, size_t x)
 {
-    return (lesser(a.x, b.x) - ix->box.min.x) / ix->cell < (double)x;
+    return (qc__lesser(a.x, b.x) - ix->box.min.x) / ix->cell < (double)x;
 }
 
 /* The ray from p towards +x, through the raster: the x of the centre of

@@ -11,29 +11,6 @@ static int finite(qc_vec2 p)
     return fabs(p.x) <= 1e300 && fabs(p.y) <= 1e300;
 }
 
-/* Whether both inner control points lie within tol (tol2 squared) of the
- * chord q[0]q[3]: qc__seg_dist2(q[k], q[0], q[3]) <= tol2 for k = 1, 2, its
- * very arithmetic (the same answers to the bit) with the chord's terms
- * shared and no call: the flattening's test, once per subdivision. */
-static int hull_flat(const qc_vec2 q[4], double tol2)
-{
-    double dx = q[3].x - q[0].x, dy = q[3].y - q[0].y;
-    double len2 = dx * dx + dy * dy;
-    int k;
-
-    for (k = 1; k <= 2; k++) {
-        double t = len2 > 0.0 ? ((q[k].x - q[0].x) * dx + (q[k].y - q[0].y) * dy) / len2 : 0.0;
-        double ex, ey;
-
-        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-        ex = q[0].x + t * dx - q[k].x;
-        ey = q[0].y + t * dy - q[k].y;
-        if (!(ex * ex + ey * ey <= tol2))
-            return 0;
-    }
-    return 1;
-}
-
 /* Emits the points after c[0] of one cubic. The curve lies in the hull of
  * its control points, so control points within tol of the chord bound the
  * curve's distance from each emitted chord by tol. Iterative, depth-first,
@@ -55,7 +32,8 @@ static int flatten_cubic(const qc_vec2 c[4], double tol2, int backwards,
         qc_vec2 *q = stack[sp - 1];
         int d = depth[sp - 1];
 
-        if (d >= FLAT_MAX_DEPTH || hull_flat(q, tol2)) {
+        if (d >= FLAT_MAX_DEPTH || (qc__seg_dist2(q[1], q[0], q[3]) <= tol2 &&
+                                    qc__seg_dist2(q[2], q[0], q[3]) <= tol2)) {
             rc = fn(ud, q[3], 0);
             if (rc < 0)
                 return rc;

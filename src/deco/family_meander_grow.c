@@ -92,13 +92,6 @@ typedef struct grow {
     int open;           /* an open curve: its ends stay put, no closing segment */
 } grow;
 
-/* qc_hypot as qmath.c has it, inlined (the same bits): the rounds call it
- * a few times per vertex. */
-static double len2d(double x, double y)
-{
-    return sqrt(x * x + y * y);
-}
-
 static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
 {
     QC__TRY(QC__RESERVE(ctx, g->p, g->cap, need));
@@ -168,7 +161,7 @@ static double circumradius(qc_vec2 a, qc_vec2 b, qc_vec2 c, double lab, double l
     double abx = b.x - a.x, aby = b.y - a.y, bcx = c.x - b.x, bcy = c.y - b.y;
     double cax = a.x - c.x, cay = a.y - c.y;
     double cr = fabs(abx * bcy - aby * bcx);
-    double l = lab * lbc * len2d(cax, cay);
+    double l = lab * lbc * qc__hypot(cax, cay);
 
     return cr > 1e-12 * l ? l / (2.0 * cr) : 1e30;
 }
@@ -480,7 +473,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
      * there a segment may cross the one after next. */
     for (i = 0; i < n; i++) {
         qc_vec2 p = g->p[i], b = g->p[after(g, i)];
-        g->seg[i] = len2d(b.x - p.x, b.y - p.y);
+        g->seg[i] = qc__hypot(b.x - p.x, b.y - p.y);
     }
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
@@ -534,7 +527,7 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
         my = amp * (2.0 * qc_rng_unit(rng) - 1.0);
         m.x += mx - pull * pull_dir.x;
         m.y += my - pull * pull_dir.y;
-        len = len2d(m.x, m.y);
+        len = qc__hypot(m.x, m.y);
         if (len > cap) {
             m.x *= cap / len;
             m.y *= cap / len;
@@ -567,7 +560,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
 
     for (i = 0; i + (g->open ? 1 : 0) < n; i++) {
         qc_vec2 a = g->q[i], b = g->q[i + 1 == n ? 0 : i + 1];
-        g->seg[i] = len2d(b.x - a.x, b.y - a.y); /* read again below */
+        g->seg[i] = qc__hypot(b.x - a.x, b.y - a.y); /* read again below */
         total += g->seg[i];
     }
     may_grow = total < o->max_len;
@@ -578,7 +571,7 @@ static int resample(qc_ctx *ctx, grow *g, const qc__grow_opts *o)
 
         if (m > 0 && !(g->open && i + 1 == n)) {
             qc_vec2 l = g->p[m - 1];
-            if (len2d(a.x - l.x, a.y - l.y) < lo && n - dropped > 8) {
+            if (qc__hypot(a.x - l.x, a.y - l.y) < lo && n - dropped > 8) {
                 dropped++;
                 continue;
             }
@@ -736,7 +729,7 @@ static void settle(grow *g, const qc__grow_opts *o, size_t it)
         qc_vec2 a = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
         size_t tt = tile_of(g, cell_index(g, a));
         if (g->frozen[tt] == 2)
-            g->tile_now[tt] += len2d(b.x - a.x, b.y - a.y);
+            g->tile_now[tt] += qc__hypot(b.x - a.x, b.y - a.y);
     }
     for (t = 0; t < nt; t++) {
         if (g->frozen[t] != 2)

@@ -18,28 +18,17 @@ typedef struct xgrid {
     size_t nseg;
 } xgrid;
 
-/* fmin and fmax as C99 has them (a NaN loses), without the library call
- * (cell_range runs several times a segment). */
-static double lesser(double a, double b)
-{
-    return a < b || b != b ? a : b;
-}
-
-static double greater(double a, double b)
-{
-    return a > b || b != b ? a : b;
-}
 
 static void cell_range(const xgrid *g, qc_vec2 a, qc_vec2 b, size_t r[4])
 {
-    double lx = (lesser(a.x, b.x) - g->x0) / g->cell, hx = (greater(a.x, b.x) - g->x0) / g->cell;
-    double ly = (lesser(a.y, b.y) - g->y0) / g->cell, hy = (greater(a.y, b.y) - g->y0) / g->cell;
+    double lx = (qc__lesser(a.x, b.x) - g->x0) / g->cell, hx = (qc__greater(a.x, b.x) - g->x0) / g->cell;
+    double ly = (qc__lesser(a.y, b.y) - g->y0) / g->cell, hy = (qc__greater(a.y, b.y) - g->y0) / g->cell;
     double mx = (double)(g->nx - 1), my = (double)(g->ny - 1);
 
-    r[0] = (size_t)lesser(greater(floor(lx), 0.0), mx);
-    r[1] = (size_t)lesser(greater(floor(ly), 0.0), my);
-    r[2] = (size_t)lesser(greater(floor(hx), 0.0), mx);
-    r[3] = (size_t)lesser(greater(floor(hy), 0.0), my);
+    r[0] = (size_t)qc__lesser(qc__greater(floor(lx), 0.0), mx);
+    r[1] = (size_t)qc__lesser(qc__greater(floor(ly), 0.0), my);
+    r[2] = (size_t)qc__lesser(qc__greater(floor(hx), 0.0), mx);
+    r[3] = (size_t)qc__lesser(qc__greater(floor(hy), 0.0), my);
 }
 
 /* Whether the bounding boxes of ab and cd are strictly apart (then the

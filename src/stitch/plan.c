@@ -63,7 +63,9 @@ static int plan_grow(qc_ctx *ctx, qc_plan *plan, size_t need)
     return QC_OK;
 }
 
-int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
+/* qc_plan_push, static so the stitch loop (build makes the room first, so
+ * it rarely grows) stores without a call per point. */
+static int plan_add(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
 {
     if (plan->n >= plan->cap)
         QC__TRY(plan_grow(ctx, plan, plan->n + 1));
@@ -73,16 +75,9 @@ int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
     return QC_OK;
 }
 
-/* qc_plan_push where build has made the room (it counts the points first):
- * the stitch loop's store, without a call per point. */
-static int plan_add(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
+int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
 {
-    if (plan->n >= plan->cap)
-        return qc_plan_push(ctx, plan, p, flags);
-    plan->p[plan->n] = p;
-    plan->flags[plan->n] = (unsigned char)flags;
-    plan->n++;
-    return QC_OK;
+    return plan_add(ctx, plan, p, flags);
 }
 
 typedef struct resolved {
