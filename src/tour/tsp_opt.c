@@ -18,30 +18,55 @@
  * 400 gave 0.13% above the optima, 100 gave 0.18%, 50 gave 0.21%. */
 #define KICK_MAX_LK 200
 
+/* Swaps the points at positions i .. i+run-1 with those at j, j-1, ...,
+ * j-run+1 (no wrap on either side): size_t indices and two pairs a turn,
+ * so a pair costs 9 instructions where 32-bit indices, extended at each
+ * load, cost 15 (a fifth of the default's instructions are here). */
+static void swap_run(uint32_t *t, uint32_t *pos, size_t i, size_t j, size_t run)
+{
+    size_t end = i + run, sum = i + j;
+
+    for (; i + 1 < end; i += 2) {
+        uint32_t a = t[i], b = t[sum - i], c = t[i + 1], d = t[sum - i - 1];
+
+        t[i] = b;
+        pos[b] = (uint32_t)i;
+        t[sum - i] = a;
+        pos[a] = (uint32_t)(sum - i);
+        t[i + 1] = d;
+        pos[d] = (uint32_t)(i + 1);
+        t[sum - i - 1] = c;
+        pos[c] = (uint32_t)(sum - i - 1);
+    }
+    if (i < end) {
+        uint32_t a = t[i], b = t[sum - i];
+
+        t[i] = b;
+        pos[b] = (uint32_t)i;
+        t[sum - i] = a;
+        pos[a] = (uint32_t)(sum - i);
+    }
+}
+
 /* Reverses positions i, i+1, ..., i+len-1 (cyclic): the pairs in runs
  * where neither end wraps, so the inner loop has no wrap tests (the
  * kicks' re-optimisation spends a fifth of its time here). */
 static void reverse_raw(qc__tsp *s, uint32_t i, uint32_t len)
 {
-    uint32_t *t = s->t, *pos = s->pos;
     uint32_t m = s->m, j = i + len - 1, h = len / 2;
 
     if (j >= m)
         j -= m;
     while (h > 0) {
-        uint32_t run = h, r;
+        uint32_t run = h;
 
         if (run > m - i)
             run = m - i;
         if (run > j + 1)
             run = j + 1;
-        for (r = 0; r < run; r++, i++, j--) {
-            uint32_t a = t[i], b = t[j];
-            t[i] = b;
-            pos[b] = i;
-            t[j] = a;
-            pos[a] = j;
-        }
+        swap_run(s->t, s->pos, i, j, run);
+        i += run;
+        j -= run;
         h -= run;
         if (i == m)
             i = 0;
