@@ -173,6 +173,47 @@ static inline uint32_t qc__tsp_prev(const qc__tsp *s, uint32_t a)
     return s->t[i == 0 ? s->m - 1 : i - 1];
 }
 
+/* The tour's arrays and the points in locals for the searches' inner
+ * loops: they store through pointers the compiler cannot tell apart from
+ * s, so read through s each field was reloaded at every candidate. */
+typedef struct qc__view {
+    const uint32_t *t, *pos;
+    const qc_vec2 *q;
+    uint32_t m;
+    int far; /* qc__tsp_too_far can hold */
+} qc__view;
+
+static inline qc__view qc__view_of(const qc__tsp *s)
+{
+    qc__view v;
+
+    v.t = s->t;
+    v.pos = s->pos;
+    v.q = s->q;
+    v.m = s->m;
+    v.far = s->m / 2 > s->max_reversal;
+    return v;
+}
+
+static inline uint32_t qc__vnext(qc__view v, uint32_t a)
+{
+    uint32_t i = v.pos[a] + 1;
+    return v.t[i == v.m ? 0 : i];
+}
+
+static inline uint32_t qc__vprev(qc__view v, uint32_t a)
+{
+    uint32_t i = v.pos[a];
+    return v.t[i == 0 ? v.m - 1 : i - 1];
+}
+
+/* qc__tsp_dist's arithmetic, the same bits. */
+static inline double qc__vdist(qc__view v, uint32_t a, uint32_t b)
+{
+    double dx = v.q[a].x - v.q[b].x, dy = v.q[a].y - v.q[b].y;
+    return sqrt(dx * dx + dy * dy);
+}
+
 /* Replaces tour edges (a, b) and (c, d), both traversed in the same
  * direction (b follows a as d follows c), by (a, c) and (b, d), reversing
  * the shorter side. QC_OK or QC_ENOMEM (logging only). */

@@ -207,26 +207,28 @@ void qc__tsp_queue_all(qc__tsp *s)
 /* The best 2-opt move removing an edge at a; applies it. 1 if moved. */
 static int try_2opt(qc__tsp *s, uint32_t a, double *delta, int *rc)
 {
+    qc__view v = qc__view_of(s);
     const uint32_t *nb = s->nb + (size_t)a * s->k;
+    const double *nbd = s->nbd ? s->nbd + (size_t)a * s->k : NULL;
     double best = -s->eps;
     uint32_t bb = 0, bc = 0, bd = 0;
-    unsigned j;
+    unsigned j, k = s->k;
     int dir, found = 0;
 
     for (dir = 0; dir < 2; dir++) {
-        uint32_t b = dir ? qc__tsp_prev(s, a) : qc__tsp_next(s, a);
-        double dab = qc__tsp_dist(s, a, b);
+        uint32_t b = dir ? qc__vprev(v, a) : qc__vnext(v, a);
+        double dab = qc__vdist(v, a, b);
 
-        for (j = 0; j < s->k; j++) {
+        for (j = 0; j < k; j++) {
             uint32_t c = nb[j], d;
-            double dac = qc__tsp_cand_dist(s, a, j), g;
+            double dac = nbd ? nbd[j] : qc__vdist(v, a, c), g;
 
             if (dac >= dab)
                 break;
-            d = dir ? qc__tsp_prev(s, c) : qc__tsp_next(s, c);
-            if (c == b || d == a || qc__tsp_too_far(s, a, c))
+            d = dir ? qc__vprev(v, c) : qc__vnext(v, c);
+            if (c == b || d == a || (v.far && qc__tsp_too_far(s, a, c)))
                 continue;
-            g = dac + qc__tsp_dist(s, b, d) - dab - qc__tsp_dist(s, c, d);
+            g = dac + qc__vdist(v, b, d) - dab - qc__vdist(v, c, d);
             if (g < best) {
                 best = g;
                 bb = b, bc = c, bd = d;
@@ -254,9 +256,9 @@ typedef struct or_move {
     double gain;
 } or_move;
 
-static int in_segment(const qc__tsp *s, uint32_t first, uint32_t len, uint32_t c)
+static int in_segment(qc__view v, uint32_t first, uint32_t len, uint32_t c)
 {
-    uint32_t off = s->pos[c] >= first ? s->pos[c] - first : s->pos[c] + s->m - first;
+    uint32_t off = v.pos[c] >= first ? v.pos[c] - first : v.pos[c] + v.m - first;
     return off < len;
 }
 
@@ -264,42 +266,47 @@ static int in_segment(const qc__tsp *s, uint32_t first, uint32_t len, uint32_t c
  * candidates of its ends; keeps the best in *bm. */
 static void or_segment(const qc__tsp *s, uint32_t first, uint32_t len, or_move *bm)
 {
-    uint32_t m = s->m, last = first + len - 1 >= m ? first + len - 1 - m : first + len - 1;
-    uint32_t s1 = s->t[first], s2 = s->t[last];
-    uint32_t p = qc__tsp_prev(s, s1), nx = qc__tsp_next(s, s2);
-    double g1 = qc__tsp_dist(s, p, s1) + qc__tsp_dist(s, s2, nx) - qc__tsp_dist(s, p, nx);
+    qc__view v = qc__view_of(s);
+    uint32_t m = v.m, last = first + len - 1 >= m ? first + len - 1 - m : first + len - 1;
+    uint32_t s1 = v.t[first], s2 = v.t[last];
+    uint32_t p = qc__vprev(v, s1), nx = qc__vnext(v, s2);
+    double g1 = qc__vdist(v, p, s1) + qc__vdist(v, s2, nx) - qc__vdist(v, p, nx);
+    double best = bm->gain;
     int end;
-    unsigned j;
+    unsigned j, k = s->k;
 
     if (g1 <= s->eps)
         return;
     for (end = 0; end < (len > 1 ? 2 : 1); end++) {
         uint32_t e = end ? s2 : s1, o = end ? s1 : s2;
-        const uint32_t *nb = s->nb + (size_t)e * s->k;
+        const uint32_t *nb = s->nb + (size_t)e * k;
+        const double *nbd = s->nbd ? s->nbd + (size_t)e * k : NULL;
 
-        for (j = 0; j < s->k; j++) {
+        for (j = 0; j < k; j++) {
             uint32_t c = nb[j], x;
-            double dce = qc__tsp_cand_dist(s, e, j), g;
+            double dce = nbd ? nbd[j] : qc__vdist(v, e, c), g;
 
             if (dce >= g1)
                 break;
-            if (in_segment(s, first, len, c) || qc__tsp_too_far(s, e, c))
+            if (in_segment(v, first, len, c) || (v.far && qc__tsp_too_far(s, e, c)))
                 continue;
             /* c, e ... o, next(c) */
-            x = qc__tsp_next(s, c);
-            if (!in_segment(s, first, len, x)) {
-                g = dce + qc__tsp_dist(s, o, x) - qc__tsp_dist(s, c, x) - g1;
-                if (g < bm->gain) {
+            x = qc__vnext(v, c);
+            if (!in_segment(v, first, len, x)) {
+                g = dce + qc__vdist(v, o, x) - qc__vdist(v, c, x) - g1;
+                if (g < best) {
+                    best = g;
                     bm->gain = g;
                     bm->first = first, bm->len = len;
                     bm->x = c, bm->y = x, bm->rev = end;
                 }
             }
             /* prev(c), o ... e, c */
-            x = qc__tsp_prev(s, c);
-            if (!in_segment(s, first, len, x)) {
-                g = dce + qc__tsp_dist(s, o, x) - qc__tsp_dist(s, c, x) - g1;
-                if (g < bm->gain) {
+            x = qc__vprev(v, c);
+            if (!in_segment(v, first, len, x)) {
+                g = dce + qc__vdist(v, o, x) - qc__vdist(v, c, x) - g1;
+                if (g < best) {
+                    best = g;
                     bm->gain = g;
                     bm->first = first, bm->len = len;
                     bm->x = x, bm->y = c, bm->rev = !end;

@@ -20,30 +20,30 @@ typedef struct move3 {
 } move3;
 
 /* The point after a walking in direction dir (0: along the array, 1: back). */
-static uint32_t succ(const qc__tsp *s, uint32_t a, int dir)
+static inline uint32_t succ(qc__view v, uint32_t a, int dir)
 {
-    return dir ? qc__tsp_prev(s, a) : qc__tsp_next(s, a);
+    return dir ? qc__vprev(v, a) : qc__vnext(v, a);
 }
 
-static uint32_t pred(const qc__tsp *s, uint32_t a, int dir)
+static inline uint32_t pred(qc__view v, uint32_t a, int dir)
 {
-    return dir ? qc__tsp_next(s, a) : qc__tsp_prev(s, a);
+    return dir ? qc__vnext(v, a) : qc__vprev(v, a);
 }
 
 /* Steps from a to x walking in direction dir. */
-static uint32_t steps(const qc__tsp *s, uint32_t a, uint32_t x, int dir)
+static inline uint32_t steps(qc__view v, uint32_t a, uint32_t x, int dir)
 {
-    uint32_t pa = s->pos[a], px = s->pos[x];
+    uint32_t pa = v.pos[a], px = v.pos[x];
 
     if (dir)
-        return pa >= px ? pa - px : pa + s->m - px;
-    return px >= pa ? px - pa : px + s->m - pa;
+        return pa >= px ? pa - px : pa + v.m - px;
+    return px >= pa ? px - pa : px + v.m - pa;
 }
 
 /* Whether x lies on the path from a to b (both included) walking in dir. */
-static int on_path(const qc__tsp *s, uint32_t a, uint32_t b, uint32_t x, int dir)
+static inline int on_path(qc__view v, uint32_t a, uint32_t b, uint32_t x, int dir)
 {
-    return steps(s, a, x, dir) <= steps(s, a, b, dir);
+    return steps(v, a, x, dir) <= steps(v, a, b, dir);
 }
 
 static void offer(move3 *bm, double gain, int kind, const uint32_t t[7])
@@ -56,78 +56,91 @@ static void offer(move3 *bm, double gain, int kind, const uint32_t t[7])
     bm->t4 = t[4], bm->t5 = t[5], bm->t6 = t[6];
 }
 
+/* Whether a move reversing between a and c costs too much (v.far: the
+ * tour is long enough for it to). */
+static inline int too_far(const qc__tsp *s, qc__view v, uint32_t a, uint32_t c)
+{
+    return v.far && qc__tsp_too_far(s, a, c);
+}
+
 /* The third exchange: t5 among t4's candidates, t6 beside it. g2 is the
  * gain so far with (t4, t5) not yet added; side 0 when t4 = succ(t3). */
-static void close_3opt(const qc__tsp *s, uint32_t t[7], double g2, int side, int dir,
-                       move3 *bm)
+static void close_3opt(const qc__tsp *s, qc__view v, uint32_t t[7], double g2, int side,
+                       int dir, move3 *bm)
 {
     const uint32_t *nb = s->nb + (size_t)t[4] * s->k;
-    unsigned j;
+    const double *nbd = s->nbd + (size_t)t[4] * s->k;
+    unsigned j, k = s->k;
+    double eps = s->eps;
 
-    for (j = 0; j < s->k; j++) {
-        double g = g2 - qc__tsp_cand_dist(s, t[4], j);
-        int k;
+    for (j = 0; j < k; j++) {
+        double g = g2 - nbd[j];
+        int h;
 
-        if (g <= s->eps)
+        if (g <= eps)
             break;
         t[5] = nb[j];
         if (t[5] == t[1] || (side == 1 && t[5] == t[3]))
             continue;
         if (side == 0) { /* t5 must lie on t2 .. t3: both ways round */
-            if (!on_path(s, t[2], t[3], t[5], dir))
+            if (!on_path(v, t[2], t[3], t[5], dir))
                 continue;
-            for (k = 0; k < 2; k++) {
-                if (k == 0 && t[5] == t[3])
+            for (h = 0; h < 2; h++) {
+                if (h == 0 && t[5] == t[3])
                     continue;
-                if (k == 1 && t[5] == t[2])
+                if (h == 1 && t[5] == t[2])
                     continue;
-                t[6] = k == 0 ? succ(s, t[5], dir) : pred(s, t[5], dir);
-                if (qc__tsp_too_far(s, t[3], t[6]) || qc__tsp_too_far(s, t[2], t[5]))
+                t[6] = h == 0 ? succ(v, t[5], dir) : pred(v, t[5], dir);
+                if (too_far(s, v, t[3], t[6]) || too_far(s, v, t[2], t[5]))
                     continue;
-                offer(bm, qc__tsp_dist(s, t[6], t[1]) - g - qc__tsp_dist(s, t[5], t[6]),
-                      k == 0 ? KIND_SWAP : KIND_BOTH_REVERSED, t);
+                offer(bm, qc__vdist(v, t[6], t[1]) - g - qc__vdist(v, t[5], t[6]),
+                      h == 0 ? KIND_SWAP : KIND_BOTH_REVERSED, t);
             }
         } else { /* t5 on t2 .. t4 takes its successor, beyond t3 its predecessor */
-            t[6] = on_path(s, t[2], t[4], t[5], dir) ? succ(s, t[5], dir) : pred(s, t[5], dir);
-            if (qc__tsp_too_far(s, t[4], t[6]))
+            t[6] = on_path(v, t[2], t[4], t[5], dir) ? succ(v, t[5], dir) : pred(v, t[5], dir);
+            if (too_far(s, v, t[4], t[6]))
                 continue;
-            offer(bm, qc__tsp_dist(s, t[6], t[1]) - g - qc__tsp_dist(s, t[5], t[6]),
+            offer(bm, qc__vdist(v, t[6], t[1]) - g - qc__vdist(v, t[5], t[6]),
                   KIND_TWO_2OPT, t);
         }
     }
 }
 
+/* The candidates' distances come from nbd, which Or-3opt always fills. */
 static void search(const qc__tsp *s, uint32_t a, int dir, move3 *bm)
 {
+    qc__view v = qc__view_of(s);
     uint32_t t[7];
     const uint32_t *nb;
-    double d12;
-    unsigned j;
+    const double *nbd;
+    double d12, eps = s->eps;
+    unsigned j, k = s->k;
     int side;
 
     t[0] = 0;
     t[1] = a;
-    t[2] = succ(s, a, dir);
-    d12 = qc__tsp_dist(s, t[1], t[2]);
-    nb = s->nb + (size_t)t[2] * s->k;
-    for (j = 0; j < s->k; j++) {
-        double g1 = d12 - qc__tsp_cand_dist(s, t[2], j);
+    t[2] = succ(v, a, dir);
+    d12 = qc__vdist(v, t[1], t[2]);
+    nb = s->nb + (size_t)t[2] * k;
+    nbd = s->nbd + (size_t)t[2] * k;
+    for (j = 0; j < k; j++) {
+        double g1 = d12 - nbd[j];
 
-        if (g1 <= s->eps)
+        if (g1 <= eps)
             break;
         t[3] = nb[j];
-        if (t[3] == t[1] || qc__tsp_too_far(s, t[2], t[3]))
+        if (t[3] == t[1] || too_far(s, v, t[2], t[3]))
             continue;
         for (side = 0; side < 2; side++) {
             double d34;
 
-            t[4] = side ? pred(s, t[3], dir) : succ(s, t[3], dir);
+            t[4] = side ? pred(v, t[3], dir) : succ(v, t[3], dir);
             if (t[4] == (side ? t[2] : t[1]))
                 continue;
-            d34 = qc__tsp_dist(s, t[3], t[4]);
+            d34 = qc__vdist(v, t[3], t[4]);
             if (side == 1) /* closing (t4, t1) here is a 2-opt move */
-                offer(bm, qc__tsp_dist(s, t[4], t[1]) - g1 - d34, KIND_2OPT, t);
-            close_3opt(s, t, g1 + d34, side, dir, bm);
+                offer(bm, qc__vdist(v, t[4], t[1]) - g1 - d34, KIND_2OPT, t);
+            close_3opt(s, v, t, g1 + d34, side, dir, bm);
         }
     }
 }
