@@ -86,13 +86,14 @@ static void reverse_raw(qc__tsp *s, uint32_t i, uint32_t len)
 static void rotate_raw(qc__tsp *s, uint32_t i, uint32_t l1, uint32_t l2)
 {
     uint32_t *t = s->t, *pos = s->pos, m = s->m, tmp[KICK_MAX_LK], r, at;
+    size_t k;
 
     if (i + l1 + l2 <= m) { /* no wrap: three copies */
         memcpy(tmp, t + i, l1 * sizeof *t);
         memmove(t + i, t + i + l1, l2 * sizeof *t);
         memcpy(t + i + l2, tmp, l1 * sizeof *t);
-        for (r = i; r < i + l1 + l2; r++)
-            pos[t[r]] = r;
+        for (k = i; k < (size_t)i + l1 + l2; k++) /* size_t: no extension per point */
+            pos[t[k]] = (uint32_t)k;
         return;
     }
     for (r = 0, at = i; r < l1; r++, at = at + 1 == m ? 0 : at + 1)
