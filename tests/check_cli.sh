@@ -124,6 +124,16 @@ assert s["length_mm"] < 7542 * 1.02, s["length_mm"]
 }
 check tsplib_berlin52_tour_near_optimal tsplib_tour
 
+# a280's default tour (greedy, 2-opt, Or-opt, Or-3opt, its kicks), byte for
+# byte: speed work on src/tour/ must keep the tours (docs/performance.md,
+# "Tours"); a change meant to alter them regenerates the file with this
+# command and says why.
+tour_golden() {
+    "$QC" skeleton --points "$ROOT/tests/data/tsplib/a280.tsp" --units mm --region rect:400x400 \
+        --path tsp -o - | cmp - "$ROOT/tests/golden/tour-a280.json"
+}
+check tsp_tour_matches_golden tour_golden
+
 motif_library() {
     [ "$("$QC" motifs | wc -l)" -ge 16 ] && "$QC" motifs | grep -q '^loop60 .*two legs' &&
         "$QC" motifs --svg leaf -o leaf.svg && grep -q '<path' leaf.svg &&
