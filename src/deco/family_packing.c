@@ -474,7 +474,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     qc__pebbles pb;
     qc_motif_set def = {0};
     qc_path raw = {0};
-    uint32_t *first = NULL, *kfirst = NULL, *kids = NULL;
+    uint32_t *first = NULL;
     att *atts = NULL;
     double d = params->spacing, a0 = 0;
     size_t n = 0;
@@ -500,10 +500,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     n = pb.n;
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
-        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0, NULL);
-    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
-    qc__free(ctx, kids, n * sizeof *kids);
-    kfirst = kids = NULL;
+        rc = qc__pebbles_start_angle(ctx, &pb, &a0);
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)

@@ -106,6 +106,9 @@ QC__HIDDEN void qc__pebbles_group_starts(const qc__pebbles *pb, uint32_t *first)
 QC__HIDDEN int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first,
                                     uint32_t **kids, double *start_angle,
                                     double **angle_out);
+/* Only *start_angle of qc__pebbles_children (the same bits): from the
+ * root's children alone. */
+QC__HIDDEN int qc__pebbles_start_angle(qc_ctx *ctx, const qc__pebbles *pb, double *start_angle);
 
 
 /* Radius min/mean/max, count, pebbles touching fewer than three, coverage. */
