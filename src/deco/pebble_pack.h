@@ -18,6 +18,14 @@ typedef struct qc__pnode {
     uint32_t cell;
 } qc__pnode;
 
+/* pair_centre's terms for one pair of pebbles (shared_pebble_pack.c). */
+typedef struct qc__pair_frame {
+    uint32_t j, k;
+    int valid;
+    qc_vec2 cj, e;
+    double rj, rk, D;
+} qc__pair_frame;
+
 typedef struct qc__pack {
     qc_ctx *ctx;
     qc__pbound *b;
@@ -28,6 +36,7 @@ typedef struct qc__pack {
     qc__pnode *node;   /* per pebble */
     double rmax;       /* largest radius so far */
     double d;
+    qc__pair_frame pair;
 } qc__pack;
 
 /* A pebble (c, r) hanging from parent (stands for no skeleton point);

@@ -135,6 +135,7 @@ static uint32_t place(pack *P, qc_vec2 c, double r, uint32_t parent, uint32_t no
 static void move_to(pack *P, uint32_t i, qc_vec2 c, double r)
 {
     grid_remove(P, i);
+    P->pair.valid = 0;
     P->pb->c[i] = c;
     P->pb->r[i] = r;
     if (r > P->rmax)
@@ -545,23 +546,38 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
     return count;
 }
 
-/* The centre tangent to pebbles j and k at radius R on side s, or 0. */
-static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, double s,
-                       qc_vec2 *out)
+/* The centre tangent to pebbles j and k at radius R on side s, or 0. What
+ * depends on j and k alone (their distance, the unit vector from j to k)
+ * is kept for the next call with the same pair (a growth asks for dozens
+ * of radii); move_to forgets it. */
+static int pair_centre(pack *P, uint32_t j, uint32_t k, double R, double s, qc_vec2 *out)
 {
-    qc_vec2 cj = pb->c[j], ck = pb->c[k];
-    double D = dist(cj, ck), a = pb->r[j] + R, b = pb->r[k] + R, along, h2;
-    qc_vec2 e;
+    qc__pair_frame *F = &P->pair;
+    double a, b, along, h2;
 
-    if (!(D > 0))
+    if (!F->valid || F->j != j || F->k != k) {
+        const qc__pebbles *pb = P->pb;
+        qc_vec2 cj = pb->c[j], ck = pb->c[k];
+        F->j = j;
+        F->k = k;
+        F->valid = 1;
+        F->cj = cj;
+        F->rj = pb->r[j];
+        F->rk = pb->r[k];
+        F->D = dist(cj, ck);
+        if (F->D > 0)
+            F->e = QC__V2((ck.x - cj.x) / F->D, (ck.y - cj.y) / F->D);
+    }
+    if (!(F->D > 0))
         return 0;
-    e = QC__V2((ck.x - cj.x) / D, (ck.y - cj.y) / D);
-    along = (D * D + a * a - b * b) / (2 * D);
+    a = F->rj + R;
+    b = F->rk + R;
+    along = (F->D * F->D + a * a - b * b) / (2 * F->D);
     h2 = a * a - along * along;
     if (h2 < 0)
         return 0;
     h2 = sqrt(h2) * s;
-    *out = QC__V2(cj.x + e.x * along - e.y * h2, cj.y + e.y * along + e.x * h2);
+    *out = QC__V2(F->cj.x + F->e.x * along - F->e.y * h2, F->cj.y + F->e.y * along + F->e.x * h2);
     return 1;
 }
 
@@ -613,7 +629,7 @@ static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k,
     const qc__pebbles *pb = P->pb;
     size_t m;
 
-    if (!pair_centre(pb, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
+    if (!pair_centre(P, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
         return 0;
     if (!pn->all)
         return clearance_to(P, *at, R, R, i, j, k, NULL) >= R;
@@ -712,11 +728,11 @@ static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, 
     qc_vec2 x;
     int it;
 
-    if (pair_centre(pb, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+    if (pair_centre(P, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
         return hi;
     for (it = 0; it < 40; it++) {
         double mid = 0.5 * (lo + hi);
-        if (pair_centre(pb, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+        if (pair_centre(P, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
             lo = mid;
         else
             hi = mid;
@@ -815,7 +831,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
 
     while (lo < pb->r_grow) {
         hi = fmin(lo + step, pb->r_grow);
-        if (!pair_centre(pb, j, k, hi, s, &xhi))
+        if (!pair_centre(P, j, k, hi, s, &xhi))
             break;
         if (dist(xhi, xlo) > 0.5 * pb->r_min && step > span * 1e-6) {
             step /= 2; /* small moves: no pebble is jumped over */
@@ -867,7 +883,7 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
 
         if (R != reach_R) {
             reach = MOVE_MAX * P->d;
-            if (pair_centre(pb, j, k, R, s, &x))
+            if (pair_centre(P, j, k, R, s, &x))
                 reach = fmin(reach, dist(x, ci));
             reach += R; /* no pebble farther than this from ci is met */
             reach_R = R;
@@ -919,7 +935,7 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
     if (R >= 0) {
         R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
-        done = pair_centre(pb, j, k, R, s, &x) &&
+        done = pair_centre(P, j, k, R, s, &x) &&
                clearance_to(P, x, R, R * (1 - 1e-12), i, j, k, NULL) >= R * (1 - 1e-12);
     }
     if (!done)
