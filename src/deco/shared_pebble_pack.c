@@ -532,7 +532,8 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
 
     cell_box(P, x, ri + P->rmax + pb->touch, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
-        double dx = x.x - P->node[j].c.x, dy = x.y - P->node[j].c.y, far = ri + P->node[j].r + pb->touch;
+        double dx = x.x - P->node[j].c.x, dy = x.y - P->node[j].c.y;
+        double far = ri + P->node[j].r + pb->touch;
         if (dx * dx + dy * dy > far * far || j == i)
             continue;
         if (count < 3)
