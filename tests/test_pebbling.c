@@ -674,6 +674,68 @@ static void pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedu
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* Packing keeps only the root's starting angle: qc__pebbles_start_angle,
+ * from the root's children alone, gives the bits qc__pebbles_children
+ * gives after keying and sorting every pebble's children (a root with many
+ * children, with one, and with none); an allocation failure is reported. */
+static void pebbles_start_angle_should_match_the_children_walk(void)
+{
+    const int regions[] = {R_SQUARE, R_HOLE, R_STAR, R_TRIANGLE};
+    const int lattices[] = {L_SQUARE, L_TRIANGLE, L_JITTER};
+    size_t k, l, checked = 0;
+
+    for (k = 0; k < sizeof regions / sizeof *regions; k++)
+        for (l = 0; l < sizeof lattices / sizeof *lattices; l++) {
+            qc_region r;
+            tskel t;
+            qc_skeleton sk;
+            qc_params par = base_params(8, l == 1 ? 0.5 : 0.7, QC_EDGE_STRICT);
+            qc__pebbles pb;
+            qc_path out = {0};
+            uint32_t *first = NULL, *kids = NULL;
+            double a0 = 0, b0 = 1, c0;
+            size_t n, saved;
+
+            make_region(regions[k], &r);
+            make_skeleton(&r, 8, lattices[l], 5 + k, &t);
+            sk = as_skel(&t);
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbling_run(&ctx, &r, &par, &sk, &out, NULL, &pb));
+            n = pb.n;
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbles_children(&ctx, &pb, &first, &kids, &a0,
+                                                               NULL));
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbles_start_angle(&ctx, &pb, &b0));
+            TEST_ASSERT_TRUE(memcmp(&a0, &b0, sizeof a0) == 0);
+            TEST_ASSERT_TRUE(first[1] - first[0] >= 1);
+            checked++;
+            /* the root with a single child, then with none */
+            saved = pb.n;
+            if (saved >= 2 && pb.parent[1] == 0) { /* pebble 1 hangs from the root */
+                pb.n = 2;
+                uint32_t *f2 = NULL, *k2 = NULL;
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbles_children(&ctx, &pb, &f2, &k2, &a0, NULL));
+                TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbles_start_angle(&ctx, &pb, &b0));
+                TEST_ASSERT_TRUE(memcmp(&a0, &b0, sizeof a0) == 0);
+                qc__free(&ctx, f2, 3 * sizeof *f2);
+                qc__free(&ctx, k2, 2 * sizeof *k2);
+            }
+            pb.n = 1;
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__pebbles_start_angle(&ctx, &pb, &c0));
+            TEST_ASSERT_EQUAL_DOUBLE(-QC_PI / 2, c0);
+            pb.n = saved;
+            ta.fail_at = ta.allocs + 1;
+            TEST_ASSERT_EQUAL_INT(QC_ENOMEM, qc__pebbles_start_angle(&ctx, &pb, &c0));
+            ta.fail_at = 0;
+            qc__free(&ctx, first, (n + 1) * sizeof *first);
+            qc__free(&ctx, kids, n * sizeof *kids);
+            qc__pebbles_free(&ctx, &pb);
+            qc_path_free(&ctx, &out);
+            free_skeleton(&t);
+            qc_region_free(&ctx, &r);
+        }
+    TEST_ASSERT_EQUAL_UINT(12, checked);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* The arcs take sine and cosine from one reduction (qc__sincos): the very
  * bits qc_sin and qc_cos give, in every quadrant, at the quadrant edges,
  * for a negative zero, far out, and NaN for what is not finite. */
@@ -716,5 +778,6 @@ int main(void)
     RUN_TEST(pebbling_should_free_everything_when_allocation_fails);
     RUN_TEST(pebbling_and_packing_should_draw_the_same_bytes_as_before_the_speedups);
     RUN_TEST(sincos_should_give_the_bits_of_sin_and_cos);
+    RUN_TEST(pebbles_start_angle_should_match_the_children_walk);
     return UNITY_END();
 }

@@ -352,7 +352,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
     if (rc == QC_OK) {
         start_frame(&st[0], 0, first[0], &set->m[pb->motif[0]], e0);
         sp = 1;
-        rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, e0) : qc_path_line_to(ctx, out, e0);
+        rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, e0) : qc__peb_line(ctx, out, e0);
     }
     while (rc == QC_OK && sp > 0) {
         frame *f = &st[sp - 1];
@@ -362,10 +362,10 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
         if (f->cmd >= m->path.ncmd) { /* done: an open motif comes back to its start */
             qc_vec2 entry = qc__xf_apply(xf, m->entry), back = f->back;
             if (m->legs != 0 || m->exit.x != m->entry.x || m->exit.y != m->entry.y)
-                rc = qc_path_line_to(ctx, out, entry);
+                rc = qc__peb_line(ctx, out, entry);
             sp--;
             if (rc == QC_OK && sp > 0)
-                rc = qc_path_line_to(ctx, out, back);
+                rc = qc__peb_line(ctx, out, back);
             continue;
         }
         cubic = m->path.cmd[f->cmd] == QC_PATH_CUBIC;
@@ -389,20 +389,20 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
                     qc_vec2 l[4], r[4];
                     int z;
                     qc_cubic_split(f->seg, tl, l, r);
-                    rc = qc_path_cubic_to(ctx, out, l[1], l[2], l[3]);
+                    rc = qc__peb_cubic(ctx, out, l[1], l[2], l[3]);
                     for (z = 0; z < 4; z++)
                         f->seg[z] = r[z];
                 } else {
                     f->seg[0].x += tl * (f->seg[1].x - f->seg[0].x);
                     f->seg[0].y += tl * (f->seg[1].y - f->seg[0].y);
-                    rc = qc_path_line_to(ctx, out, f->seg[0]);
+                    rc = qc__peb_line(ctx, out, f->seg[0]);
                 }
                 f->t0 = t;
             }
             q = qc_path_last(out);
             ek = qc__xf_apply(&pb->xf[a->kid], set->m[pb->motif[a->kid]].entry);
             if (rc == QC_OK)
-                rc = qc_path_line_to(ctx, out, ek);
+                rc = qc__peb_line(ctx, out, ek);
             if (rc == QC_OK)
                 rc = QC__RESERVE(ctx, st, cap, sp + 1);
             if (rc == QC_OK) {
@@ -412,8 +412,8 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, const qc_motif_set *set,
             continue;
         }
         if (f->t0 < 1 - 1e-12)
-            rc = cubic ? qc_path_cubic_to(ctx, out, f->seg[1], f->seg[2], f->seg[3])
-                       : qc_path_line_to(ctx, out, f->seg[1]);
+            rc = cubic ? qc__peb_cubic(ctx, out, f->seg[1], f->seg[2], f->seg[3])
+                       : qc__peb_line(ctx, out, f->seg[1]);
         f->pt += (uint32_t)qc_path_cmd_points(m->path.cmd[f->cmd]);
         f->cmd++;
         f->loaded = 0;
@@ -474,7 +474,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     qc__pebbles pb;
     qc_motif_set def = {0};
     qc_path raw = {0};
-    uint32_t *first = NULL, *kfirst = NULL, *kids = NULL;
+    uint32_t *first = NULL;
     att *atts = NULL;
     double d = params->spacing, a0 = 0;
     size_t n = 0;
@@ -500,10 +500,7 @@ int qc__packing_run(qc_ctx *ctx, const qc_region *region, const qc_params *param
     n = pb.n;
     pb.draw_in = fmin(DRAW_IN, DRAW_IN_D * d);
     if (rc == QC_OK) /* the root's motif faces the middle of its widest gap */
-        rc = qc__pebbles_children(ctx, &pb, &kfirst, &kids, &a0, NULL);
-    qc__free(ctx, kfirst, (n + 1) * sizeof *kfirst); /* only a0 is kept */
-    qc__free(ctx, kids, n * sizeof *kids);
-    kfirst = kids = NULL;
+        rc = qc__pebbles_start_angle(ctx, &pb, &a0);
     if (rc == QC_OK)
         rc = place_motifs(ctx, &pb, motifs, params->seed, a0, pb.draw_in);
     if (rc == QC_OK)

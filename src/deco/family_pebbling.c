@@ -46,7 +46,7 @@ static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double 
     double th, k, s1, c1, sq, cq;
 
     if (!(sweep > 1e-12))
-        return end != NULL ? qc_path_line_to(ctx, out, *end) : QC_OK;
+        return end != NULL ? qc__peb_line(ctx, out, *end) : QC_OK;
     if (m < 1)
         m = 1;
     th = sweep / m;
@@ -74,7 +74,7 @@ static int arc(qc_ctx *ctx, qc_path *out, qc_vec2 c, double r, double a, double 
         p1.y = p0.y + k * c0;
         p2.x = p3.x + k * s1;
         p2.y = p3.y - k * c1;
-        QC__TRY(qc_path_cubic_to(ctx, out, p1, p2, p3));
+        QC__TRY(qc__peb_cubic(ctx, out, p1, p2, p3));
         t->a = a1;
         t->s = s1;
         t->c = c1;
@@ -128,7 +128,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
         st[0].t.a = HUGE_VAL;
         sp = 1;
         rc = out->ncmd == 0 ? qc_path_move_to(ctx, out, st[0].start)
-                            : qc_path_line_to(ctx, out, st[0].start);
+                            : qc__peb_line(ctx, out, st[0].start);
     }
     while (rc == QC_OK && sp > 0) {
         frame *f = &st[sp - 1];
@@ -146,7 +146,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
              * stitches cannot cross); a bridged one at the end of its stitch */
             if (rc == QC_OK && (pb->flags[c] & QC__PEB_BRIDGE)) {
                 tc = on_circle(pb->c[c], pb->r[c] - eps, phi + QC_PI);
-                rc = qc_path_line_to(ctx, out, tc);
+                rc = qc__peb_line(ctx, out, tc);
             }
             if (rc == QC_OK)
                 rc = QC__RESERVE(ctx, st, cap, sp + 1);
@@ -166,7 +166,7 @@ static int render(qc_ctx *ctx, const qc__pebbles *pb, double eps, qc_path *out)
                      &f->t);
             sp--;
             if (rc == QC_OK && sp > 0 && (back.x != start.x || back.y != start.y))
-                rc = qc_path_line_to(ctx, out, back);
+                rc = qc__peb_line(ctx, out, back);
         }
     }
     qc__free(ctx, st, cap * sizeof *st);

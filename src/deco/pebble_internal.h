@@ -7,6 +7,34 @@
 
 #include "deco_internal.h"
 
+/* qc_path_line_to and qc_path_cubic_to, stored in place while the room
+ * reserved for the whole drawing lasts (the calls, their reserve checks
+ * and their memcpy were a tenth of a rendering); the calls once it is
+ * short. The same path either way. */
+static inline int qc__peb_line(qc_ctx *ctx, qc_path *out, qc_vec2 p)
+{
+    if (out->ncmd < out->cmd_cap && out->npt < out->pt_cap) {
+        out->cmd[out->ncmd++] = QC_PATH_LINE;
+        out->pt[out->npt++] = p;
+        return QC_OK;
+    }
+    return qc_path_line_to(ctx, out, p);
+}
+
+static inline int qc__peb_cubic(qc_ctx *ctx, qc_path *out, qc_vec2 c1, qc_vec2 c2, qc_vec2 p)
+{
+    if (out->ncmd < out->cmd_cap && out->pt_cap - out->npt >= 3) {
+        qc_vec2 *q = out->pt + out->npt;
+        out->cmd[out->ncmd++] = QC_PATH_CUBIC;
+        q[0] = c1;
+        q[1] = c2;
+        q[2] = p;
+        out->npt += 3;
+        return QC_OK;
+    }
+    return qc_path_cubic_to(ctx, out, c1, c2, p);
+}
+
 /* ---- the region's boundary edges, binned (shared_pebble_bound.c) ---- */
 
 typedef struct qc__pbound {
@@ -106,6 +134,9 @@ QC__HIDDEN void qc__pebbles_group_starts(const qc__pebbles *pb, uint32_t *first)
 QC__HIDDEN int qc__pebbles_children(qc_ctx *ctx, const qc__pebbles *pb, uint32_t **first,
                                     uint32_t **kids, double *start_angle,
                                     double **angle_out);
+/* Only *start_angle of qc__pebbles_children (the same bits): from the
+ * root's children alone. */
+QC__HIDDEN int qc__pebbles_start_angle(qc_ctx *ctx, const qc__pebbles *pb, double *start_angle);
 
 
 /* Radius min/mean/max, count, pebbles touching fewer than three, coverage. */

@@ -8,6 +8,24 @@
 
 #include "pebble_internal.h"
 
+/* A pebble as the grid walks see it: its centre and radius (copies of
+ * pb->c and pb->r) beside its link, so a neighbour costs one cache line,
+ * not three (c, r and the link apart). */
+typedef struct qc__pnode {
+    qc_vec2 c;
+    double r;
+    uint32_t next;     /* the next pebble in its cell, QC__PEB_NONE at the end */
+    uint32_t cell;
+} qc__pnode;
+
+/* pair_centre's terms for one pair of pebbles (shared_pebble_pack.c). */
+typedef struct qc__pair_frame {
+    uint32_t j, k;
+    int valid;
+    qc_vec2 cj, e;
+    double rj, rk, D;
+} qc__pair_frame;
+
 typedef struct qc__pack {
     qc_ctx *ctx;
     qc__pbound *b;
@@ -15,9 +33,10 @@ typedef struct qc__pack {
     double x0, y0, h;  /* the pebble grid */
     uint32_t nx, ny;
     uint32_t *head;
-    uint32_t *next, *cellof; /* per pebble */
+    qc__pnode *node;   /* per pebble */
     double rmax;       /* largest radius so far */
     double d;
+    qc__pair_frame pair;
 } qc__pack;
 
 /* A pebble (c, r) hanging from parent (stands for no skeleton point);

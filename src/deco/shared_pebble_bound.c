@@ -83,13 +83,32 @@ typedef struct walk {
     uint32_t r[4], x, y, e;
 } walk;
 
-static void walk_start(qc__cgrid *g, walk *w, double x0, double y0, double x1, double y1)
+/* The walk over the cells w->r, set already. */
+static void walk_begin(qc__cgrid *g, walk *w)
 {
-    cell_range(g, x0, y0, x1, y1, w->r);
     w->x = w->r[0];
     w->y = w->r[1];
     w->e = g->head[(size_t)w->y * g->nx + w->x];
     new_stamp(g);
+}
+
+static void walk_start(qc__cgrid *g, walk *w, double x0, double y0, double x1, double y1)
+{
+    cell_range(g, x0, y0, x1, y1, w->r);
+    walk_begin(g, w);
+}
+
+/* Whether no edge is filed under the cells r (most of a packing's
+ * queries, away from the boundary: answered without a walk). */
+static int cells_empty(const qc__cgrid *g, const uint32_t r[4])
+{
+    uint32_t x, y;
+
+    for (y = r[1]; y <= r[3]; y++)
+        for (x = r[0]; x <= r[2]; x++)
+            if (g->head[(size_t)y * g->nx + x] != UINT32_MAX)
+                return 0;
+    return 1;
 }
 
 static uint32_t walk_next(qc__cgrid *g, walk *w)
@@ -124,7 +143,10 @@ double qc__pbound_dist(qc__pbound *b, qc_vec2 x, double reach)
 
     if (g->nitem == 0)
         return reach;
-    walk_start(g, &w, x.x - reach, x.y - reach, x.x + reach, x.y + reach);
+    cell_range(g, x.x - reach, x.y - reach, x.x + reach, x.y + reach, w.r);
+    if (cells_empty(g, w.r))
+        return reach;
+    walk_begin(g, &w);
     while ((it = walk_next(g, &w)) != UINT32_MAX) {
         const qc_vec2 *v = g->v + g->item[it].off;
         double d2 = qc__seg_dist2(x, v[0], v[1]);

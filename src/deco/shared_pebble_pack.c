@@ -82,7 +82,7 @@ static void cell_box(const pack *P, qc_vec2 x, double reach, uint32_t r[4])
     for ((cy) = (r)[1]; (cy) <= (r)[3]; (cy)++)                                              \
         for ((cx) = (r)[0]; (cx) <= (r)[2]; (cx)++)                                          \
             for ((j) = (keep) ? (P)->head[(cy) * (P)->nx + (cx)] : QC__PEB_NONE;             \
-                 (j) != QC__PEB_NONE; (j) = (P)->next[j])
+                 (j) != QC__PEB_NONE; (j) = (P)->node[j].next)
 #define FOR_EACH_PEBBLE(P, r, cx, cy, j) FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, 1)
 
 /* The block of cells within ring cells of (c0x, c0y), clamped to the grid. */
@@ -98,18 +98,20 @@ static void grid_insert(pack *P, uint32_t i)
 {
     uint32_t c = cell_of(P, P->pb->c[i]);
 
-    P->cellof[i] = c;
-    P->next[i] = P->head[c];
+    P->node[i].c = P->pb->c[i];
+    P->node[i].r = P->pb->r[i];
+    P->node[i].cell = c;
+    P->node[i].next = P->head[c];
     P->head[c] = i;
 }
 
 static void grid_remove(pack *P, uint32_t i)
 {
-    uint32_t *at = &P->head[P->cellof[i]];
+    uint32_t *at = &P->head[P->node[i].cell];
 
     while (*at != i)
-        at = &P->next[*at];
-    *at = P->next[i];
+        at = &P->node[*at].next;
+    *at = P->node[i].next;
 }
 
 static uint32_t place(pack *P, qc_vec2 c, double r, uint32_t parent, uint32_t node,
@@ -133,6 +135,7 @@ static uint32_t place(pack *P, qc_vec2 c, double r, uint32_t parent, uint32_t no
 static void move_to(pack *P, uint32_t i, qc_vec2 c, double r)
 {
     grid_remove(P, i);
+    P->pair.valid = 0;
     P->pb->c[i] = c;
     P->pb->r[i] = r;
     if (r > P->rmax)
@@ -160,10 +163,10 @@ static double clearance_to(pack *P, qc_vec2 x, double cap, double stop, uint32_t
 
     cell_box(P, x, cap + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
-        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = best + pb->r[j], v;
+        double dx = x.x - P->node[j].c.x, dy = x.y - P->node[j].c.y, far = best + P->node[j].r, v;
         if ((far > 0 && dx * dx + dy * dy >= far * far) || j == ex0 || j == ex1 || j == ex2)
             continue;
-        v = sqrt(dx * dx + dy * dy) - pb->r[j];
+        v = sqrt(dx * dx + dy * dy) - P->node[j].r;
         if (v < best) {
             best = v;
             a = j;
@@ -207,9 +210,9 @@ static double ray(pack *P, qc_vec2 x0, double r0, qc_vec2 u, double cap, uint32_
         double ax, ay, bq, num, den;
         if (j == ex0 || j == ex1)
             continue;
-        ax = x0.x - pb->c[j].x;
-        ay = x0.y - pb->c[j].y;
-        bq = pb->r[j] + r0;
+        ax = x0.x - P->node[j].c.x;
+        ay = x0.y - P->node[j].c.y;
+        bq = P->node[j].r + r0;
         num = ax * ax + ay * ay - bq * bq;
         den = bq - (ax * u.x + ay * u.y);
         if (num <= 0)
@@ -229,7 +232,6 @@ static int same_side(pack *P, qc_vec2 p, qc_vec2 q)
 /* The pebble whose edge is nearest x (growing square searches). */
 static uint32_t nearest(pack *P, qc_vec2 x)
 {
-    const qc__pebbles *pb = P->pb;
     double reach = P->h, best = HUGE_VAL;
     uint32_t a = QC__PEB_NONE;
 
@@ -238,7 +240,7 @@ static uint32_t nearest(pack *P, qc_vec2 x)
         uint32_t r[4], cx, cy;
         cell_box(P, x, reach, r);
         FOR_EACH_PEBBLE(P, r, cx, cy, j) {
-            double v = dist(x, pb->c[j]) - pb->r[j];
+            double v = dist(x, P->node[j].c) - P->node[j].r;
             if (v < best || (v == best && j < a)) {
                 best = v;
                 a = j;
@@ -263,7 +265,6 @@ static qc_vec2 unit_from(qc_vec2 a, qc_vec2 b)
 /* Up to NEAR pebbles whose edges lie within reach of x, nearest first. */
 static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
 {
-    const qc__pebbles *pb = P->pb;
     double g[NEAR];
     uint32_t j;
     size_t n = 0;
@@ -271,7 +272,7 @@ static size_t nearest_few(pack *P, qc_vec2 x, double reach, uint32_t *out)
 
     cell_box(P, x, reach + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
-        double v = dist(x, pb->c[j]) - pb->r[j];
+        double v = dist(x, P->node[j].c) - P->node[j].r;
         size_t k;
         if (v > reach || (n == NEAR && v >= g[NEAR - 1]))
             continue;
@@ -313,11 +314,11 @@ static int bridge_clear(pack *P, qc_vec2 x, double c, uint32_t b)
         double t, dx, dy;
         if (j == b)
             continue;
-        t = l2 > 0 ? ((pb->c[j].x - p.x) * ex + (pb->c[j].y - p.y) * ey) / l2 : 0;
+        t = l2 > 0 ? ((P->node[j].c.x - p.x) * ex + (P->node[j].c.y - p.y) * ey) / l2 : 0;
         t = t < 0 ? 0 : t > 1 ? 1 : t;
-        dx = p.x + t * ex - pb->c[j].x;
-        dy = p.y + t * ey - pb->c[j].y;
-        if (dx * dx + dy * dy < pb->r[j] * pb->r[j] * (1 - 1e-9))
+        dx = p.x + t * ex - P->node[j].c.x;
+        dy = p.y + t * ey - P->node[j].c.y;
+        if (dx * dx + dy * dy < P->node[j].r * P->node[j].r * (1 - 1e-9))
             return 0;
     }
     return 1;
@@ -531,7 +532,8 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
 
     cell_box(P, x, ri + P->rmax + pb->touch, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, j) {
-        double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y, far = ri + pb->r[j] + pb->touch;
+        double dx = x.x - P->node[j].c.x, dy = x.y - P->node[j].c.y;
+        double far = ri + P->node[j].r + pb->touch;
         if (dx * dx + dy * dy > far * far || j == i)
             continue;
         if (count < 3)
@@ -545,23 +547,38 @@ static unsigned contacts(pack *P, uint32_t i, uint32_t ids[3], int *bound, unsig
     return count;
 }
 
-/* The centre tangent to pebbles j and k at radius R on side s, or 0. */
-static int pair_centre(const qc__pebbles *pb, uint32_t j, uint32_t k, double R, double s,
-                       qc_vec2 *out)
+/* The centre tangent to pebbles j and k at radius R on side s, or 0. What
+ * depends on j and k alone (their distance, the unit vector from j to k)
+ * is kept for the next call with the same pair (a growth asks for dozens
+ * of radii); move_to forgets it. */
+static int pair_centre(pack *P, uint32_t j, uint32_t k, double R, double s, qc_vec2 *out)
 {
-    qc_vec2 cj = pb->c[j], ck = pb->c[k];
-    double D = dist(cj, ck), a = pb->r[j] + R, b = pb->r[k] + R, along, h2;
-    qc_vec2 e;
+    qc__pair_frame *F = &P->pair;
+    double a, b, along, h2;
 
-    if (!(D > 0))
+    if (!F->valid || F->j != j || F->k != k) {
+        const qc__pebbles *pb = P->pb;
+        qc_vec2 cj = pb->c[j], ck = pb->c[k];
+        F->j = j;
+        F->k = k;
+        F->valid = 1;
+        F->cj = cj;
+        F->rj = pb->r[j];
+        F->rk = pb->r[k];
+        F->D = dist(cj, ck);
+        if (F->D > 0)
+            F->e = QC__V2((ck.x - cj.x) / F->D, (ck.y - cj.y) / F->D);
+    }
+    if (!(F->D > 0))
         return 0;
-    e = QC__V2((ck.x - cj.x) / D, (ck.y - cj.y) / D);
-    along = (D * D + a * a - b * b) / (2 * D);
+    a = F->rj + R;
+    b = F->rk + R;
+    along = (F->D * F->D + a * a - b * b) / (2 * F->D);
     h2 = a * a - along * along;
     if (h2 < 0)
         return 0;
     h2 = sqrt(h2) * s;
-    *out = QC__V2(cj.x + e.x * along - e.y * h2, cj.y + e.y * along + e.x * h2);
+    *out = QC__V2(F->cj.x + F->e.x * along - F->e.y * h2, F->cj.y + F->e.y * along + F->e.x * h2);
     return 1;
 }
 
@@ -593,7 +610,7 @@ static void pair_gather(pack *P, uint32_t i, uint32_t j, uint32_t k, pair_near *
     pn->nseg = PAIR_SEGS + 1;
     cell_box(P, pb->c[i], reach + P->rmax, r);
     FOR_EACH_PEBBLE(P, r, cx, cy, q) {
-        if (q == i || q == j || q == k || dist(pb->c[i], pb->c[q]) - pb->r[q] > reach)
+        if (q == i || q == j || q == k || dist(pb->c[i], P->node[q].c) - P->node[q].r > reach)
             continue;
         if (pn->n == PAIR_NEAR) {
             pn->all = 0;
@@ -613,16 +630,16 @@ static int pair_fits(pack *P, pair_near *pn, uint32_t i, uint32_t j, uint32_t k,
     const qc__pebbles *pb = P->pb;
     size_t m;
 
-    if (!pair_centre(pb, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
+    if (!pair_centre(P, j, k, R, s, at) || dist(*at, pb->c[i]) > MOVE_MAX * P->d)
         return 0;
     if (!pn->all)
         return clearance_to(P, *at, R, R, i, j, k, NULL) >= R;
     for (m = 0; m < pn->n; m++) {
         uint32_t q = pn->id[m];
-        double dx = at->x - pb->c[q].x, dy = at->y - pb->c[q].y, far = R + pb->r[q];
+        double dx = at->x - P->node[q].c.x, dy = at->y - P->node[q].c.y, far = R + P->node[q].r;
         if (far > 0 && dx * dx + dy * dy >= far * far)
             continue;
-        if (sqrt(dx * dx + dy * dy) - pb->r[q] < R) {
+        if (sqrt(dx * dx + dy * dy) - P->node[q].r < R) {
             pn->id[m] = pn->id[0];
             pn->id[0] = q;
             return 0;
@@ -712,11 +729,11 @@ static double move_limit(pack *P, uint32_t i, uint32_t j, uint32_t k, double s, 
     qc_vec2 x;
     int it;
 
-    if (pair_centre(pb, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+    if (pair_centre(P, j, k, hi, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
         return hi;
     for (it = 0; it < 40; it++) {
         double mid = 0.5 * (lo + hi);
-        if (pair_centre(pb, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
+        if (pair_centre(P, j, k, mid, s, &x) && dist(x, pb->c[i]) <= MOVE_MAX * P->d)
             lo = mid;
         else
             hi = mid;
@@ -790,12 +807,12 @@ static void pair_narrow(const pack *P, pair_near *pn, uint32_t j, uint32_t k, do
     pair_segs(P, pn, cj, e, s, box, pb->k * hi + slack);
     for (m = 0; m < pn->n; m++) {
         uint32_t q = pn->id[m];
-        double dx = pb->c[q].x - cj.x, dy = pb->c[q].y - cj.y;
+        double dx = P->node[q].c.x - cj.x, dy = P->node[q].c.y - cj.y;
         double u = dx * e.x + dy * e.y, v = s * (dy * e.x - dx * e.y);
         double du = fmax(fmax(box[0] - u, u - box[1]), 0);
         double dv = fmax(fmax(box[2] - v, v - box[3]), 0);
 
-        if (sqrt(du * du + dv * dv) - pb->r[q] < hi + slack)
+        if (sqrt(du * du + dv * dv) - P->node[q].r < hi + slack)
             pn->id[n++] = q;
     }
     pn->n = n;
@@ -815,7 +832,7 @@ static double pair_search(pack *P, uint32_t i, uint32_t j, uint32_t k, double s,
 
     while (lo < pb->r_grow) {
         hi = fmin(lo + step, pb->r_grow);
-        if (!pair_centre(pb, j, k, hi, s, &xhi))
+        if (!pair_centre(P, j, k, hi, s, &xhi))
             break;
         if (dist(xhi, xlo) > 0.5 * pb->r_min && step > span * 1e-6) {
             step /= 2; /* small moves: no pebble is jumped over */
@@ -867,7 +884,7 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
 
         if (R != reach_R) {
             reach = MOVE_MAX * P->d;
-            if (pair_centre(pb, j, k, R, s, &x))
+            if (pair_centre(P, j, k, R, s, &x))
                 reach = fmin(reach, dist(x, ci));
             reach += R; /* no pebble farther than this from ci is met */
             reach_R = R;
@@ -884,12 +901,12 @@ static double first_contact(pack *P, uint32_t i, uint32_t j, uint32_t k, double 
                 uint32_t q;
                 if (!whole && cx != c0x - ring && cx != c0x + ring)
                     break;
-                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->next[q]) {
-                    double rq, dx = pb->c[q].x - ci.x, dy = pb->c[q].y - ci.y;
-                    double far = reach + pb->r[q];
+                for (q = P->head[cy * P->nx + cx]; q != QC__PEB_NONE; q = P->node[q].next) {
+                    double rq, dx = P->node[q].c.x - ci.x, dy = P->node[q].c.y - ci.y;
+                    double far = reach + P->node[q].r;
                     if (dx * dx + dy * dy > far * far || q == i || q == j || q == k)
                         continue;
-                    rq = apollonius(&A, pb->c[q], pb->r[q], s, r0);
+                    rq = apollonius(&A, P->node[q].c, P->node[q].r, s, r0);
                     if (rq < 0)
                         return -1;
                     if (rq < R)
@@ -919,7 +936,7 @@ static int grow_pair(pack *P, uint32_t i, uint32_t j, uint32_t k)
     if (R >= 0) {
         R = move_limit(P, i, j, k, s, R);
         R = r0 + (R - r0) * (1 - 1e-9); /* a hair short of the contact */
-        done = pair_centre(pb, j, k, R, s, &x) &&
+        done = pair_centre(P, j, k, R, s, &x) &&
                clearance_to(P, x, R, R * (1 - 1e-12), i, j, k, NULL) >= R * (1 - 1e-12);
     }
     if (!done)
@@ -1019,7 +1036,7 @@ static void count_contacts(pack *P)
     memset(pb->contacts, 0, pb->n * sizeof *pb->contacts);
     for (c0y = 0; c0y < P->ny; c0y++)
         for (c0x = 0; c0x < P->nx; c0x++)
-            for (i = P->head[c0y * P->nx + c0x]; i != QC__PEB_NONE; i = P->next[i]) {
+            for (i = P->head[c0y * P->nx + c0x]; i != QC__PEB_NONE; i = P->node[i].next) {
                 qc_vec2 x = pb->c[i];
                 double ri = pb->r[i];
                 uint32_t r[4], cx, cy, j;
@@ -1028,8 +1045,8 @@ static void count_contacts(pack *P)
                 cell_box(P, x, ri + P->rmax + pb->touch, r);
                 r[1] = c0y;
                 FOR_EACH_PEBBLE_IF(P, r, cx, cy, j, cy > c0y || cx >= c0x) {
-                    double dx = x.x - pb->c[j].x, dy = x.y - pb->c[j].y;
-                    double far = ri + pb->r[j] + pb->touch;
+                    double dx = x.x - P->node[j].c.x, dy = x.y - P->node[j].c.y;
+                    double far = ri + P->node[j].r + pb->touch;
                     if (dx * dx + dy * dy > far * far || (cy == c0y && cx == c0x && j <= i))
                         continue;
                     pb->contacts[i] += pb->contacts[i] < 255;
@@ -1134,9 +1151,8 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
     P.pb = pb;
     P.d = d;
     if (rc == QC_OK) {
-        P.next = qc__alloc_array(ctx, cap, sizeof *P.next);
-        P.cellof = qc__alloc_array(ctx, cap, sizeof *P.cellof);
-        if (P.next == NULL || P.cellof == NULL)
+        P.node = qc__alloc_array(ctx, cap, sizeof *P.node);
+        if (P.node == NULL)
             rc = QC_ENOMEM;
     }
     if (rc == QC_OK) { /* cells of about d, at most about 4 per pebble slot */
@@ -1169,8 +1185,7 @@ int qc__pebbles_pack(qc_ctx *ctx, const qc_region *region, qc__pbound *b,
         count_contacts(&P);
     }
     qc__free(ctx, P.head, (size_t)P.nx * P.ny * sizeof *P.head);
-    qc__free(ctx, P.next, cap * sizeof *P.next);
-    qc__free(ctx, P.cellof, cap * sizeof *P.cellof);
+    qc__free(ctx, P.node, cap * sizeof *P.node);
     if (rc != QC_OK)
         qc__pebbles_free(ctx, pb);
     return rc;
