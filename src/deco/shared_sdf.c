@@ -176,10 +176,14 @@ static void seed_edges(qc__sdf *s, double *d2)
             long x, y;
 
             for (y = (long)gy - 1; y <= (long)gy + 2; y++)
-                for (x = (long)gx - 1; x <= (long)gx + 2; x++)
-                    if (x >= 0 && y >= 0 && (size_t)x < s->nx && (size_t)y < s->ny)
-                        relax(s, d2, (size_t)y * s->nx + (size_t)x,
-                              node_at(s, (size_t)x, (size_t)y), (uint32_t)e);
+                for (x = (long)gx - 1; x <= (long)gx + 2; x++) {
+                    size_t k;
+                    if (x < 0 || y < 0 || (size_t)x >= s->nx || (size_t)y >= s->ny)
+                        continue;
+                    k = (size_t)y * s->nx + (size_t)x;
+                    if (s->seg[k] != e) /* samples h / 2 apart: most nodes had e already */
+                        relax(s, d2, k, node_at(s, (size_t)x, (size_t)y), (uint32_t)e);
+                }
         }
     }
 }
