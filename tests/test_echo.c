@@ -177,6 +177,42 @@ static void echo_rings_should_keep_spacing(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* The distance grid's exact query (each edge's geometry cached once) gives
+ * the boundary distance, signed by the side, at every grid node and at
+ * points between them, on every shape, also far from the origin. */
+static void sdf_exact_should_match_the_boundary_distance(void)
+{
+    int kind, far;
+
+    for (kind = 0; kind < R_COUNT; kind++)
+        for (far = 0; far < 2; far++) {
+            qc_region r;
+            qc__sdf s;
+            size_t i, j, n = 0;
+
+            make_region(kind, &r);
+            if (far) /* coordinates of 10^5 mm: the cache keeps the same arithmetic */
+                for (i = 0; i < r.nv; i++)
+                    r.v[i] = v2(r.v[i].x + 1e5, r.v[i].y - 7e4);
+            TEST_ASSERT_EQUAL_INT(QC_OK, qc__sdf_build(&ctx, &r, 2.5, &s));
+            for (j = 0; j + 1 < s.ny; j += 3)
+                for (i = 0; i + 1 < s.nx; i += 3) {
+                    qc_vec2 p = v2(s.x0 + ((double)i + 0.37) * s.h, s.y0 + ((double)j + 0.61) * s.h);
+                    double want = qc_region_boundary_distance(&r, p);
+                    double got = qc__sdf_exact(&s, p, NULL);
+
+                    TEST_ASSERT_DOUBLE_WITHIN(1e-9 * (1.0 + 1e5), want, fabs(got));
+                    if (want > 1e-6)
+                        TEST_ASSERT_EQUAL_INT(qc_region_contains(&r, p), got > 0.0);
+                    n++;
+                }
+            TEST_ASSERT_GREATER_THAN(100, n);
+            qc__sdf_free(&ctx, &s);
+            qc_region_free(&ctx, &r);
+        }
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 /* Whether path vertex i lies on a level margin + k d, k >= 0. */
 static int on_level(const qc_region *r, const qc_path *out, size_t i, double margin, double d)
 {
@@ -539,6 +575,7 @@ int main(void)
     RUN_TEST(echo_should_run_through_generate);
     RUN_TEST(echo_should_report_errors);
     RUN_TEST(echo_grid_should_admit_a_quilters_largest_block);
+    RUN_TEST(sdf_exact_should_match_the_boundary_distance);
     RUN_TEST(echo_zero_margin_should_follow_the_outline);
     RUN_TEST(echo_should_survive_allocation_failures);
     return UNITY_END();

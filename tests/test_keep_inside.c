@@ -45,6 +45,51 @@ static size_t outside(const qc_path *p)
     return n;
 }
 
+/* Commands that come through before the first fix (moves, lines, cubics:
+ * not stored as they pass) are all in the result, unchanged and in order,
+ * ahead of the fixed one; a path with nothing to fix stays as it was. */
+static void keep_inside_should_keep_every_command_before_a_late_fix(void)
+{
+    qc_path p = {0}, orig = {0};
+    size_t fixed = 9, i, npt;
+
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, v2(5, 5)));
+    for (i = 0; i < 20; i++) {
+        double x = 5 + 2.0 * (double)i;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(x + 1, 8)));
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, v2(x + 1.3, 9), v2(x + 1.7, 9),
+                                                      v2(x + 2, 5)));
+    }
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, v2(10, 50)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(5, 55)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_append(&ctx, &orig, &p, 0));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__path_keep_inside(&ctx, &c_shape, "test", &p, &fixed));
+    TEST_ASSERT_EQUAL_size_t(0, fixed); /* nothing to fix: the same path */
+    TEST_ASSERT_EQUAL_size_t(orig.ncmd, p.ncmd);
+    TEST_ASSERT_EQUAL_MEMORY(orig.cmd, p.cmd, orig.ncmd);
+    TEST_ASSERT_EQUAL_MEMORY(orig.pt, p.pt, orig.npt * sizeof *orig.pt);
+    npt = orig.npt;
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(50, 10))); /* across the notch */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &p, v2(50, 5))); /* then fine again */
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_cubic_to(&ctx, &p, v2(48, 3), v2(45, 3), v2(44, 6)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &p, v2(10, 30)));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__path_keep_inside(&ctx, &c_shape, "test", &p, &fixed));
+    TEST_ASSERT_EQUAL_size_t(1, fixed);
+    TEST_ASSERT_EQUAL_size_t(0, outside(&p));
+    TEST_ASSERT_GREATER_THAN(orig.ncmd + 4, p.ncmd); /* routed round the corners */
+    TEST_ASSERT_EQUAL_MEMORY(orig.cmd, p.cmd, orig.ncmd);
+    TEST_ASSERT_EQUAL_MEMORY(orig.pt, p.pt, npt * sizeof *orig.pt);
+    TEST_ASSERT_EQUAL_INT(QC_PATH_LINE, p.cmd[p.ncmd - 3]); /* the tail as it was */
+    TEST_ASSERT_EQUAL_INT(QC_PATH_CUBIC, p.cmd[p.ncmd - 2]);
+    TEST_ASSERT_EQUAL_INT(QC_PATH_MOVE, p.cmd[p.ncmd - 1]);
+    TEST_ASSERT_EQUAL_DOUBLE(50.0, p.pt[p.npt - 5].x);
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, p.pt[p.npt - 5].y);
+    TEST_ASSERT_EQUAL_DOUBLE(44.0, p.pt[p.npt - 2].x);
+    TEST_ASSERT_EQUAL_DOUBLE(30.0, p.pt[p.npt - 1].y);
+    qc_path_free(&ctx, &p);
+    qc_path_free(&ctx, &orig);
+}
+
 /* A line across the notch goes round its inner corners instead. */
 static void keep_inside_should_route_a_chord_round_the_notch(void)
 {
@@ -180,5 +225,6 @@ int main(void)
     RUN_TEST(keep_inside_should_tighten_a_bulging_cubic);
     RUN_TEST(keep_inside_should_keep_good_paths_and_name_bad_ones);
     RUN_TEST(keep_inside_should_check_what_leaves_a_clear_stretch);
+    RUN_TEST(keep_inside_should_keep_every_command_before_a_late_fix);
     return UNITY_END();
 }

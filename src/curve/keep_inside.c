@@ -433,11 +433,16 @@ static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
             end = moved;
             ++*fixed;
         }
+        /* before the first fix, a command that comes through as it was is
+         * not stored: the next one drops it, and a path with no fix is
+         * never copied */
         if (cmd == QC_PATH_MOVE) {
-            QC__TRY(qc_path_move_to(k->ctx, out, end));
+            if (copying || *fixed > f0)
+                QC__TRY(qc_path_move_to(k->ctx, out, end));
         } else if (cmd == QC_PATH_LINE) {
             if (seg_ok(k, cur, end)) {
-                QC__TRY(qc_path_line_to(k->ctx, out, end));
+                if (copying || *fixed > f0)
+                    QC__TRY(qc_path_line_to(k->ctx, out, end));
             } else {
                 ++*fixed;
                 QC__TRY(route(k, cur, end, out));
@@ -445,7 +450,8 @@ static int rewrite(kin *k, const qc_path *in, qc_path *out, size_t *fixed)
         } else {
             qc_vec2 q[4];
             q[0] = cur, q[1] = p[0], q[2] = p[1], q[3] = end;
-            QC__TRY(fix_cubic(k, q, out, fixed));
+            if (copying || *fixed > f0 || !cubic_ok(k, q))
+                QC__TRY(fix_cubic(k, q, out, fixed));
         }
         if (!copying && *fixed > f0) {
             QC__TRY(start_copy(k->ctx, in, c, at0, out));

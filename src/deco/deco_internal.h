@@ -230,6 +230,9 @@ typedef struct qc__sdf {
     uint32_t *seg;
     unsigned char *flat;
     uint32_t *prev, *next, *ring;
+    /* per edge e: its start (prev[e]'s vertex), its vector and squared
+     * length, as the distance queries compute them (5 doubles) */
+    double *eg;
     const qc_region *region;
 } qc__sdf;
 

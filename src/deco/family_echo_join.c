@@ -43,6 +43,7 @@ typedef struct joiner {
     size_t n;             /* vertices */
     size_t nr;            /* rings */
     uint32_t *ring;       /* per vertex: its ring */
+    uint32_t *nxt, *prv;  /* per vertex: the next and previous vertex round its ring */
     qc__seg_grid grid;    /* a segment is named by its first vertex */
     /* links */
     uint32_t *used;       /* per vertex: 1 + the link whose cut (or its margin) holds it, or 0 */
@@ -71,14 +72,11 @@ static size_t rsize(const joiner *j, uint32_t k)
     return j->r->end.i[k] - rstart(j, k);
 }
 
+/* The casts and the segment grid ask this for every segment they pass:
+ * a table, filled once. */
 static uint32_t step_v(const joiner *j, uint32_t g, int dir)
 {
-    uint32_t k = j->ring[g];
-    size_t b = rstart(j, k), e = j->r->end.i[k];
-
-    if (dir > 0)
-        return g + 1 == e ? (uint32_t)b : g + 1;
-    return g == b ? (uint32_t)(e - 1) : g - 1;
+    return dir > 0 ? j->nxt[g] : j->prv[g];
 }
 
 static double cross2(qc_vec2 a, qc_vec2 b)
@@ -616,6 +614,8 @@ static uint32_t nearest_free(const joiner *j, uint32_t g)
 static void jn_free(qc_ctx *ctx, joiner *j)
 {
     qc__free(ctx, j->ring, j->n * sizeof *j->ring);
+    qc__free(ctx, j->nxt, j->n * sizeof *j->nxt);
+    qc__free(ctx, j->prv, j->n * sizeof *j->prv);
     qc__free(ctx, j->used, j->n * sizeof *j->used);
     qc__free(ctx, j->lk, j->n * sizeof *j->lk);
     qc__free(ctx, j->partner, j->n * sizeof *j->partner);
@@ -719,6 +719,8 @@ int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o, qc_p
     j.nr = r->end.n;
     j.info = info;
     j.ring = qc__alloc_array(ctx, j.n, sizeof *j.ring);
+    j.nxt = qc__alloc_array(ctx, j.n, sizeof *j.nxt);
+    j.prv = qc__alloc_array(ctx, j.n, sizeof *j.prv);
     j.used = qc__alloc_array(ctx, j.n, sizeof *j.used);
     j.lk = qc__alloc_array(ctx, j.n, sizeof *j.lk);
     j.partner = qc__alloc_array(ctx, j.n, sizeof *j.partner);
@@ -728,15 +730,20 @@ int qc__rings_join(qc_ctx *ctx, const qc__rings *r, const qc__join_opts *o, qc_p
     j.tail_y = qc__alloc_array(ctx, j.nr, sizeof *j.tail_y);
     j.tail_to = qc__alloc_array(ctx, j.nr, sizeof *j.tail_to);
     stack = qc__alloc_array(ctx, j.nr + 1, sizeof *stack);
-    if (j.ring == NULL || j.used == NULL || j.lk == NULL || j.partner == NULL ||
+    if (j.ring == NULL || j.nxt == NULL || j.prv == NULL || j.used == NULL || j.lk == NULL || j.partner == NULL ||
         j.other == NULL || j.ahead == NULL || j.uf == NULL || j.tail_y == NULL ||
         j.tail_to == NULL || stack == NULL)
         goto out;
     qc__uf_init(j.uf, j.nr);
     for (k = 0, g = 0; k < j.nr; k++) {
+        size_t b = g, e = r->end.i[k];
+
         j.tail_y[k] = j.tail_to[k] = NONE;
-        for (; g < r->end.i[k]; g++)
+        for (; g < e; g++) {
             j.ring[g] = (uint32_t)k;
+            j.nxt[g] = (uint32_t)(g + 1 == e ? b : g + 1);
+            j.prv[g] = (uint32_t)(g == b ? e - 1 : g - 1);
+        }
     }
     memset(j.used, 0, j.n * sizeof *j.used);
     memset(j.ahead, 0, j.n);

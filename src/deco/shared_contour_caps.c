@@ -34,19 +34,45 @@ typedef struct ring_walk {
     const uint32_t *next;
 } ring_walk;
 
+/* Up to this many peak candidates, the ring segments near them are listed
+ * in one pass instead of binning every segment in a grid: most regions
+ * have one or a few peaks, and the grid cost ten times the queries. */
+#define FEW_PEAKS 16
+
+/* Where ring_dist looks: the segments in g, or (listed) those in list. */
+typedef struct ring_near {
+    const qc__seg_grid *g;
+    const uint32_t *list;
+    size_t nlist;
+    int listed;
+} ring_near;
+
 static uint32_t ring_next(const void *ud, uint32_t k)
 {
     return ((const ring_walk *)ud)->next[k];
 }
 
-/* Distance from q to the nearest ring segment within reach (reach if none). */
-static double ring_dist(const qc__seg_grid *g, const qc_vec2 *p, const uint32_t *next, qc_vec2 q,
+/* Distance from q to the nearest ring segment within reach (reach if none).
+ * Every segment nearer than reach has its box in q's square of side
+ * 2 reach: the grid's cells there, or a list holding all such segments,
+ * give the same minimum. */
+static double ring_dist(const ring_near *rn, const qc_vec2 *p, const uint32_t *next, qc_vec2 q,
                         double reach)
 {
+    const qc__seg_grid *g = rn->g;
     qc_vec2 lo, hi;
     size_t c[4], x, y, i;
     double best = reach * reach;
 
+    if (rn->listed) {
+        for (i = 0; i < rn->nlist; i++) {
+            uint32_t s = rn->list[i];
+            double d2 = qc__seg_dist2(q, p[s], p[next[s]]);
+            if (d2 < best)
+                best = d2;
+        }
+        return sqrt(best);
+    }
     lo.x = q.x - reach;
     lo.y = q.y - reach;
     hi.x = q.x + reach;
@@ -95,7 +121,7 @@ static int cmp_peak(const void *pa, const void *pb)
 /* The farthest from the rings of the node and the points h / 2 round it
  * that lie deeper than the margin (the node alone when none can be
  * farther than limit). */
-static peak peak_refine(const qc__contour *c, const qc__seg_grid *g, const uint32_t *next,
+static peak peak_refine(const qc__contour *c, const ring_near *g, const uint32_t *next,
                         qc_vec2 at, double reach, double limit)
 {
     peak best;
@@ -143,17 +169,64 @@ static int add_cap(qc_ctx *ctx, qc__rings *r, const peak *pk, double d, double l
     return qc_order_push(ctx, &r->level, level);
 }
 
+/* Lists the segments of the n ring points whose box meets the square of
+ * half-side pad round one of the np nodes at[]. */
+static int near_list(qc_ctx *ctx, const qc_vec2 *p, const uint32_t *next, size_t n,
+                     const qc_vec2 *at, size_t np, double pad, uint32_t **list, size_t *nlist,
+                     size_t *cap)
+{
+    size_t s, k;
+
+    for (s = 0; s < n; s++) {
+        qc_vec2 a = p[s], b = p[next[s]];
+        double lx = a.x < b.x ? a.x : b.x, hx = a.x < b.x ? b.x : a.x;
+        double ly = a.y < b.y ? a.y : b.y, hy = a.y < b.y ? b.y : a.y;
+
+        for (k = 0; k < np; k++)
+            if (hx >= at[k].x - pad && lx <= at[k].x + pad && hy >= at[k].y - pad &&
+                ly <= at[k].y + pad)
+                break;
+        if (k == np)
+            continue;
+        QC__TRY(QC__RESERVE(ctx, *list, *cap, *nlist + 1));
+        (*list)[(*nlist)++] = (uint32_t)s;
+    }
+    return QC_OK;
+}
+
+/* The nodes above the margin higher than their 8 neighbours, row by row,
+ * into *at (*np of them, *cap allocated). */
+static int peak_nodes(qc_ctx *ctx, const qc__contour *c, qc_vec2 **at, size_t *np, size_t *cap)
+{
+    const qc__sdf *s = &c->sdf;
+    size_t i, jy;
+
+    for (jy = 1; jy + 1 < s->ny; jy++)
+        for (i = 1; i + 1 < s->nx; i++) {
+            if (!(s->v[jy * s->nx + i] > c->l0) || !is_peak(s, i, jy))
+                continue;
+            QC__TRY(QC__RESERVE(ctx, *at, *cap, *np + 1));
+            (*at)[*np].x = s->x0 + (double)i * s->h;
+            (*at)[*np].y = s->y0 + (double)jy * s->h;
+            ++*np;
+        }
+    return QC_OK;
+}
+
 int qc__contour_cap_peaks(qc_ctx *ctx, qc__contour *c, double d)
 {
     const qc__sdf *s = &c->sdf;
     qc__rings *r = &c->rings;
     qc__seg_grid g;
     ring_walk w;
-    uint32_t *next = NULL, top = 0;
+    ring_near rn;
+    qc_vec2 *cand = NULL;
+    uint32_t *next = NULL, *list = NULL, top = 0;
     peak *pk = NULL;
-    size_t npk = 0, cap = 0, n = r->pts.n, nr = r->end.n, k, b, i, jy, kept = 0;
+    size_t npk = 0, cap = 0, n = r->pts.n, nr = r->end.n, k, b, i, kept = 0, ncand = 0,
+           cand_cap = 0, nlist = 0, list_cap = 0;
     double reach = 2.0 * d;
-    int rc = QC_OK;
+    int rc;
 
     memset(&g, 0, sizeof g);
     if (n == 0 || s->nx < 3 || s->ny < 3)
@@ -170,22 +243,27 @@ int qc__contour_cap_peaks(qc_ctx *ctx, qc__contour *c, double d)
     }
     w.r = r;
     w.next = next;
-    rc = qc__seg_grid_build(ctx, &g, r->pts.v, n, ring_next, &w, d, 4.0);
-    for (jy = 1; jy + 1 < s->ny && rc == QC_OK; jy++)
-        for (i = 1; i + 1 < s->nx && rc == QC_OK; i++) {
-            qc_vec2 at;
-            peak p;
-            if (!(s->v[jy * s->nx + i] > c->l0) || !is_peak(s, i, jy))
-                continue;
-            at.x = s->x0 + (double)i * s->h;
-            at.y = s->y0 + (double)jy * s->h;
-            p = peak_refine(c, &g, next, at, reach, CAP_FAR * d);
-            if (!(p.far > CAP_FAR * d))
-                continue;
-            rc = QC__RESERVE(ctx, pk, cap, npk + 1);
-            if (rc == QC_OK)
-                pk[npk++] = p;
-        }
+    memset(&rn, 0, sizeof rn);
+    rc = peak_nodes(ctx, c, &cand, &ncand, &cand_cap);
+    if (rc == QC_OK && ncand > FEW_PEAKS) {
+        rc = qc__seg_grid_build(ctx, &g, r->pts.v, n, ring_next, &w, d, 4.0);
+        rn.g = &g;
+    } else if (rc == QC_OK && ncand > 0) { /* refined points lie h / 2 from their node at most */
+        rc = near_list(ctx, r->pts.v, next, n, cand, ncand, reach + 0.51 * s->h, &list, &nlist,
+                       &list_cap);
+        rn.list = list;
+        rn.nlist = nlist;
+        rn.listed = 1;
+    }
+    for (k = 0; k < ncand && rc == QC_OK; k++) {
+        peak p = peak_refine(c, &rn, next, cand[k], reach, CAP_FAR * d);
+
+        if (!(p.far > CAP_FAR * d))
+            continue;
+        rc = QC__RESERVE(ctx, pk, cap, npk + 1);
+        if (rc == QC_OK)
+            pk[npk++] = p;
+    }
     if (rc == QC_OK && npk > 1)
         qsort(pk, npk, sizeof *pk, cmp_peak);
     for (k = 0; k < npk && rc == QC_OK; k++) { /* farthest first; one cap covers its neighbours */
@@ -199,6 +277,8 @@ int qc__contour_cap_peaks(qc_ctx *ctx, qc__contour *c, double d)
     for (k = 0; k < kept && rc == QC_OK; k++)
         rc = add_cap(ctx, r, &pk[k], d, c->l0, top + 1);
     qc__seg_grid_free(ctx, &g);
+    qc__free(ctx, list, list_cap * sizeof *list);
+    qc__free(ctx, cand, cand_cap * sizeof *cand);
     qc__free(ctx, next, n * sizeof *next);
     qc__free(ctx, pk, cap * sizeof *pk);
     if (rc < 0)

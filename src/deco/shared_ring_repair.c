@@ -38,10 +38,21 @@ static int boxes_meet(qc_bbox a, qc_bbox b)
 
 static int seg_cross(qc_vec2 a, qc_vec2 b, qc_vec2 c, qc_vec2 d)
 {
-    double o1 = qc_orient2d(a, b, c), o2 = qc_orient2d(a, b, d);
-    double o3 = qc_orient2d(c, d, a), o4 = qc_orient2d(c, d, b);
+    double o1, o2, o3, o4;
 
-    return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+    /* a proper crossing lies in both boxes (the predicates are exact) */
+    if (qc__greater(a.x, b.x) < qc__lesser(c.x, d.x) ||
+        qc__greater(c.x, d.x) < qc__lesser(a.x, b.x) ||
+        qc__greater(a.y, b.y) < qc__lesser(c.y, d.y) ||
+        qc__greater(c.y, d.y) < qc__lesser(a.y, b.y))
+        return 0;
+    o1 = qc_orient2d(a, b, c);
+    o2 = qc_orient2d(a, b, d);
+    if (!((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)))
+        return 0;
+    o3 = qc_orient2d(c, d, a);
+    o4 = qc_orient2d(c, d, b);
+    return (o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0);
 }
 
 /* Whether small ring k properly crosses ring q. */

@@ -16,6 +16,8 @@
  * spiral accept. */
 #define MAX_NODES ((size_t)1 << 24)
 #define NONE UINT32_MAX
+/* doubles per edge in eg */
+#define EG 5
 
 void qc__sdf_free(qc_ctx *ctx, qc__sdf *s)
 {
@@ -30,6 +32,7 @@ void qc__sdf_free(qc_ctx *ctx, qc__sdf *s)
         qc__free(ctx, s->prev, s->region->nv * sizeof *s->prev);
         qc__free(ctx, s->next, s->region->nv * sizeof *s->next);
         qc__free(ctx, s->ring, s->region->nv * sizeof *s->ring);
+        qc__free(ctx, s->eg, s->region->nv * EG * sizeof *s->eg);
     }
     qc__free(ctx, s->flat, n);
     memset(s, 0, sizeof *s);
@@ -47,20 +50,18 @@ static uint32_t edge_next(const qc__sdf *s, uint32_t e)
     return s->next[e];
 }
 
-/* Squared distance from p to edge e; *t receives the nearest point's parameter. */
+/* Squared distance from p to edge e; *t receives the nearest point's
+ * parameter. The edge's start, vector and squared length come from eg
+ * (the queries ask them of the same edges again and again). */
 static double edge_d2(const qc__sdf *s, uint32_t e, qc_vec2 p, double *t)
 {
-    qc_vec2 a, b;
-    double ex, ey, len2, u, dx, dy;
+    const double *g = s->eg + (size_t)e * EG;
+    double ax = g[0], ay = g[1], ex = g[2], ey = g[3], len2 = g[4], u, dx, dy;
 
-    edge_ends(s, e, &a, &b);
-    ex = b.x - a.x;
-    ey = b.y - a.y;
-    len2 = ex * ex + ey * ey;
-    u = len2 > 0.0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
+    u = len2 > 0.0 ? ((p.x - ax) * ex + (p.y - ay) * ey) / len2 : 0.0;
     u = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
-    dx = p.x - (a.x + u * ex);
-    dy = p.y - (a.y + u * ey);
+    dx = p.x - (ax + u * ex);
+    dy = p.y - (ay + u * ey);
     *t = u;
     return dx * dx + dy * dy;
 }
@@ -125,16 +126,20 @@ static void scan_between(const qc__sdf *s, qc_vec2 p, uint32_t a, uint32_t b, ui
     }
 }
 
-/* Tries edge e for node k at p. */
+/* Tries edge e for node k at p (qc__seg_dist2's arithmetic on eg). */
 static void relax(const qc__sdf *s, double *d2, size_t k, qc_vec2 p, uint32_t e)
 {
-    qc_vec2 a, b;
-    double q;
+    const double *g;
+    double q, t, ex, ey;
 
     if (e == NONE || e == s->seg[k])
         return;
-    edge_ends(s, e, &a, &b);
-    q = qc__seg_dist2(p, a, b);
+    g = s->eg + (size_t)e * EG;
+    t = g[4] > 0.0 ? ((p.x - g[0]) * g[2] + (p.y - g[1]) * g[3]) / g[4] : 0.0;
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    ex = g[0] + t * g[2] - p.x;
+    ey = g[1] + t * g[3] - p.y;
+    q = ex * ex + ey * ey;
     if (q < d2[k] || (q == d2[k] && e < s->seg[k])) {
         d2[k] = q;
         s->seg[k] = e;
@@ -171,10 +176,14 @@ static void seed_edges(qc__sdf *s, double *d2)
             long x, y;
 
             for (y = (long)gy - 1; y <= (long)gy + 2; y++)
-                for (x = (long)gx - 1; x <= (long)gx + 2; x++)
-                    if (x >= 0 && y >= 0 && (size_t)x < s->nx && (size_t)y < s->ny)
-                        relax(s, d2, (size_t)y * s->nx + (size_t)x,
-                              node_at(s, (size_t)x, (size_t)y), (uint32_t)e);
+                for (x = (long)gx - 1; x <= (long)gx + 2; x++) {
+                    size_t k;
+                    if (x < 0 || y < 0 || (size_t)x >= s->nx || (size_t)y >= s->ny)
+                        continue;
+                    k = (size_t)y * s->nx + (size_t)x;
+                    if (s->seg[k] != e) /* samples h / 2 apart: most nodes had e already */
+                        relax(s, d2, k, node_at(s, (size_t)x, (size_t)y), (uint32_t)e);
+                }
         }
     }
 }
@@ -281,10 +290,11 @@ int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
     out->prev = qc__alloc_array(ctx, region->nv, sizeof *out->prev);
     out->next = qc__alloc_array(ctx, region->nv, sizeof *out->next);
     out->ring = qc__alloc_array(ctx, region->nv, sizeof *out->ring);
+    out->eg = qc__alloc_array(ctx, region->nv * EG, sizeof *out->eg);
     mask = qc__alloc(ctx, n);
     out->flat = qc__alloc(ctx, n);
     if (out->v == NULL || out->seg == NULL || out->prev == NULL || out->next == NULL ||
-        out->ring == NULL || mask == NULL || out->flat == NULL)
+        out->ring == NULL || out->eg == NULL || mask == NULL || out->flat == NULL)
         goto out;
     for (k = 0, e = 0; k < region->nrings; k++) {
         size_t start = e, last = region->ring_end[k] - 1;
@@ -293,6 +303,17 @@ int qc__sdf_build(qc_ctx *ctx, const qc_region *region, double h, qc__sdf *out)
             out->next[e] = (uint32_t)(e == last ? start : e + 1);
             out->ring[e] = (uint32_t)k;
         }
+    }
+    for (e = 0; e < region->nv; e++) {
+        qc_vec2 a, b;
+        double *g = out->eg + e * EG;
+
+        edge_ends(out, (uint32_t)e, &a, &b);
+        g[0] = a.x;
+        g[1] = a.y;
+        g[2] = b.x - a.x;
+        g[3] = b.y - a.y;
+        g[4] = g[2] * g[2] + g[3] * g[3];
     }
     for (k = 0; k < n; k++) {
         out->v[k] = HUGE_VAL; /* squared distances until the end */
