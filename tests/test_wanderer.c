@@ -472,6 +472,53 @@ static void wanderer_chain_should_agree_with_the_collision_grid(void)
     TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
 }
 
+/* A chain is filed once under every cell its segments' boxes meet, and
+ * under no other: one that runs round the grid's rim twice in short steps
+ * (a cell met again some 70 segments later) leaves one entry per cell. */
+static void collision_grid_should_file_a_chain_once_per_cell(void)
+{
+    enum { SIDE = 18, NP = 8 * SIDE + 1 }; /* 0.5 mm steps, 4 sides, twice */
+    qc_vec2 c[NP];
+    qc__cgrid g;
+    qc_bbox box;
+    size_t k, cell, filed = 0;
+    uint32_t x, y;
+    unsigned char want[10 * 10];
+
+    for (k = 0; k < NP; k++) { /* round (0.5, 0.5)-(9.5, 9.5), anticlockwise */
+        double t = 0.5 * (double)(k % SIDE);
+        size_t side = k / SIDE % 4;
+        c[k] = side == 0 ? v2(0.5 + t, 0.5) : side == 1 ? v2(9.5, 0.5 + t)
+             : side == 2 ? v2(9.5 - t, 9.5) : v2(0.5, 9.5 - t);
+    }
+    box.min = v2(0, 0);
+    box.max = v2(9.99, 9.99);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__cgrid_init(&ctx, &g, box, 1, 4096));
+    TEST_ASSERT_EQUAL_UINT(10, g.nx);
+    TEST_ASSERT_EQUAL_UINT(10, g.ny);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__cgrid_add_chain(&ctx, &g, c, NP, 2, 9));
+    memset(want, 0, sizeof want);
+    for (k = 0; k + 1 < NP; k++) { /* the cells each segment's box meets */
+        uint32_t x0 = (uint32_t)fmin(c[k].x, c[k + 1].x), x1 = (uint32_t)fmax(c[k].x, c[k + 1].x);
+        uint32_t y0 = (uint32_t)fmin(c[k].y, c[k + 1].y), y1 = (uint32_t)fmax(c[k].y, c[k + 1].y);
+        for (y = y0; y <= y1; y++)
+            for (x = x0; x <= x1; x++)
+                want[y * 10 + x] = 1;
+    }
+    for (cell = 0; cell < 100; cell++) {
+        size_t n = 0;
+        uint32_t e;
+        for (e = g.head[cell]; e != UINT32_MAX; e = g.ent[e].next)
+            n++;
+        TEST_ASSERT_EQUAL_UINT(want[cell], n);
+        filed += n;
+    }
+    TEST_ASSERT_EQUAL_UINT(filed, g.nent);
+    TEST_ASSERT_EQUAL_UINT(36, filed); /* the rim's cells */
+    qc__cgrid_free(&ctx, &g);
+    TEST_ASSERT_EQUAL_UINT(0, ta.live_blocks);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -484,5 +531,6 @@ int main(void)
     RUN_TEST(wanderer_should_free_everything_when_allocation_fails);
     RUN_TEST(wanderer_should_keep_its_bytes_through_the_speedups);
     RUN_TEST(wanderer_chain_should_agree_with_the_collision_grid);
+    RUN_TEST(collision_grid_should_file_a_chain_once_per_cell);
     return UNITY_END();
 }

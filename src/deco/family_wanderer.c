@@ -283,27 +283,35 @@ static unsigned last_mask(const wrun *w, size_t i)
 }
 
 /* The join's polyline f (controls c1, c2 from a's exit to b's entry),
- * tested against the join sewn last (segments in mask) segment by segment as
- * its points are made, those where joins cross it most often first (a
- * quarter of the way along: near the primitive both meet): 1 at the first
- * crossing (a hit the grid query would find too, without its walk or the
- * rest of f), else 0 with f complete. */
+ * tested against the join sewn last (segments in mask) segment by segment,
+ * each as its two points are made, those where joins cross it most often
+ * first (a quarter of the way along: near the primitive both meet): 1 at
+ * the first crossing (a hit the grid query would find too, without its
+ * walk or the rest of f), else 0, with f complete if whole (may_join
+ * needs only the answer). A point is made once, by the same arithmetic
+ * whichever segment asks first. */
 static int flat_crosses_last(const wrun *w, const prim *a, const prim *b, qc_vec2 c1,
-                             qc_vec2 c2, qc_vec2 *f, unsigned mask)
+                             qc_vec2 c2, qc_vec2 *f, unsigned mask, int whole)
 {
     static const unsigned char first[NFLAT] = {5, 4, 6, 3, 2, 1, 0, 7,
                                                8, 9, 10, 11, 12, 13, 14, 15};
-    int made = 0, o;
+    unsigned long made = 0; /* bit k: f[k] made */
+    int o;
 
     for (o = 0; o < NFLAT; o++) {
         size_t k = first[o];
-        for (; made <= (int)k + 1; made++)
-            f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
-        if ((mask >> k & 1) && qc__wchain_seg_touch(&w->last, f + k))
+        if (!(mask >> k & 1))
+            continue;
+        if (!(made >> k & 1))
+            f[k] = flat_point(w->wt[k], a->exit, c1, c2, b->entry);
+        f[k + 1] = flat_point(w->wt[k + 1], a->exit, c1, c2, b->entry);
+        made |= 3ul << k;
+        if (qc__wchain_seg_touch(&w->last, f + k))
             return 1;
     }
-    for (; made <= NFLAT; made++)
-        f[made] = flat_point(w->wt[made], a->exit, c1, c2, b->entry);
+    for (o = 0; whole && o <= NFLAT; o++)
+        if (!(made >> o & 1))
+            f[o] = flat_point(w->wt[o], a->exit, c1, c2, b->entry);
     return 0;
 }
 
@@ -362,7 +370,7 @@ static int try_join(wrun *w, const prim *a, const prim *b, double l, size_t i, s
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, l * shrink[tr], c1, c2);
         /* the join sewn last first: most joins that fail cross it */
-        if (!flat_crosses_last(w, a, b, *c1, *c2, f, mask) && !join_hits(w, f, i, n))
+        if (!flat_crosses_last(w, a, b, *c1, *c2, f, mask, 1) && !join_hits(w, f, i, n))
             return 1;
         if (l == 0)
             break;
@@ -578,7 +586,7 @@ static int may_join(const wrun *w, const prim *a, const prim *b, size_t i)
 
     for (tr = 0; tr < 4; tr++) {
         join_ctrl(a, b, w->l * shrink[tr], &c1, &c2);
-        if (!flat_crosses_last(w, a, b, c1, c2, f, mask))
+        if (!flat_crosses_last(w, a, b, c1, c2, f, mask, 0))
             return 1;
         if (w->l == 0)
             break;

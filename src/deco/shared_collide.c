@@ -8,11 +8,6 @@
 
 #include "deco_internal.h"
 
-/* A chain's segment is filed under the cells its box meets, except those
- * already filed for the CHAIN_WINDOW segments before it (a duplicate entry
- * costs a little room, never an answer: queries stamp each item once). */
-#define CHAIN_WINDOW 8
-
 static void poly_box(const qc_vec2 *p, size_t n, qc_bbox *b)
 {
     /* in locals: through b, every store might change p, so every load repeats */
@@ -191,25 +186,12 @@ int qc__cgrid_add_shape(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *poly, size_t n
     return add_polygon(ctx, g, poly, n, kind, id, 1);
 }
 
-/* Whether cell (x, y) lies in one of the k cell ranges r. */
-static int in_ranges(const uint32_t (*r)[4], size_t k, uint32_t x, uint32_t y)
-{
-    size_t i;
-
-    for (i = 0; i < k; i++)
-        if (x >= r[i][0] && x <= r[i][2] && y >= r[i][1] && y <= r[i][3])
-            return 1;
-    return 0;
-}
-
 int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
                         unsigned kind, uint32_t id)
 {
     qc_bbox b;
     size_t k;
-
-    uint32_t r[CHAIN_WINDOW + 1][4], x, y; /* r[k % (CHAIN_WINDOW + 1)]: segment k's */
-    uint32_t cx, cy; /* point k's cell */
+    uint32_t x, y, cx, cy; /* point k's cell */
 
     if (n < 2 || n > 65535)
         return qc__fail(ctx, QC_ELIMIT, "collision grid chain of %zu vertices", n);
@@ -217,24 +199,19 @@ int qc__cgrid_add_chain(qc_ctx *ctx, qc__cgrid *g, const qc_vec2 *pts, size_t n,
     cx = cell_of(g, pts[0].x, 0);
     cy = cell_of(g, pts[0].y, 1);
     for (k = 0; k + 1 < n; k++) {
-        uint32_t *rk = r[k % (CHAIN_WINDOW + 1)];
-        size_t before = k < CHAIN_WINDOW ? k : CHAIN_WINDOW, i;
         uint32_t nx = cell_of(g, pts[k + 1].x, 0), ny = cell_of(g, pts[k + 1].y, 1);
-
         /* the segment box's cell range, cell_of being monotone: its ends' */
-        rk[0] = cx < nx ? cx : nx;
-        rk[1] = cy < ny ? cy : ny;
-        rk[2] = cx < nx ? nx : cx;
-        rk[3] = cy < ny ? ny : cy;
+        uint32_t x0 = cx < nx ? cx : nx, x1 = cx < nx ? nx : cx;
+        uint32_t y0 = cy < ny ? cy : ny, y1 = cy < ny ? ny : cy;
+
         cx = nx;
         cy = ny;
-        for (y = rk[1]; y <= rk[3]; y++)
-            for (x = rk[0]; x <= rk[2]; x++) {
-                int filed = 0;
-                for (i = 1; i <= before && !filed; i++)
-                    filed = in_ranges((const uint32_t(*)[4])r + (k - i) % (CHAIN_WINDOW + 1),
-                                      1, x, y);
-                if (!filed)
+        /* a cell already holding this item has it at its head: the
+         * item's entries are the last filed */
+        for (y = y0; y <= y1; y++)
+            for (x = x0; x <= x1; x++) {
+                uint32_t h = g->head[(size_t)y * g->nx + x];
+                if (h == UINT32_MAX || g->ent[h].item != g->nitem)
                     QC__TRY(enter(ctx, g, x, y));
             }
     }
