@@ -374,8 +374,8 @@ static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
             return qc__fail(ctx, QC_ERANGE,
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
-    if (taken != NULL) /* the path goes as the points come */
-        rc = qc__curve_flatten_taking(ctx, taken, r.tol, &pts, &ends);
+    if (taken != NULL) /* the path goes as the points come (checked above) */
+        rc = qc__curve_flatten_taking_checked(ctx, taken, r.tol, &pts, &ends);
     else
         rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */
