@@ -57,6 +57,7 @@ int cli_read_file(const char *path, size_t max, char **buf, size_t *len);
 typedef struct cli_output {
     FILE *f;
     char *path, *tmp; /* tmp NULL: written in place */
+    char *buf;        /* f's buffer (NULL: stdio's own), freed when f is closed */
     int failed;       /* a write failed: reported when it is closed */
 } cli_output;
 

@@ -16,6 +16,9 @@
 
 #include "cli.h"
 
+/* Bytes of each output file's stdio buffer. */
+#define OUTPUT_BUF ((size_t)1 << 20)
+
 /* The temporary files a signal removes: set and cleared with the signals
  * blocked, read by the handler, which only unlinks and re-raises. */
 static char *volatile pending[CLI_MAX_OUTPUTS];
@@ -77,6 +80,7 @@ static void output_abort(cli_output *out)
 
     if (out->f != NULL && out->f != stdout)
         fclose(out->f);
+    free(out->buf); /* after the close, which flushes into it */
     block_signals(&old);
     if (out->tmp != NULL) {
         remove(out->tmp);
@@ -178,6 +182,14 @@ static int output_open(cli_output *out, const char *path)
         output_abort(out);
         return -1;
     }
+    /* a system call per MiB, not per 4 KiB block: 200 000 of them for the
+     * 812 MB .pat of 10^6 points (stdio's own buffer if there is no room:
+     * glibc takes no size without a buffer) */
+    out->buf = malloc(OUTPUT_BUF);
+    if (out->buf != NULL && setvbuf(out->f, out->buf, _IOFBF, OUTPUT_BUF) != 0) {
+        free(out->buf);
+        out->buf = NULL;
+    }
     return 0;
 }
 
@@ -208,6 +220,8 @@ static int output_close(cli_output *out)
     if (fclose(out->f) != 0)
         err = 1;
     out->f = NULL;
+    free(out->buf);
+    out->buf = NULL;
     if (err)
         cli_error("cannot write '%s': %s", name, strerror(errno ? errno : EIO));
     return err ? -1 : 0;

@@ -254,6 +254,24 @@ static void numbers_should_format_as_printf_at_every_length(void)
     }
 }
 
+/* The .pat writer's numbers made by digit triples: every value up to and
+ * past the last one of its fast way (999.999), against printf. */
+static void thousandths_should_format_as_printf_for_every_value(void)
+{
+    uint64_t v;
+
+    for (v = 0; v <= 1002000; v++) {
+        char want[32], buf[40];
+
+        sprintf(want, "%llu.%03llu", (unsigned long long)(v / 1000),
+                (unsigned long long)(v % 1000));
+        memset(buf, 'x', sizeof buf);
+        *qc__put_thousandths(buf, v) = '\0';
+        if (strcmp(want, buf) != 0)
+            TEST_ASSERT_EQUAL_STRING(want, buf);
+    }
+}
+
 /* The line number is counted up as text: every carry (9 to 10, 999 to
  * 1000) and the closing M02 line's number. */
 static void pat_should_number_lines_across_every_carry(void)
@@ -641,6 +659,7 @@ int main(void)
     RUN_TEST(pat_should_use_the_exact_dialect);
     RUN_TEST(numbers_should_round_half_away_from_zero_and_format_exactly);
     RUN_TEST(numbers_should_format_as_printf_at_every_length);
+    RUN_TEST(thousandths_should_format_as_printf_for_every_value);
     RUN_TEST(pat_should_number_lines_across_every_carry);
     RUN_TEST(pat_should_refuse_negative_and_report_errors);
     RUN_TEST(writers_should_report_write_failure);

@@ -129,6 +129,49 @@ static void plan_should_merge_short_and_split_long_segments(void)
     TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
 }
 
+/* A stitch within a hair of max_seg either way: the plan skips the root
+ * for a square under max_seg^2 (1 - 1e-9), and must split exactly where
+ * the root says d > max_seg (ceil(d / max_seg) parts), for lengths on both
+ * sides of that cut and of max_seg itself, diagonal and straight, with
+ * ties (which count the points first) and without. */
+static void plan_should_split_exactly_where_the_length_passes_the_maximum(void)
+{
+    static const double rel[] = {-1e-6, -2e-9, -1e-9, -5e-10, -1e-15, 0,
+                                 1e-16, 1e-15, 5e-10, 1e-9, 2e-9, 1e-6, 1.0, 2.0};
+    static const double maxes[] = {0.6, 2.1166666666666667, 3.0, 25.4 / 7};
+    size_t a, b, i;
+    int ties;
+
+    for (a = 0; a < sizeof maxes / sizeof maxes[0]; a++)
+        for (b = 0; b < sizeof rel / sizeof rel[0]; b++)
+            for (ties = 0; ties <= 1; ties++) {
+                double m = maxes[a], len = m * (1 + rel[b]);
+                qc_vec2 ends[2][2] = {{{0, 0}, {len, 0}}, {{1, 2}, {1 + len * 0.6, 2 + len * 0.8}}};
+
+                for (i = 0; i < 2; i++) {
+                    qc_vec2 p = ends[i][0], q = ends[i][1];
+                    double dx = q.x - p.x, dy = q.y - p.y;
+                    double d = sqrt(dx * dx + dy * dy); /* qc_hypot's formula */
+                    size_t parts = d > m ? (size_t)ceil(d / m) : 1;
+                    qc_path path = {0};
+                    qc_stitch_params sp;
+                    qc_plan plan;
+
+                    memset(&sp, 0, sizeof sp);
+                    sp.min_segment = 0.1;
+                    sp.max_segment = m;
+                    sp.tie_stitches = ties ? 2 : 0;
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_move_to(&ctx, &path, p));
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_path_line_to(&ctx, &path, q));
+                    TEST_ASSERT_EQUAL_INT(QC_OK, qc_stitch_plan(&ctx, &path, NULL, &sp, &plan));
+                    TEST_ASSERT_EQUAL_size_t(1 + parts + (ties ? 4 : 0), plan.n);
+                    qc_plan_free(&ctx, &plan);
+                    qc_path_free(&ctx, &path);
+                }
+            }
+    TEST_ASSERT_EQUAL_size_t(0, ta.live_blocks);
+}
+
 /* The plan of the polyline pts[0..n) with default parameters. */
 static void plan_of(const qc_vec2 *pts, size_t n, qc_plan *plan)
 {
@@ -665,6 +708,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(plan_should_merge_short_and_split_long_segments);
+    RUN_TEST(plan_should_split_exactly_where_the_length_passes_the_maximum);
     RUN_TEST(plan_should_keep_a_corner_closer_than_the_minimum);
     RUN_TEST(plan_should_still_merge_straight_runs_and_tiny_corners);
     RUN_TEST(plan_should_keep_a_point_the_path_passes_twice);

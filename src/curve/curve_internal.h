@@ -41,6 +41,11 @@ QC__HIDDEN int qc__curve_flatten_check(qc_ctx *ctx, const qc_path *path, double 
  * shrinking as the points grow (flatten_taking.c): the same points. */
 QC__HIDDEN int qc__curve_flatten_taking(qc_ctx *ctx, qc_path *path, double tol,
                                         qc_points *out, qc_order *ends);
+/* The same for a caller that has made qc__curve_flatten_check's checks
+ * itself (the stitch plan: every point within 1e6 mm, tol in (0, 1000]),
+ * without a second pass over the path's points. */
+QC__HIDDEN int qc__curve_flatten_taking_checked(qc_ctx *ctx, qc_path *path, double tol,
+                                                qc_points *out, qc_order *ends);
 
 /* Widens box to hold p; the first point (*any == 0) sets it. Comparisons,
  * not fmin/fmax (a call per point): a NaN coordinate gives way as in fmin. */

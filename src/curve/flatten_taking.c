@@ -83,12 +83,18 @@ static int turn_round(qc_ctx *ctx, qc_points *out, qc_order *ends)
 int qc__curve_flatten_taking(qc_ctx *ctx, qc_path *path, double tol, qc_points *out,
                              qc_order *ends)
 {
+    QC__TRY(qc__curve_flatten_check(ctx, path, tol));
+    return qc__curve_flatten_taking_checked(ctx, path, tol, out, ends);
+}
+
+int qc__curve_flatten_taking_checked(qc_ctx *ctx, qc_path *path, double tol, qc_points *out,
+                                     qc_order *ends)
+{
     back b;
     size_t c, k = 0;
     qc_vec2 zero = {0, 0};
     int rc;
 
-    QC__TRY(qc__curve_flatten_check(ctx, path, tol));
     for (c = 0; c < path->ncmd; c++)
         k += QC__CURVE_CMD_POINTS(path->cmd[c]);
     b.ctx = ctx;

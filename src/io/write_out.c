@@ -15,7 +15,7 @@ void qc__out_init(qc__out *o, qc_ctx *ctx, qc_write_fn write, void *ud)
     o->lo.x = o->lo.y = 0;
 }
 
-static void flush(qc__out *o)
+void qc__out_flush(qc__out *o)
 {
     if (o->status == QC_OK && o->n > 0 && o->write(o->ud, o->buf, o->n) != 0)
         o->status = qc__fail(o->ctx, QC_EIO,
@@ -34,7 +34,7 @@ void qc__out_bytes(qc__out *o, const void *data, size_t len)
         size_t k = QC__OUT_BUF - o->n;
 
         if (k == 0) {
-            flush(o);
+            qc__out_flush(o);
             continue;
         }
         if (k > len)
@@ -51,24 +51,17 @@ void qc__out_str(qc__out *o, const char *s)
     qc__out_bytes(o, s, strlen(s));
 }
 
-char *qc__out_room(qc__out *o, size_t len)
-{
-    if (QC__OUT_BUF - o->n < len)
-        flush(o);
-    return o->buf + o->n;
-}
-
 void qc__out_char(qc__out *o, char c)
 {
     if (o->n == QC__OUT_BUF)
-        flush(o);
+        qc__out_flush(o);
     if (o->status == QC_OK)
         o->buf[o->n++] = c;
 }
 
 /* "00" to "99": digits() writes two digits per division, the writers'
  * hot loop (28 million points make 56 million coordinates at 10^6) */
-static const char two_digits[201] =
+const char qc__two_digits[201] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
@@ -83,11 +76,11 @@ static char *digits(char *end, uint64_t v, int min_digits)
 
         v /= 100;
         end -= 2;
-        memcpy(end, two_digits + 2 * r, 2);
+        memcpy(end, qc__two_digits + 2 * r, 2);
     }
     if (v >= 10) {
         end -= 2;
-        memcpy(end, two_digits + 2 * v, 2);
+        memcpy(end, qc__two_digits + 2 * v, 2);
     } else {
         *--end = (char)('0' + v);
     }
@@ -113,29 +106,30 @@ void qc__out_int(qc__out *o, int64_t v)
     qc__out_bytes(o, s, (size_t)(end - s));
 }
 
-char *qc__put_thousandths(char *s, uint64_t v)
+#define D10(a, l) a "0" l a "1" l a "2" l a "3" l a "4" l \
+                 a "5" l a "6" l a "7" l a "8" l a "9" l
+#define D100(a) D10(a "0", "\3") D10(a "1", "\3") D10(a "2", "\3") D10(a "3", "\3") \
+                D10(a "4", "\3") D10(a "5", "\3") D10(a "6", "\3") D10(a "7", "\3") \
+                D10(a "8", "\3") D10(a "9", "\3")
+const char qc__three_digits[4001] = D10("00", "\1") D10("01", "\2") D10("02", "\2")
+    D10("03", "\2") D10("04", "\2") D10("05", "\2") D10("06", "\2") D10("07", "\2")
+    D10("08", "\2") D10("09", "\2") D100("1") D100("2") D100("3") D100("4") D100("5")
+    D100("6") D100("7") D100("8") D100("9");
+#undef D100
+#undef D100
+#undef D10
+
+char *qc__put_thousandths_long(char *s, uint64_t v)
 {
     uint64_t ip = v / 1000;
     unsigned fp = (unsigned)(v - ip * 1000);
+    char tmp[24], *end = tmp + sizeof tmp, *b = digits(end, ip, 1);
 
-    if (ip < 10) {
-        *s++ = (char)('0' + ip);
-    } else if (ip < 100) {
-        memcpy(s, two_digits + 2 * ip, 2);
-        s += 2;
-    } else if (ip < 1000) {
-        *s++ = (char)('0' + ip / 100);
-        memcpy(s, two_digits + 2 * (ip % 100), 2);
-        s += 2;
-    } else { /* past 39 in: made backwards, moved up */
-        char tmp[24], *end = tmp + sizeof tmp, *b = digits(end, ip, 1);
-
-        memcpy(s, b, (size_t)(end - b));
-        s += end - b;
-    }
+    memcpy(s, b, (size_t)(end - b));
+    s += end - b;
     *s++ = '.';
     *s++ = (char)('0' + fp / 100);
-    memcpy(s, two_digits + 2 * (fp % 100), 2);
+    memcpy(s, qc__two_digits + 2 * (fp % 100), 2);
     return s + 2;
 }
 
@@ -174,23 +168,6 @@ void qc__out_fixed(qc__out *o, int64_t v, int decimals, int trim)
 
 int qc__out_finish(qc__out *o)
 {
-    flush(o);
+    qc__out_flush(o);
     return o->status;
-}
-
-int64_t qc__round(double x)
-{
-    /* the conversion truncates, which is floor for x + 0.5 >= 0: the same
-     * values as floor() without a libm call per coordinate */
-    return x >= 0 ? (int64_t)(x + 0.5) : -(int64_t)(-x + 0.5);
-}
-
-int64_t qc__mm_to_units(double mm, double units_per_mm)
-{
-    return qc__round(mm * units_per_mm);
-}
-
-int64_t qc__mm_to_inch_units(double mm, double units_per_inch)
-{
-    return qc__round(mm / QC__MM_PER_IN * units_per_inch);
 }

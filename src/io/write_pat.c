@@ -77,7 +77,9 @@ int qc__write_pat(qc_ctx *ctx, const qc_plan *plan, const qc_io_opts *opts,
         *s++ = 'N';
         memcpy(s, line.d, sizeof line.d);
         s += line.len;
-        memcpy(s, i == 0 || (plan->flags[i] & QC_ST_JUMP) ? "G00X" : "G01X", 4);
+        memcpy(s, "G01X", 4);
+        if (i == 0 || (plan->flags[i] & QC_ST_JUMP))
+            s[2] = '0';
         s = qc__put_thousandths(s + 4, (uint64_t)x); /* x, y >= 0: checked above */
         *s++ = 'Y';
         s = qc__put_thousandths(s, (uint64_t)y);

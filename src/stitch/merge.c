@@ -144,14 +144,13 @@ static uint32_t cell_of(const grid *g, qc_vec2 p)
     return cy * g->gx + cx;
 }
 
-/* place[i]: for a junction (v[i] recurs in v[0..n) other than as a repeat
- * of the point just before: a run of equal points is one visit) the least
- * index of its place, else QC__NOT_JOINT. A hash table on the exact
- * coordinates finds each place's first index in one pass (a sort by place
- * was a third of a 10^5-point job); a slot holds (first index + 1) * 2,
- * plus 1 once the place has a second visit. The answer does not depend on
- * the table's order. */
-void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
+/* place[i]: the slot of v[i]'s place in the table, whose entry holds (its
+ * least index + 1) * 2, plus 1 if it is a junction (v[i] recurs in
+ * v[0..n) other than as a repeat of the point just before: a run of equal
+ * points is one visit). A hash table on the exact coordinates finds each
+ * place's first index in one pass (a sort by place was a third of a
+ * 10^5-point job). The answer does not depend on the table's order. */
+static void junction_slots(qc__merge *mg, const qc_vec2 *v, size_t n)
 {
     uint32_t *table = mg->table, *start = mg->start;
     uint32_t *place = mg->place;
@@ -183,11 +182,24 @@ void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
             table[h] |= 1u; /* a new visit, not a repeat of the point before */
         place[i] = h;
     }
-    for (i = 0; i < n; i++) {
-        uint32_t e = table[place[i]];
+}
 
-        place[i] = e & 1 ? e / 2 - 1 : QC__NOT_JOINT;
-    }
+/* The least index of v[i]'s place if it is a junction, else QC__NOT_JOINT
+ * (place[i] its slot, as junction_slots left it). */
+static uint32_t joint_of(const qc__merge *mg, size_t i)
+{
+    uint32_t e = mg->table[mg->place[i]];
+
+    return e & 1 ? e / 2 - 1 : QC__NOT_JOINT;
+}
+
+void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n)
+{
+    size_t i;
+
+    junction_slots(mg, v, n);
+    for (i = 0; i < n; i++)
+        mg->place[i] = joint_of(mg, i);
 }
 
 static double dist(qc_vec2 a, qc_vec2 b)
@@ -224,7 +236,6 @@ static void keep_tail(qc_vec2 *m, size_t *k, qc_vec2 *tail, qc_vec2 p)
 size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg,
                        double floor_len, double keep, qc_vec2 *m)
 {
-    const uint32_t *place = mg->place;
     unsigned char *gone = mg->gone;
     qc_vec2 tail; /* m[k - 1] */
     size_t i, k = 0, at = 0, before = 0; /* v indices of m[k - 1] and m[k - 2] */
@@ -235,12 +246,14 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
 
     if (n == 0)
         return 0;
-    qc__merge_junctions(mg, v, n);
+    /* the slots only: the few short steps look their junctions up */
+    junction_slots(mg, v, n);
     memset(gone, 0, n / 8 + 1);
     tail = v[0];
     k = 1;
     for (i = 1; i < n; i++) {
         int last = i + 1 == n, joints, here_ok, prev_ok;
+        uint32_t pi, pa; /* the junctions of v[i] and v[at] */
         double dx = v[i].x - tail.x, dy = v[i].y - tail.y, d, drop_here, drop_prev;
 
         d = dx * dx + dy * dy > long2 ? HUGE_VAL : dist(tail, v[i]);
@@ -253,9 +266,11 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
             continue;
         }
         /* a short step (most are not: the junctions are read only here) */
-        joints = place[i] != QC__NOT_JOINT && place[at] != QC__NOT_JOINT;
-        here_ok = !last && place[i] == QC__NOT_JOINT;
-        prev_ok = k >= 2 && place[at] == QC__NOT_JOINT;
+        pi = joint_of(mg, i);
+        pa = joint_of(mg, at);
+        joints = pi != QC__NOT_JOINT && pa != QC__NOT_JOINT;
+        here_ok = !last && pi == QC__NOT_JOINT;
+        prev_ok = k >= 2 && pa == QC__NOT_JOINT;
         /* dropping v[i]: the chord runs on from m[k - 1] to v[i + 1];
          * moving m[k - 1] onto v[i]: the chord runs from m[k - 2] */
         drop_here = last ? HUGE_VAL : stray(v, at + 1, i + 1, tail, v[i + 1]);
@@ -277,9 +292,9 @@ size_t qc__merge_piece(qc__merge *mg, const qc_vec2 *v, size_t n, double min_seg
         /* too short to sew: merge all the same, sparing a junction; of two,
          * as an earlier pass did; else where it strays less */
         if (joints && !last) {
-            here_ok = is_gone(gone, place[i]) ||
-                      (!is_gone(gone, place[at]) && (k < 2 || drop_here <= drop_prev));
-            set_gone(gone, here_ok ? place[i] : place[at]);
+            here_ok = is_gone(gone, pi) ||
+                      (!is_gone(gone, pa) && (k < 2 || drop_here <= drop_prev));
+            set_gone(gone, here_ok ? pi : pa);
         } else if (here_ok == prev_ok) {
             here_ok = !last && drop_here <= drop_prev;
         }

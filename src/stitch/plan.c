@@ -83,6 +83,10 @@ int qc_plan_push(qc_ctx *ctx, qc_plan *plan, qc_vec2 p, unsigned flags)
 typedef struct resolved {
     double tol, min_seg, max_seg, tie_len;
     double floor_len, keep; /* the merge's: MIN_CORNER_STITCH and MERGE_STRAY at most */
+    /* a stitch whose square is at most this is shorter than max_seg,
+     * whatever the square root rounds to: no root, no split (HUGE_VAL
+     * without a maximum) */
+    double short2;
     int ties;
 } resolved;
 
@@ -102,6 +106,7 @@ static int resolve(qc_ctx *ctx, const qc_stitch_params *in, resolved *r)
     r->floor_len = fmin(r->min_seg, MIN_CORNER_STITCH);
     r->keep = fmin(r->tol, MERGE_STRAY);
     r->ties = in->tie_stitches;
+    r->short2 = r->max_seg > 0 ? r->max_seg * r->max_seg * (1 - 1e-9) : HUGE_VAL;
     if (!(r->tol > 0 && r->tol <= 1000))
         return qc__fail(ctx, QC_ERANGE,
                         "stitch tolerance %g mm must be in (0, 1000]", in->tolerance);
@@ -200,20 +205,29 @@ static size_t start_tie(const qc_vec2 *m, size_t n, const resolved *r, double *l
 /* The stitch from a to b, split into equal parts no longer than max_seg. */
 static int sew_to(qc_ctx *ctx, qc_plan *out, qc_vec2 a, qc_vec2 b, const resolved *r)
 {
-    double d = r->max_seg > 0 ? dist(a, b) : 0; /* no length to split at: no root */
+    double dx = b.x - a.x, dy = b.y - a.y;
 
-    if (r->max_seg > 0 && d > r->max_seg) {
-        double parts = ceil(d / r->max_seg);
-        size_t j, np = (size_t)parts;
+    if (dx * dx + dy * dy > r->short2) { /* perhaps longer than max_seg: measured */
+        double d = dist(a, b);
 
-        for (j = 1; j < np; j++) {
-            double t = (double)j / parts;
-            qc_vec2 q;
+        if (d > r->max_seg) {
+            double parts = ceil(d / r->max_seg);
+            size_t j, np = (size_t)parts;
 
-            q.x = a.x + (b.x - a.x) * t;
-            q.y = a.y + (b.y - a.y) * t;
-            QC__TRY(plan_add(ctx, out, q, 0));
+            for (j = 1; j < np; j++) {
+                double t = (double)j / parts;
+                qc_vec2 q;
+
+                q.x = a.x + (b.x - a.x) * t;
+                q.y = a.y + (b.y - a.y) * t;
+                QC__TRY(plan_add(ctx, out, q, 0));
+            }
         }
+    }
+    if (out->n < out->cap) { /* build() counted the room: no call per point */
+        out->p[out->n] = b;
+        out->flags[out->n++] = 0;
+        return QC_OK;
     }
     return plan_add(ctx, out, b, 0);
 }
@@ -253,8 +267,13 @@ static double piece_points(const qc_vec2 *m, size_t n, const resolved *r)
 
     if (!(r->max_seg > 0)) /* a point per stitch: no pass over the points */
         return total + (double)(n - 1);
-    for (i = 1; i < n; i++)
-        total += r->max_seg > 0 ? fmax(1.0, ceil(dist(m[i - 1], m[i]) / r->max_seg)) : 1.0;
+    for (i = 1; i < n; i++) {
+        double dx = m[i].x - m[i - 1].x, dy = m[i].y - m[i - 1].y;
+
+        /* under short2 the quotient is below 1 (or rounds to it): one */
+        total += dx * dx + dy * dy <= r->short2
+                 ? 1.0 : fmax(1.0, ceil(dist(m[i - 1], m[i]) / r->max_seg));
+    }
     return total;
 }
 
@@ -355,8 +374,8 @@ static int stitch_plan(qc_ctx *ctx, const qc_path *path, qc_path *taken,
             return qc__fail(ctx, QC_ERANGE,
                             "path point %lu (%g, %g) is not finite or beyond 1e6 mm",
                             (unsigned long)i, path->pt[i].x, path->pt[i].y);
-    if (taken != NULL) /* the path goes as the points come */
-        rc = qc__curve_flatten_taking(ctx, taken, r.tol, &pts, &ends);
+    if (taken != NULL) /* the path goes as the points come (checked above) */
+        rc = qc__curve_flatten_taking_checked(ctx, taken, r.tol, &pts, &ends);
     else
         rc = qc_curve_flatten(ctx, path, r.tol, &pts, &ends);
     qc__points_fit(ctx, &pts); /* before the merge's buffers join it at the peak */

@@ -34,7 +34,8 @@ QC__HIDDEN void qc__merge_free(qc_ctx *ctx, qc__merge *mg);
  * mg->place[i] for the piece v[0..n) (n <= the longest given to init): for
  * a junction (v[i] recurs in v other than as a repeat of the point just
  * before: a run of equal points is one visit) the least index of its
- * place, else QC__NOT_JOINT (merge.c; qc__merge_piece's first step).
+ * place, else QC__NOT_JOINT (merge.c; what qc__merge_piece finds first,
+ * reading a junction only at a short step).
  */
 QC__HIDDEN void qc__merge_junctions(qc__merge *mg, const qc_vec2 *v, size_t n);
 /*
