@@ -100,11 +100,15 @@ static int reserve_vertices(qc_ctx *ctx, grow *g, size_t need)
     return QC__RESERVE(ctx, g->q, g->qcap, need);
 }
 
-static size_t cell_index(const grow *g, qc_vec2 p)
+/* The cell of p, and its tile in *tile unless tile is NULL (from the
+ * cell's column and row: no division by the row length). */
+static inline size_t cell_tile(const grow *g, qc_vec2 p, size_t *tile)
 {
     size_t i = qc__grid_cell((p.x - g->x0) / g->h, g->gx);
     size_t j = qc__grid_cell((p.y - g->y0) / g->h, g->gy);
 
+    if (tile != NULL)
+        *tile = j / TILE_CELLS * g->tx + i / TILE_CELLS;
     return j * g->gx + i;
 }
 
@@ -137,8 +141,9 @@ static int bin(qc_ctx *ctx, grow *g)
     QC__TRY(QC__RESERVE(ctx, g->still, g->still_cap, g->n));
     memset(g->start, 0, (nc + 1) * sizeof *g->start);
     for (i = 0; i < g->n; i++) {
-        g->cell[i] = (uint32_t)cell_index(g, g->p[i]);
-        g->still[i] = (unsigned char)(g->any_frozen ? g->frozen[tile_of(g, g->cell[i])] : 0);
+        size_t t = 0;
+        g->cell[i] = (uint32_t)cell_tile(g, g->p[i], g->any_frozen ? &t : NULL);
+        g->still[i] = (unsigned char)(g->any_frozen ? g->frozen[t] : 0);
         g->still[i] = g->still[i] == 3 ? 2 : g->still[i] == 1; /* 2: not binned */
         if (g->still[i] != 2)
             g->start[g->cell[i] + 1]++;
@@ -264,8 +269,9 @@ static int scale_field(qc_ctx *ctx, grow *g, const qc_region *r, double d)
  * a's push is summed in registers (in the same order as one by one, so the
  * sums are the same to the bit); r2 is tested before any root is taken.
  * The slots within R are first gathered without a branch (a third of the
- * pairs are, and which ones cannot be guessed), a chunk at a time, then
- * summed in slot order as before. */
+ * pairs are, and which ones cannot be guessed), a chunk at a time, two
+ * slots a turn (the loop's upkeep halved), then summed in slot order as
+ * before. */
 #define REPEL_CHUNK 64
 static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double R2)
 {
@@ -279,7 +285,15 @@ static void repel_run(grow *g, size_t a, size_t b0, size_t b1, double R, double 
 
     for (lo = b0; lo < b1; lo += REPEL_CHUNK) {
         size_t hi = b1 - lo > REPEL_CHUNK ? lo + REPEL_CHUNK : b1;
-        for (b = lo, m = 0; b < hi; b++) {
+        for (b = lo, m = 0; b + 1 < hi; b += 2) {
+            double dx0 = u.x - sv[b].x, dy0 = u.y - sv[b].y;
+            double dx1 = u.x - sv[b + 1].x, dy1 = u.y - sv[b + 1].y;
+            near[m] = (uint32_t)b;
+            m += dx0 * dx0 + dy0 * dy0 < R2;
+            near[m] = (uint32_t)(b + 1);
+            m += dx1 * dx1 + dy1 * dy1 < R2;
+        }
+        if (b < hi) {
             double dx = u.x - sv[b].x, dy = u.y - sv[b].y;
             near[m] = (uint32_t)b;
             m += dx * dx + dy * dy < R2;
@@ -356,7 +370,7 @@ static void repulsion(grow *g, double R)
         g->sv[a].x = g->p[i].x;
         g->sv[a].y = g->p[i].y;
         g->sv[a].reach = g->reach[i];
-        g->sv[a].scale = scale_at(g, g->p[i]);
+        g->sv[a].scale = g->scaled ? scale_at(g, g->p[i]) : 1.0;
         g->sv[a].i = i;
         g->sf[a].x = g->sf[a].y = 0.0;
         g->sc[a] = 0;
@@ -488,19 +502,23 @@ static void step(grow *g, const qc__grow_opts *o, qc_rng *rng)
     }
     repulsion(g, REACH * d);
     for (i = 0; i < n; i++) {
-        qc_vec2 a = g->p[before(g, i)], p = g->p[i], b = g->p[after(g, i)];
-        qc_vec2 f = g->f[i], m;
-        double w = circumradius(a, p, b, seg_before(g, i), g->seg[i]) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
-        double push = 0.0, pull = 0.0;
+        qc_vec2 a, p = g->p[i], b, f, m;
+        double w, push = 0.0, pull = 0.0;
         qc_vec2 pull_dir = QC__V2(0.0, 0.0);
         double mx, my, len, v, known = g->pv[i], wall = WALL * o->clear + 2.0 * o->sdf->h;
 
         if ((g->open && (i == 0 || i + 1 == n)) || g->still[i]) {
-            /* the ends stay on their ports, a settled tile's vertices in place */
+            /* the ends stay on their ports, a settled tile's vertices in
+             * place (their fairing weight is not worked out: most of a large
+             * block's vertices once its tiles settle) */
             g->q[i] = p;
             g->qv[i] = g->pv[i];
             continue;
         }
+        a = g->p[before(g, i)];
+        b = g->p[after(g, i)];
+        f = g->f[i];
+        w = circumradius(a, p, b, seg_before(g, i), g->seg[i]) < TURN_SLACK * o->turn ? FAIR_TIGHT : FAIR;
         if (!(known >= reach_b + o->sdf->h)) /* the bound says too little */
             known = qc__sdf_at(o->sdf, p);
         v = known;
@@ -727,7 +745,8 @@ static void settle(grow *g, const qc__grow_opts *o, size_t it)
         g->tile_now[t] = 0.0;
     for (i = 0; i < n; i++) {
         qc_vec2 a = g->p[i], b = g->p[i + 1 == n ? 0 : i + 1];
-        size_t tt = tile_of(g, cell_index(g, a));
+        size_t tt;
+        (void)cell_tile(g, a, &tt);
         if (g->frozen[tt] == 2)
             g->tile_now[tt] += qc__hypot(b.x - a.x, b.y - a.y);
     }
