@@ -76,32 +76,35 @@ void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
 /* The columns of a seeded raster (cells 0 or FAR): each cell's squared
  * distance to the nearest seed in its column, capped at FAR, which is what
  * the parabola envelope gives for such a column. Two sweeps down and up the
- * rows in memory order, with no division; run[i] counts cells since the
- * last seed in column i (-1: none yet). */
+ * rows in memory order, with no division and no branch per cell: run[i]
+ * counts cells since the last seed in column i, starting from NONE (no seed
+ * yet: a count of NONE or more squares past FAR). Counts stay below 2^24,
+ * so the floats hold them exactly. */
+#define NONE ((long)1 << 23) /* > QC__GAP_MAX_CELLS, + ny < 2^24 */
 static void columns_by_sweeps(qc__gap_grid *g, long *run)
 {
     const double far = (double)(float)QC__GAP_FAR;
     size_t i, j, nx = g->nx, ny = g->ny;
 
     for (i = 0; i < nx; i++)
-        run[i] = -1;
-    for (j = 0; j < ny; j++) { /* down: f holds the distance from above, or -1 */
+        run[i] = NONE;
+    for (j = 0; j < ny; j++) { /* down: f holds the distance from above */
         float *row = g->f + j * nx;
         for (i = 0; i < nx; i++) {
-            run[i] = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            run[i] = row[i] == 0.0f ? 0 : run[i] + 1;
             row[i] = (float)run[i];
         }
     }
     for (i = 0; i < nx; i++)
-        run[i] = -1;
+        run[i] = NONE;
     for (j = ny; j-- > 0;) { /* up: the nearer of the two, squared */
         float *row = g->f + j * nx;
         for (i = 0; i < nx; i++) {
-            long up = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
-            long down = (long)row[i], best = down < 0 || (up >= 0 && up < down) ? up : down;
+            long down = (long)row[i], up = down == 0 ? 0 : run[i] + 1;
+            long best = up < down ? up : down;
             double sq = (double)best * (double)best;
             run[i] = up;
-            row[i] = (float)(best < 0 || sq > far ? far : sq);
+            row[i] = (float)(sq > far ? far : sq);
         }
     }
 }

@@ -42,8 +42,20 @@ static double larger(double a, double b)
     return a > b ? a : b;
 }
 
+/* Whether square i of a row lies within reach of q, fy2 its row's share. */
+static int square_within(const qc__cover *c, qc_vec2 q, double fy2, long i)
+{
+    double xlo = c->x0 + (double)i * c->side, xhi = xlo + c->side;
+    double fx = larger(q.x - xlo, xhi - q.x);
+
+    return fx * fx + fy2 < c->lim;
+}
+
 /* The squares of row j whose farthest corner from q lies within reach:
- * the span the row's height leaves, each square checked on its corners. */
+ * the span the row's height leaves, checked on its corners. Along the
+ * span q.x - xlo falls and xhi - q.x rises (rounding is monotone), so the
+ * farthest corner's distance falls then rises and the squares within
+ * reach run unbroken: only the ends are checked, from both sides. */
 static void mark_row(qc__cover *c, qc_vec2 q, long j)
 {
     double ylo = c->y0 + (double)j * c->side, yhi = ylo + c->side;
@@ -58,12 +70,12 @@ static void mark_row(qc__cover *c, qc_vec2 q, long j)
     b = floor((q.x + r - c->x0) / c->side) - 1.0;
     i = a > 0.0 ? (long)a : 0;
     i1 = b < (double)c->nx - 1.0 ? (long)b : (long)c->nx - 1;
-    for (; i <= i1; i++) {
-        double xlo = c->x0 + (double)i * c->side, xhi = xlo + c->side;
-        double fx = larger(q.x - xlo, xhi - q.x);
-        if (fx * fx + fy2 < c->lim)
-            row[i] = 1;
-    }
+    while (i <= i1 && !square_within(c, q, fy2, i))
+        i++;
+    while (i1 >= i && !square_within(c, q, fy2, i1))
+        i1--;
+    for (; i <= i1; i++)
+        row[i] = 1;
 }
 
 void qc__cover_mark(qc__cover *c, qc_vec2 q)
