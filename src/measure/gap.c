@@ -186,6 +186,44 @@ static int row_exact(row_scratch *r, size_t nx, size_t j, int failed)
     return 1;
 }
 
+/* qc__edt_1d of a row of column values in place, the floats read and
+ * written as they go (no copies to and from doubles): the same arithmetic,
+ * f[p] taken back from f[p] + p^2, exact as the values are integers (at
+ * most QC__GAP_FAR, p below 2^22: all far below 2^53). */
+static void row_envelope(float *row, size_t n, row_scratch *r)
+{
+    double *hv = r->out, *z = r->z; /* hv[k]: f[v[k]] + v[k]^2 */
+    int *v = r->v, k = 0, q, nn = (int)n;
+
+    v[0] = 0;
+    hv[0] = (double)row[0] + 0.0;
+    z[0] = -HUGE_VAL;
+    z[1] = HUGE_VAL;
+    for (q = 1; q < nn; q++) {
+        double hq = (double)row[q] + (double)q * q, s;
+
+        s = (hq - hv[k]) / (2.0 * (q - v[k]));
+        while (s <= z[k]) { /* z[0] = -inf stops this at k == 0 */
+            k--;
+            s = (hq - hv[k]) / (2.0 * (q - v[k]));
+        }
+        k++;
+        v[k] = q;
+        hv[k] = hq;
+        z[k] = s;
+        z[k + 1] = HUGE_VAL;
+    }
+    /* parabola k serves the cells q <= z[k + 1] past the last one's: run by
+     * run, its own f[p] once (what qc__edt_1d's per-cell scan picks) */
+    for (k = 0, q = 0; q < nn; k++) {
+        double zk = z[k + 1], fp = hv[k] - (double)v[k] * v[k], dq;
+        int last = zk >= (double)(nn - 1) ? nn - 1 : (zk < (double)q ? q - 1 : (int)zk);
+
+        for (dq = (double)(q - v[k]); q <= last; q++, dq += 1.0)
+            row[q] = (float)(dq * dq + fp);
+    }
+}
+
 /* qc__gap_transform; far (seeds only on the region's boundary): every
  * row by the envelope, looking out would only run over its budget, and
  * with rows not NULL only the rows it flags. */
@@ -201,12 +239,13 @@ static int transform(qc_ctx *ctx, qc__gap_grid *g, int far, const unsigned char 
         float *row = g->f + j * g->nx;
         if (rows != NULL && !rows[j])
             continue;
+        if (far) {
+            row_envelope(row, g->nx, &r);
+            continue;
+        }
         for (i = 0; i < g->nx; i++)
             r.col[i] = (double)row[i];
-        if (far)
-            qc__edt_1d(r.col, g->nx, r.out, r.v, r.z);
-        else
-            failed = row_exact(&r, g->nx, j, failed);
+        failed = row_exact(&r, g->nx, j, failed);
         for (i = 0; i < g->nx; i++)
             row[i] = (float)r.out[i];
     }
