@@ -5,6 +5,7 @@
  * seeds are scattered, in one column, one row, one cell, round the border
  * (a region's outline: the rows switch to the envelope) or absent.
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -36,6 +37,96 @@ static int seeded(size_t i, size_t j, unsigned every, unsigned salt)
     h *= 0x5bd1e995u;
     h ^= h >> 15;
     return every > 0 && h % every == 0;
+}
+
+/* qc__gap_transform_far on a copy of g's seeds: every row (rows NULL),
+ * then only the rows flagged (two in three), each equal to want there. */
+static void check_far(const qc__gap_grid *g, const float *want)
+{
+    size_t i, j, cells = g->nx * g->ny;
+    qc__gap_grid c = *g;
+    unsigned char *rows = (unsigned char *)testalloc_fn(&ta, NULL, 0, g->ny);
+    int pass;
+
+    c.f = (float *)testalloc_fn(&ta, NULL, 0, cells * sizeof *c.f);
+    TEST_ASSERT_NOT_NULL(c.f);
+    TEST_ASSERT_NOT_NULL(rows);
+    for (j = 0; j < g->ny; j++)
+        rows[j] = (unsigned char)(j % 3 != 1);
+    for (pass = 0; pass < 2; pass++) {
+        memcpy(c.f, g->f, cells * sizeof *c.f);
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform_far(&ctx, &c, pass ? rows : NULL));
+        for (j = 0; j < g->ny; j++)
+            for (i = 0; i < g->nx && (pass == 0 || rows[j]); i++)
+                TEST_ASSERT_EQUAL_FLOAT(want[j * g->nx + i], c.f[j * g->nx + i]);
+    }
+    testalloc_fn(&ta, c.f, cells * sizeof *c.f, 0);
+    testalloc_fn(&ta, rows, g->ny, 0);
+}
+
+/* qc__edt_1d against the minimum over every cell of (q - p)^2 + f[p], on
+ * rows of integer values (FAR among them) as the transforms give it. */
+void test_edt_1d_should_match_brute_force(void)
+{
+    static const size_t len[] = {1, 2, 3, 17, 64, 139};
+    double f[139], d[139], z[140];
+    int v[139];
+    size_t t, n, q, p;
+    unsigned salt;
+
+    for (t = 0; t < sizeof len / sizeof *len; t++)
+        for (salt = 0; salt < 8; salt++) {
+            n = len[t];
+            for (q = 0; q < n; q++) {
+                unsigned h = (unsigned)seeded(q, n, 1, salt) + (unsigned)(q * 2654435761u ^ salt);
+                h ^= h >> 11;
+                f[q] = seeded(q, salt, 5, (unsigned)n) ? QC__GAP_FAR : (double)(h % 900u);
+            }
+            qc__edt_1d(f, n, d, v, z);
+            for (q = 0; q < n; q++) {
+                double best = HUGE_VAL;
+                for (p = 0; p < n; p++) {
+                    double dq = (double)q - (double)p, e = dq * dq + f[p];
+                    best = e < best ? e : best;
+                }
+                TEST_ASSERT_EQUAL_DOUBLE(best, d[q]);
+            }
+        }
+}
+
+/* qc__raster_inside against qc_region_contains at every sample, on a comb
+ * whose teeth give rows of 2 to 4 * TEETH crossings (sorted by insertion
+ * when few, by qsort when many) and a square hole among the teeth' roots. */
+#define TEETH 12
+void test_raster_inside_should_agree_with_contains(void)
+{
+    qc_vec2 comb[4 * TEETH + 2], hole[4] = {{3, 2}, {3, 5}, {9, 5}, {9, 2}};
+    qc_region r;
+    unsigned char *mask;
+    size_t k = 0, t, i, j, nx = 140, ny = 90;
+    double x0 = -1.013, y0 = -1.007, h = 0.37;
+
+    comb[k++] = QC__V2(0, 0);
+    for (t = 0; t < TEETH; t++) { /* along the top: up a tooth, across, down */
+        comb[k++] = QC__V2(4.0 * (double)t + 1.0, 8.0);
+        comb[k++] = QC__V2(4.0 * (double)t + 1.0, 20.0 + (double)(t % 5));
+        comb[k++] = QC__V2(4.0 * (double)t + 3.0, 20.0 + (double)(t % 5));
+        comb[k++] = QC__V2(4.0 * (double)t + 3.0, 8.0);
+    }
+    comb[k++] = QC__V2(4.0 * TEETH + 1.0, 0);
+    memset(&r, 0, sizeof r);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, comb, k));
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc_region_add_ring(&ctx, &r, hole, 4));
+    mask = (unsigned char *)testalloc_fn(&ta, NULL, 0, nx * ny);
+    TEST_ASSERT_NOT_NULL(mask);
+    TEST_ASSERT_EQUAL_INT(QC_OK, qc__raster_inside(&ctx, &r, x0, y0, h, nx, ny, mask));
+    for (j = 0; j < ny; j++)
+        for (i = 0; i < nx; i++) {
+            qc_vec2 p = QC__V2(x0 + (double)i * h, y0 + (double)j * h);
+            TEST_ASSERT_EQUAL_INT(qc_region_contains(&r, p), mask[j * nx + i]);
+        }
+    testalloc_fn(&ta, mask, nx * ny, 0);
+    qc_region_free(&ctx, &r);
 }
 
 /* Seeds the nx x ny raster by kind, transforms it and compares each cell
@@ -78,6 +169,7 @@ static void check(size_t nx, size_t ny, int kind, unsigned every)
                     }
             want[j * nx + i] = (float)best;
         }
+    check_far(&g, want);
     TEST_ASSERT_EQUAL_INT(QC_OK, qc__gap_transform(&ctx, &g));
     for (i = 0; i < cells; i++)
         if (want[i] != g.f[i]) {
@@ -194,5 +286,7 @@ int main(void)
     RUN_TEST(test_gap_transform_should_match_brute_force_seeded_round_the_border);
     RUN_TEST(test_gap_transform_should_leave_an_unseeded_raster_far);
     RUN_TEST(test_gap_transform_above_should_agree_where_it_matters);
+    RUN_TEST(test_edt_1d_should_match_brute_force);
+    RUN_TEST(test_raster_inside_should_agree_with_contains);
     return UNITY_END();
 }

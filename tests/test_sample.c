@@ -198,6 +198,34 @@ static void test_cover_marks_squares_wholly_inside_the_disk(void)
         }
 }
 
+/* A seed's bucketed distance is every cell's nearest seed's, checked
+ * against all seeds, buckets of 1 to 9 cells, seeds clustered and lone. */
+static void test_seed_buckets_give_the_nearest_seed(void)
+{
+    const size_t nx = 41, ny = 29;
+    size_t cell[60], n = 0, k;
+    long b, i, j;
+
+    for (k = 0; k < 40; k++) /* a cluster in a corner, a scatter, one far cell */
+        cell[n++] = (k < 12) ? (k % 4) * nx + k / 4 : (k * 7919u) % (nx * ny);
+    cell[n++] = nx * ny - 1;
+    for (b = 1; b <= 9; b += 4) {
+        qc__seed_buckets sb;
+        TEST_ASSERT_EQUAL_INT(QC_OK, qc__seed_buckets_build(&ctx, nx, ny, cell, n, b, &sb));
+        for (j = 0; j < (long)ny; j++)
+            for (i = 0; i < (long)nx; i++) {
+                double best = HUGE_VAL;
+                for (k = 0; k < n; k++) {
+                    double dx = (double)(long)(cell[k] % nx) - (double)i;
+                    double dy = (double)(long)(cell[k] / nx) - (double)j;
+                    best = fmin(best, dx * dx + dy * dy);
+                }
+                TEST_ASSERT_EQUAL_DOUBLE(best, qc__seed_dist2(&sb, i, j));
+            }
+        qc__seed_buckets_free(&ctx, &sb);
+    }
+}
+
 /* The holes pass leaves no place well inside farther than the gap from
  * every point (give or take its d / 8 raster): after a sparse start (many
  * holes: one transform of the raster) and after a Poisson fill (a few:
@@ -340,6 +368,7 @@ int main(void)
     RUN_TEST(test_samples_avoid_holes_and_keep_the_margin);
     RUN_TEST(test_poisson_is_spaced_and_maximal_in_every_part);
     RUN_TEST(test_cover_marks_squares_wholly_inside_the_disk);
+    RUN_TEST(test_seed_buckets_give_the_nearest_seed);
     RUN_TEST(test_fill_holes_leaves_no_place_beyond_the_gap);
     RUN_TEST(test_same_seed_same_points_other_seed_other_points);
     RUN_TEST(test_bad_requests_are_refused_before_allocating);

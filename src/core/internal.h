@@ -132,7 +132,8 @@ QC__HIDDEN int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0
                                  unsigned char *mask);
 
 /* Felzenszwalb-Huttenlocher 1-D squared distance transform of f[0..n)
- * (step 1) into d; v (n ints) and z (n + 1 doubles) are scratch. */
+ * (step 1) into d (not overlapping f: it is scratch till the last pass);
+ * v (n ints) and z (n + 1 doubles) are scratch. */
 QC__HIDDEN void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z);
 
 /* ---- segments in a uniform grid (seg_grid.c) ---- */

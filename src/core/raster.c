@@ -24,6 +24,26 @@ static int cmp_double(const void *pa, const void *pb)
     return (a > b) - (a < b);
 }
 
+/* Sorts a row's crossings: by insertion when few (most rows cross an
+ * outline a few times; a qsort call costs more than the sort), else
+ * qsort. Either way the same ascending values. */
+#define FEW_CROSSINGS 16
+static void sort_crossings(double *x, size_t n)
+{
+    size_t i, k;
+
+    if (n > FEW_CROSSINGS) {
+        qsort(x, n, sizeof *x, cmp_double);
+        return;
+    }
+    for (i = 1; i < n; i++) {
+        double t = x[i];
+        for (k = i; k > 0 && x[k - 1] > t; k--)
+            x[k] = x[k - 1];
+        x[k] = t;
+    }
+}
+
 /* Where the region's edges cross each row's line y0 + j h: with xs NULL
  * counts them into start[j + 1], else stores their x at start[j]++. */
 static void row_crossings(const qc_region *region, double y0, double h, size_t ny,
@@ -78,7 +98,7 @@ int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0
     for (j = ny; j-- > 0;) {
         size_t b = j ? start[j - 1] : 0, e = start[j], c;
 
-        qsort(xs + b, e - b, sizeof *xs, cmp_double);
+        sort_crossings(xs + b, e - b);
         for (c = b; c + 1 < e; c += 2) {
             double lo = ceil((xs[c] - x0) / h), hi = ceil((xs[c + 1] - x0) / h);
 
@@ -96,22 +116,25 @@ int qc__raster_inside(qc_ctx *ctx, const qc_region *region, double x0, double y0
 void qc__edt_1d(const double *f, size_t n, double *d, int *v, double *z)
 {
     int k = 0, q, nn = (int)n;
+    double *hv = d; /* meanwhile f[v[k]] + v[k]^2 at d[k] (k <= q: d is free till the end) */
 
+    if (nn < 1)
+        return;
     v[0] = 0;
+    hv[0] = f[0] + 0.0;
     z[0] = -HUGE_VAL;
     z[1] = HUGE_VAL;
     for (q = 1; q < nn; q++) {
-        double s;
-        int p = v[k];
+        double hq = f[q] + (double)q * q, s;
 
-        s = ((f[q] + (double)q * q) - (f[p] + (double)p * p)) / (2.0 * (q - p));
+        s = (hq - hv[k]) / (2.0 * (q - v[k]));
         while (s <= z[k]) { /* z[0] = -inf stops this at k == 0 */
             k--;
-            p = v[k];
-            s = ((f[q] + (double)q * q) - (f[p] + (double)p * p)) / (2.0 * (q - p));
+            s = (hq - hv[k]) / (2.0 * (q - v[k]));
         }
         k++;
         v[k] = q;
+        hv[k] = hq;
         z[k] = s;
         z[k + 1] = HUGE_VAL;
     }

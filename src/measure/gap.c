@@ -76,32 +76,35 @@ void qc__gap_grid_size(qc__gap_grid *g, qc_bbox box, double resolution)
 /* The columns of a seeded raster (cells 0 or FAR): each cell's squared
  * distance to the nearest seed in its column, capped at FAR, which is what
  * the parabola envelope gives for such a column. Two sweeps down and up the
- * rows in memory order, with no division; run[i] counts cells since the
- * last seed in column i (-1: none yet). */
+ * rows in memory order, with no division and no branch per cell: run[i]
+ * counts cells since the last seed in column i, starting from NONE (no seed
+ * yet: a count of NONE or more squares past FAR). Counts stay below 2^24,
+ * so the floats hold them exactly. */
+#define NONE ((long)1 << 23) /* > QC__GAP_MAX_CELLS, + ny < 2^24 */
 static void columns_by_sweeps(qc__gap_grid *g, long *run)
 {
     const double far = (double)(float)QC__GAP_FAR;
     size_t i, j, nx = g->nx, ny = g->ny;
 
     for (i = 0; i < nx; i++)
-        run[i] = -1;
-    for (j = 0; j < ny; j++) { /* down: f holds the distance from above, or -1 */
+        run[i] = NONE;
+    for (j = 0; j < ny; j++) { /* down: f holds the distance from above */
         float *row = g->f + j * nx;
         for (i = 0; i < nx; i++) {
-            run[i] = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
+            run[i] = row[i] == 0.0f ? 0 : run[i] + 1;
             row[i] = (float)run[i];
         }
     }
     for (i = 0; i < nx; i++)
-        run[i] = -1;
+        run[i] = NONE;
     for (j = ny; j-- > 0;) { /* up: the nearer of the two, squared */
         float *row = g->f + j * nx;
         for (i = 0; i < nx; i++) {
-            long up = row[i] == 0.0f ? 0 : (run[i] < 0 ? -1 : run[i] + 1);
-            long down = (long)row[i], best = down < 0 || (up >= 0 && up < down) ? up : down;
+            long down = (long)row[i], up = down == 0 ? 0 : run[i] + 1;
+            long best = up < down ? up : down;
             double sq = (double)best * (double)best;
             run[i] = up;
-            row[i] = (float)(best < 0 || sq > far ? far : sq);
+            row[i] = (float)(sq > far ? far : sq);
         }
     }
 }
@@ -183,6 +186,44 @@ static int row_exact(row_scratch *r, size_t nx, size_t j, int failed)
     return 1;
 }
 
+/* qc__edt_1d of a row of column values in place, the floats read and
+ * written as they go (no copies to and from doubles): the same arithmetic,
+ * f[p] taken back from f[p] + p^2, exact as the values are integers (at
+ * most QC__GAP_FAR, p below 2^22: all far below 2^53). */
+static void row_envelope(float *row, size_t n, row_scratch *r)
+{
+    double *hv = r->out, *z = r->z; /* hv[k]: f[v[k]] + v[k]^2 */
+    int *v = r->v, k = 0, q, nn = (int)n;
+
+    v[0] = 0;
+    hv[0] = (double)row[0] + 0.0;
+    z[0] = -HUGE_VAL;
+    z[1] = HUGE_VAL;
+    for (q = 1; q < nn; q++) {
+        double hq = (double)row[q] + (double)q * q, s;
+
+        s = (hq - hv[k]) / (2.0 * (q - v[k]));
+        while (s <= z[k]) { /* z[0] = -inf stops this at k == 0 */
+            k--;
+            s = (hq - hv[k]) / (2.0 * (q - v[k]));
+        }
+        k++;
+        v[k] = q;
+        hv[k] = hq;
+        z[k] = s;
+        z[k + 1] = HUGE_VAL;
+    }
+    /* parabola k serves the cells q <= z[k + 1] past the last one's: run by
+     * run, its own f[p] once (what qc__edt_1d's per-cell scan picks) */
+    for (k = 0, q = 0; q < nn; k++) {
+        double zk = z[k + 1], fp = hv[k] - (double)v[k] * v[k], dq;
+        int last = zk >= (double)(nn - 1) ? nn - 1 : (zk < (double)q ? q - 1 : (int)zk);
+
+        for (dq = (double)(q - v[k]); q <= last; q++, dq += 1.0)
+            row[q] = (float)(dq * dq + fp);
+    }
+}
+
 /* qc__gap_transform; far (seeds only on the region's boundary): every
  * row by the envelope, looking out would only run over its budget, and
  * with rows not NULL only the rows it flags. */
@@ -198,12 +239,13 @@ static int transform(qc_ctx *ctx, qc__gap_grid *g, int far, const unsigned char 
         float *row = g->f + j * g->nx;
         if (rows != NULL && !rows[j])
             continue;
+        if (far) {
+            row_envelope(row, g->nx, &r);
+            continue;
+        }
         for (i = 0; i < g->nx; i++)
             r.col[i] = (double)row[i];
-        if (far)
-            qc__edt_1d(r.col, g->nx, r.out, r.v, r.z);
-        else
-            failed = row_exact(&r, g->nx, j, failed);
+        failed = row_exact(&r, g->nx, j, failed);
         for (i = 0; i < g->nx; i++)
             row[i] = (float)r.out[i];
     }

@@ -42,8 +42,32 @@ static double larger(double a, double b)
     return a > b ? a : b;
 }
 
+/* ceil(t), 0 when that is not positive, without a libm call (truncation
+ * is floor for t >= 0; t is a square's index, far inside a long). */
+static long ceil_from0(double t)
+{
+    long c;
+
+    if (!(t > 0.0))
+        return 0;
+    c = (long)t;
+    return (double)c < t ? c + 1 : c;
+}
+
+/* Whether square i of a row lies within reach of q, fy2 its row's share. */
+static int square_within(const qc__cover *c, qc_vec2 q, double fy2, long i)
+{
+    double xlo = c->x0 + (double)i * c->side, xhi = xlo + c->side;
+    double fx = larger(q.x - xlo, xhi - q.x);
+
+    return fx * fx + fy2 < c->lim;
+}
+
 /* The squares of row j whose farthest corner from q lies within reach:
- * the span the row's height leaves, each square checked on its corners. */
+ * the span the row's height leaves, checked on its corners. Along the
+ * span q.x - xlo falls and xhi - q.x rises (rounding is monotone), so the
+ * farthest corner's distance falls then rises and the squares within
+ * reach run unbroken: only the ends are checked, from both sides. */
 static void mark_row(qc__cover *c, qc_vec2 q, long j)
 {
     double ylo = c->y0 + (double)j * c->side, yhi = ylo + c->side;
@@ -54,23 +78,24 @@ static void mark_row(qc__cover *c, qc_vec2 q, long j)
     if (!(rest > 0.0))
         return;
     r = sqrt(rest);
-    a = ceil((q.x - r - c->x0) / c->side);
-    b = floor((q.x + r - c->x0) / c->side) - 1.0;
-    i = a > 0.0 ? (long)a : 0;
-    i1 = b < (double)c->nx - 1.0 ? (long)b : (long)c->nx - 1;
-    for (; i <= i1; i++) {
-        double xlo = c->x0 + (double)i * c->side, xhi = xlo + c->side;
-        double fx = larger(q.x - xlo, xhi - q.x);
-        if (fx * fx + fy2 < c->lim)
-            row[i] = 1;
-    }
+    a = (q.x - r - c->x0) / c->side; /* squares ceil(a) .. floor(b) - 1, clamped */
+    b = (q.x + r - c->x0) / c->side;
+    i = ceil_from0(a);
+    i1 = b < 0.0 ? -1 : (b < (double)c->nx ? (long)b - 1 : (long)c->nx - 1);
+    while (i <= i1 && !square_within(c, q, fy2, i))
+        i++;
+    while (i1 >= i && !square_within(c, q, fy2, i1))
+        i1--;
+    for (; i <= i1; i++)
+        row[i] = 1;
 }
 
 void qc__cover_mark(qc__cover *c, qc_vec2 q)
 {
-    double j0 = floor((q.y - c->reach - c->y0) / c->side);
-    double j1 = floor((q.y + c->reach - c->y0) / c->side);
-    long j = j0 > 0.0 ? (long)j0 : 0, jend = j1 < (double)c->ny - 1.0 ? (long)j1 : (long)c->ny - 1;
+    double j0 = (q.y - c->reach - c->y0) / c->side; /* rows floor(j0) .. floor(j1), clamped */
+    double j1 = (q.y + c->reach - c->y0) / c->side;
+    long j = j0 > 0.0 ? (long)j0 : 0;
+    long jend = j1 < 0.0 ? -1 : (j1 < (double)c->ny - 1.0 ? (long)j1 : (long)c->ny - 1);
 
     if (!(c->reach > 0.0))
         return;

@@ -8,7 +8,6 @@
  * gap, farthest first, until none does.
  */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "sample_internal.h"
@@ -41,7 +40,7 @@ static size_t seed_cell(const qc__gap_grid *g, qc_vec2 p)
  * beyond lim), found by stamping a disk round each seed, cheaper than a
  * distance transform of the whole raster when seeds are points. The disk's
  * half-width per row is worked out once. */
-static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
+static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const size_t *seed, size_t ns,
                        unsigned char *mask, double lim)
 {
     long r = (long)floor(sqrt(lim)), nx = (long)g->nx, ny = (long)g->ny, dy;
@@ -61,13 +60,8 @@ static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
             dx--;
         half[dy + r] = dx;
     }
-    for (n = 0; n < pts->n; n++) {
-        size_t k = seed_cell(g, pts->v[n]);
-        long i, j;
-        if (k == SIZE_MAX)
-            continue;
-        i = (long)(k % g->nx);
-        j = (long)(k / g->nx);
+    for (n = 0; n < ns; n++) {
+        long i = (long)(seed[n] % g->nx), j = (long)(seed[n] / g->nx);
         for (dy = -r; dy <= r; dy++) {
             long y = j + dy, lo = i - half[dy + r], hi = i + half[dy + r];
             if (y < 0 || y >= ny)
@@ -81,13 +75,31 @@ static int stamp_seeds(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
     return QC_OK;
 }
 
-static int cmp_hole(const void *pa, const void *pb) /* farthest first */
+/* Sorts the holes farthest first, then by cell, by a radix sort of one
+ * key each: the distance's bits inverted (a positive float's bits order as
+ * its value), over the cell. The keys differ (the cells do), so the order
+ * is the one comparing distance, then cell, gives. */
+static int sort_holes(qc_ctx *ctx, hole *hs, size_t n)
 {
-    const hole *a = pa, *b = pb;
+    uint64_t *key = qc__alloc_array(ctx, n ? n : 1, sizeof *key);
+    size_t k;
+    int rc;
 
-    if (a->f != b->f)
-        return a->f > b->f ? -1 : 1;
-    return (a->at > b->at) - (a->at < b->at);
+    if (key == NULL)
+        return QC_ENOMEM;
+    for (k = 0; k < n; k++) {
+        uint32_t b;
+        memcpy(&b, &hs[k].f, sizeof b);
+        key[k] = (uint64_t)(uint32_t)~b << 32 | hs[k].at;
+    }
+    rc = qc__radix_sort(ctx, key, NULL, n, 0);
+    for (k = 0; k < n && rc == QC_OK; k++) {
+        uint32_t b = ~(uint32_t)(key[k] >> 32);
+        memcpy(&hs[k].f, &b, sizeof b);
+        hs[k].at = (uint32_t)key[k];
+    }
+    qc__free(ctx, key, (n ? n : 1) * sizeof *key);
+    return rc;
 }
 
 /* The first hole cell (mask 1; the rest are 0) from k on, or cells: memchr
@@ -112,22 +124,14 @@ static size_t count_holes(const unsigned char *mask, size_t cells, size_t most)
 /* The distances of the few hole cells (mask set) by looking round each
  * among the seeds, in buckets about twice the gap wide: no raster of
  * distances. Those beyond lim go to hs (room for nh), their count to *nout. */
-static int few_holes(qc_ctx *ctx, const qc__gap_grid *g, const qc_points *pts,
+static int few_holes(qc_ctx *ctx, const qc__gap_grid *g, const size_t *seed, size_t ns,
                      const unsigned char *mask, double lim, hole *hs, size_t *nout)
 {
-    size_t k, n = 0, ns = 0, cells = g->nx * g->ny;
-    size_t *seed = qc__alloc_array(ctx, pts->n ? pts->n : 1, sizeof *seed);
+    size_t k, n = 0, cells = g->nx * g->ny;
     qc__seed_buckets sb;
-    int rc;
 
-    if (seed == NULL)
-        return QC_ENOMEM;
-    for (k = 0; k < pts->n; k++) /* the points' cells, those on the raster */
-        if ((seed[ns] = seed_cell(g, pts->v[k])) != SIZE_MAX)
-            ns++;
-    rc = qc__seed_buckets_build(ctx, g->nx, g->ny, seed, ns, 2 * (long)ceil(sqrt(lim)) + 1, &sb);
-    qc__free(ctx, seed, (pts->n ? pts->n : 1) * sizeof *seed);
-    QC__TRY(rc);
+    QC__TRY(qc__seed_buckets_build(ctx, g->nx, g->ny, seed, ns, 2 * (long)ceil(sqrt(lim)) + 1,
+                                   &sb));
     for (k = next_hole(mask, 0, cells); k < cells; k = next_hole(mask, k + 1, cells)) {
         float f = (float)qc__seed_dist2(&sb, (long)(k % g->nx), (long)(k / g->nx));
         if ((double)f > lim) {
@@ -196,7 +200,7 @@ int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region, const qc__rin
     qc__near_grid ng;
     unsigned char *mask = NULL;
     hole *hs = NULL;
-    size_t cells, k, nh = 0, cap = 0, i;
+    size_t *seed = NULL, cells, k, nh = 0, cap = 0, i, ns = 0, npts = out->n;
     qc_bbox box = qc_region_bbox(region);
     double lim;
     int rc;
@@ -215,8 +219,13 @@ int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region, const qc__rin
                                           g.nx, g.ny, mask);
     if (rc == QC_OK)
         rc = qc__near_grid_init(ctx, &ng, box, fmax(gap, d));
+    if (rc == QC_OK && (seed = qc__alloc_array(ctx, npts, sizeof *seed)) == NULL)
+        rc = QC_ENOMEM;
+    for (k = 0; k < npts && rc == QC_OK; k++) /* the points' cells, those on the raster */
+        if ((seed[ns] = seed_cell(&g, out->v[k])) != SIZE_MAX)
+            ns++;
     if (rc == QC_OK)
-        rc = stamp_seeds(ctx, &g, out, mask, lim);
+        rc = stamp_seeds(ctx, &g, seed, ns, mask, lim);
     if (rc < 0)
         goto out;
     nh = count_holes(mask, cells, cells / 64);
@@ -227,12 +236,14 @@ int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region, const qc__rin
         hs = qc__alloc_array(ctx, cap, sizeof *hs);
         if (hs == NULL)
             rc = QC_ENOMEM;
-        else
-            rc = few_holes(ctx, &g, out, mask, lim, hs, &nh);
+        else if (nh > 0) /* none: no seeds to file */
+            rc = few_holes(ctx, &g, seed, ns, mask, lim, hs, &nh);
     }
     if (rc < 0 || nh == 0)
         goto out;
-    qsort(hs, nh, sizeof *hs, cmp_hole);
+    /* every hole's distance is above lim > 0: a positive float */
+    if ((rc = sort_holes(ctx, hs, nh)) < 0)
+        goto out;
     for (i = 0; i < out->n && rc == QC_OK; i++)
         rc = qc__near_grid_add(ctx, &ng, out, i);
     for (k = 0; k < nh && rc == QC_OK; k++) {
@@ -241,6 +252,7 @@ int qc__sample_fill_holes_ix(qc_ctx *ctx, const qc_region *region, const qc__rin
         rc = qc__near_grid_push_clear(ctx, &ng, out, ix, p, gap, margin);
     }
 out:
+    qc__free(ctx, seed, npts * sizeof *seed); /* out grows meanwhile */
     qc__free(ctx, hs, cap * sizeof *hs);
     qc__near_grid_free(ctx, &ng);
     qc__free(ctx, g.f, cells * sizeof *g.f);

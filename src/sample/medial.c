@@ -200,43 +200,48 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
     }
 }
 
-/* Flags in rows (ny bytes) the rows holding a cell inside and not blocked,
- * and the rows either side (is_ridge reads them): the rows whose distances
- * find_ridges reads. Returns whether any is flagged. */
-static int mark_rows(const qc__gap_grid *g, const unsigned char *mask,
-                     const unsigned char *blocked, unsigned char *rows)
+/* The next free cell (a 0 in shut: inside, no point near) from k on, or
+ * cells: memchr skips the shut raster far faster than a loop. */
+static size_t next_free(const unsigned char *shut, size_t k, size_t cells)
 {
-    size_t j, i, k;
+    const unsigned char *at = k < cells ? memchr(shut + k, 0, cells - k) : NULL;
+
+    return at != NULL ? (size_t)(at - shut) : cells;
+}
+
+/* Flags in rows (ny bytes) the rows holding a free cell (0 in shut), and
+ * the rows either side (is_ridge reads them): the rows whose distances
+ * find_ridges reads. Returns whether any is flagged. */
+static int mark_rows(const qc__gap_grid *g, const unsigned char *shut, unsigned char *rows)
+{
+    size_t j, cells = g->nx * g->ny, k;
     int any = 0;
 
     memset(rows, 0, g->ny);
-    for (j = 0; j < g->ny; j++)
-        for (i = 0, k = j * g->nx; i < g->nx; i++, k++)
-            if (mask[k] && !blocked[k]) {
-                rows[j] = 1;
-                rows[j > 0 ? j - 1 : j] = 1;
-                rows[j + 1 < g->ny ? j + 1 : j] = 1;
-                any = 1;
-                break;
-            }
+    for (k = next_free(shut, 0, cells); k < cells; k = next_free(shut, (j + 1) * g->nx, cells)) {
+        j = k / g->nx;
+        rows[j] = 1;
+        rows[j > 0 ? j - 1 : j] = 1;
+        rows[j + 1 < g->ny ? j + 1 : j] = 1;
+        any = 1;
+    }
     return any;
 }
 
-/* Marks in mask (2) the ridge cells no point blocks, their count to *nr
- * (every other ridge cell lies within SEED_GAP * d of a point, so would get
- * no seed: not tested). */
-static void find_ridges(const qc__gap_grid *g, unsigned char *mask, const unsigned char *blocked,
+/* Marks in mask (2) the ridge cells among the free ones (0 in shut), their
+ * count to *nr (every other ridge cell lies within SEED_GAP * d of a
+ * point, so would get no seed: not tested). */
+static void find_ridges(const qc__gap_grid *g, unsigned char *mask, const unsigned char *shut,
                         size_t *nr)
 {
-    size_t i, j, k;
+    size_t k, cells = g->nx * g->ny;
 
     *nr = 0;
-    for (j = 0; j < g->ny; j++)
-        for (i = 0, k = j * g->nx; i < g->nx; i++, k++)
-            if (mask[k] && !blocked[k] && is_ridge(g, mask, i, j)) {
-                mask[k] |= 2;
-                (*nr)++;
-            }
+    for (k = next_free(shut, 0, cells); k < cells; k = next_free(shut, k + 1, cells))
+        if (is_ridge(g, mask, k % g->nx, k / g->nx)) {
+            mask[k] |= 2;
+            (*nr)++;
+        }
 }
 
 int qc__sample_medial(qc_ctx *ctx, const qc_region *region, double d, double margin,
@@ -275,10 +280,11 @@ int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex 
         rc = corner_seeds(ctx, region, ix, d, margin, out);
     if (rc < 0)
         goto out;
-    memset(blocked, 0, cells);
+    for (k = 0; k < cells; k++) /* shut: outside, or (block_near) a point near */
+        blocked[k] = !mask[k];
     block_near(&g, out, d, blocked);
     /* the distances only in the rows find_ridges reads: round free cells */
-    if (mark_rows(&g, mask, blocked, blocked + cells) &&
+    if (mark_rows(&g, blocked, blocked + cells) &&
         (rc = qc__gap_transform_far(ctx, &g, blocked + cells)) < 0)
         goto out;
     find_ridges(&g, mask, blocked, &nr);
@@ -288,7 +294,7 @@ int qc__sample_medial_ix(qc_ctx *ctx, const qc_region *region, const qc__rindex 
         goto out;
     }
     nr = 0;
-    for (k = 0; k < cells; k++)
+    for (k = next_free(blocked, 0, cells); k < cells; k = next_free(blocked, k + 1, cells))
         if (mask[k] & 2) {
             rg[nr].f = g.f[k];
             rg[nr].at = (uint32_t)k;

@@ -12,7 +12,7 @@
 #define COVER_SUB 2.0
 
 typedef struct pgrid {
-    double x0, y0, cell, d2;
+    double x0, y0, cell, d2, reach; /* reach: 2 d and a slack (inner) */
     size_t nx, ny, w; /* cells across and down, and a row's length with the pad */
     qc_vec2 *cells;   /* (nx + 2 PAD) by (ny + 2 PAD), PAD rows and columns first */
     qc_vec2 *at;      /* cell (0, 0); a cell's point, or {HUGE_VAL, HUGE_VAL} when empty */
@@ -68,10 +68,19 @@ static int inside_box(const qc__rindex *ix, qc_vec2 p)
 /* Whether p may join the sample: in the box, on no marked square (the
  * cheap look that turns most candidates down), d from every point, and
  * admitted by the region at margin. */
-static inline int takes(const qc__rindex *ix, const pgrid *g, qc_vec2 p, double margin)
+static inline int takes(const qc__rindex *ix, const pgrid *g, qc_vec2 p, double margin,
+                        int inner)
 {
-    return inside_box(ix, p) && !qc__cover_holds(&g->cover, p) && is_far(g, p) &&
+    return (inner || inside_box(ix, p)) && !qc__cover_holds(&g->cover, p) && is_far(g, p) &&
            qc__rindex_admits(ix, p, margin);
+}
+
+/* Whether every candidate round c (nearer than 2 d, give or take a slack
+ * far above rounding) lies in the box: then takes need not look. */
+static int inner(const qc__rindex *ix, const pgrid *g, qc_vec2 c)
+{
+    return c.x - g->reach > ix->box.min.x && c.x + g->reach < ix->box.max.x &&
+           c.y - g->reach > ix->box.min.y && c.y + g->reach < ix->box.max.y;
 }
 
 static int add_point(qc_ctx *ctx, pgrid *g, qc_points *pts, qc_order *active, qc_vec2 p)
@@ -107,19 +116,22 @@ static int grow(qc_ctx *ctx, const qc__rindex *ix, pgrid *g, double d, double ma
     while (active->n > 0) {
         size_t at = (size_t)qc_rng_below(rng, active->n);
         qc_vec2 c = pts->v[active->i[at]];
-        int t, placed = 0;
+        int t, placed = 0, in = inner(ix, g, c), rc = QC_OK;
+        qc_rng lr = *rng; /* a local copy: its state stays in registers */
 
         for (t = 0; t < k && !placed; t++) {
-            qc_vec2 u = random_direction(rng), p;
-            double r = d * sqrt(1.0 + 3.0 * qc__rng_unit(rng)); /* area-uniform in [d, 2d) */
+            qc_vec2 u = random_direction(&lr), p;
+            double r = d * sqrt(1.0 + 3.0 * qc__rng_unit(&lr)); /* area-uniform in [d, 2d) */
 
             p.x = c.x + r * u.x;
             p.y = c.y + r * u.y;
-            if (takes(ix, g, p, margin)) {
-                QC__TRY(add_point(ctx, g, pts, active, p));
+            if (takes(ix, g, p, margin, in)) {
+                rc = add_point(ctx, g, pts, active, p);
                 placed = 1;
             }
         }
+        *rng = lr;
+        QC__TRY(rc);
         if (!placed)
             active->i[at] = active->i[--active->n];
     }
@@ -136,6 +148,9 @@ static int pgrid_init(qc_ctx *ctx, pgrid *g, const qc__rindex *ix, double d)
     g->y0 = ix->box.min.y;
     g->cell = d / 1.4142135623730951;
     g->d2 = d * d;
+    g->reach = 2.0 * d + 1e-9 * d +
+               1e-12 * (fabs(ix->box.min.x) + fabs(ix->box.min.y) + fabs(ix->box.max.x) +
+                        fabs(ix->box.max.y));
     g->nx = (size_t)((ix->box.max.x - g->x0) / g->cell) + 1;
     g->ny = (size_t)((ix->box.max.y - g->y0) / g->cell) + 1;
     g->w = g->nx + 2 * PAD;
@@ -179,7 +194,7 @@ int qc__sample_poisson(qc_ctx *ctx, const qc__rindex *ix, double d, double margi
                 continue;
             p.x = g.x0 + ((double)cx + 0.5) * g.cell;
             p.y = g.y0 + ((double)cy + 0.5) * g.cell;
-            if (takes(ix, &g, p, margin)) {
+            if (takes(ix, &g, p, margin, 0)) {
                 rc = add_point(ctx, &g, &pts, &active, p);
                 if (rc == QC_OK)
                     rc = grow(ctx, ix, &g, d, margin, k, &rng, &pts, &active);

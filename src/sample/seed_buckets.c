@@ -48,6 +48,22 @@ int qc__seed_buckets_build(qc_ctx *ctx, size_t nx, size_t ny, const size_t *cell
     return QC_OK;
 }
 
+/* Cell (i, j)'s squared distance to the nearest cell of bucket (x, y). */
+static double box_dist2(const qc__seed_buckets *sb, long x, long y, long i, long j)
+{
+    long x0 = x * sb->b, y0 = y * sb->b, dx = 0, dy = 0;
+
+    if (i < x0)
+        dx = x0 - i;
+    else if (i > x0 + sb->b - 1)
+        dx = i - (x0 + sb->b - 1);
+    if (j < y0)
+        dy = y0 - j;
+    else if (j > y0 + sb->b - 1)
+        dy = j - (y0 + sb->b - 1);
+    return (double)dx * (double)dx + (double)dy * (double)dy;
+}
+
 /* Looks in square rings of buckets outward until no nearer seed can lie
  * beyond (a seed outside rings 0..R lies more than R b cells away). */
 double qc__seed_dist2(const qc__seed_buckets *sb, long i, long j)
@@ -65,8 +81,8 @@ double qc__seed_dist2(const qc__seed_buckets *sb, long i, long j)
                 continue;
             for (x = bi - r; x <= bi + r; x += step > 0 ? step : 1) {
                 uint32_t s, e;
-                if (x < 0 || x >= sb->bx)
-                    continue;
+                if (x < 0 || x >= sb->bx || box_dist2(sb, x, y, i, j) >= best)
+                    continue; /* off the raster, or every seed in it no nearer */
                 for (s = sb->start[y * sb->bx + x], e = sb->start[y * sb->bx + x + 1]; s < e;
                      s++) {
                     double dx = (double)(sb->xy[2 * s] - i), dy = (double)(sb->xy[2 * s + 1] - j);
