@@ -42,18 +42,6 @@ static double larger(double a, double b)
     return a > b ? a : b;
 }
 
-/* ceil(t), 0 when that is not positive, without a libm call (truncation
- * is floor for t >= 0; t is a square's index, far inside a long). */
-static long ceil_from0(double t)
-{
-    long c;
-
-    if (!(t > 0.0))
-        return 0;
-    c = (long)t;
-    return (double)c < t ? c + 1 : c;
-}
-
 /* Whether square i of a row lies within reach of q, fy2 its row's share. */
 static int square_within(const qc__cover *c, qc_vec2 q, double fy2, long i)
 {
@@ -80,7 +68,7 @@ static void mark_row(qc__cover *c, qc_vec2 q, long j)
     r = sqrt(rest);
     a = (q.x - r - c->x0) / c->side; /* squares ceil(a) .. floor(b) - 1, clamped */
     b = (q.x + r - c->x0) / c->side;
-    i = ceil_from0(a);
+    i = qc__ceil_from0(a);
     i1 = b < 0.0 ? -1 : (b < (double)c->nx ? (long)b - 1 : (long)c->nx - 1);
     while (i <= i1 && !square_within(c, q, fy2, i))
         i++;
@@ -95,7 +83,7 @@ void qc__cover_mark(qc__cover *c, qc_vec2 q)
     double j0 = (q.y - c->reach - c->y0) / c->side; /* rows floor(j0) .. floor(j1), clamped */
     double j1 = (q.y + c->reach - c->y0) / c->side;
     long j = j0 > 0.0 ? (long)j0 : 0;
-    long jend = j1 < 0.0 ? -1 : (j1 < (double)c->ny - 1.0 ? (long)j1 : (long)c->ny - 1);
+    long jend = qc__floor_below(j1, c->ny);
 
     if (!(c->reach > 0.0))
         return;

@@ -148,26 +148,6 @@ static int corner_seeds(qc_ctx *ctx, const qc_region *region, const qc__rindex *
     return QC_OK;
 }
 
-/* ceil(t), 0 when that is not positive; and floor(u), n - 1 when that is
- * more, -1 when u < 0 (nothing): the cell range round a point without a
- * libm call per row (truncation is floor for u >= 0). */
-static long ceil_from0(double t)
-{
-    long c;
-
-    if (!(t > 0.0))
-        return 0;
-    c = (long)t;
-    return (double)c < t ? c + 1 : c;
-}
-
-static long floor_below(double u, size_t n)
-{
-    if (u < 0.0)
-        return -1;
-    return u < (double)n - 1 ? (long)u : (long)n - 1;
-}
-
 /* The cells whose centre lies nearer than SEED_GAP * d (less a slack far
  * above rounding) to a point of pts get 1 in blocked: no seed can go there,
  * whatever is added meanwhile (points are only ever added). */
@@ -183,8 +163,8 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
         return;
     for (n = 0; n < pts->n; n++) {
         qc_vec2 q = pts->v[n];
-        long j = ceil_from0((q.y - reach - g->y0) / g->h - 0.5);
-        long jend = floor_below((q.y + reach - g->y0) / g->h - 0.5, g->ny);
+        long j = qc__ceil_from0((q.y - reach - g->y0) / g->h - 0.5);
+        long jend = qc__floor_below((q.y + reach - g->y0) / g->h - 0.5, g->ny);
 
         for (; j <= jend; j++) {
             double dy = g->y0 + ((double)j + 0.5) * g->h - q.y, rest = r2 - dy * dy, r;
@@ -192,8 +172,8 @@ static void block_near(const qc__gap_grid *g, const qc_points *pts, double d,
             if (!(rest > 0.0))
                 continue;
             r = sqrt(rest);
-            i0 = ceil_from0((q.x - r - g->x0) / g->h - 0.5);
-            i1 = floor_below((q.x + r - g->x0) / g->h - 0.5, g->nx);
+            i0 = qc__ceil_from0((q.x - r - g->x0) / g->h - 0.5);
+            i1 = qc__floor_below((q.x + r - g->x0) / g->h - 0.5, g->nx);
             if (i0 <= i1)
                 memset(blocked + (size_t)j * g->nx + (size_t)i0, 1, (size_t)(i1 - i0 + 1));
         }

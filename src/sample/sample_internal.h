@@ -32,6 +32,27 @@ QC__HIDDEN void qc__cover_free(qc_ctx *ctx, qc__cover *c);
 /* Marks the squares wholly within reach of q (a point just placed). */
 QC__HIDDEN void qc__cover_mark(qc__cover *c, qc_vec2 q);
 
+/* ceil(t), 0 when that is not positive; and floor(u), n - 1 when that is
+ * more, -1 when u < 0 (nothing): a cell range round a point without a
+ * libm call per row (truncation is floor for u >= 0; t and u are cell
+ * indices, far inside a long). */
+static inline long qc__ceil_from0(double t)
+{
+    long c;
+
+    if (!(t > 0.0))
+        return 0;
+    c = (long)t;
+    return (double)c < t ? c + 1 : c;
+}
+
+static inline long qc__floor_below(double u, size_t n)
+{
+    if (u < 0.0)
+        return -1;
+    return u < (double)n - 1 ? (long)u : (long)n - 1;
+}
+
 /* Whether p (inside the box) lies in a marked square: then a point lies
  * nearer than d to it. */
 static inline int qc__cover_holds(const qc__cover *c, qc_vec2 p)
